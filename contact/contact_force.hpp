@@ -1,0 +1,44 @@
+// Contact kinematics and forces at one contact point: depth rate, tangential slip
+// (including the surface velocity of belts and conveyors), penalty normal force and the
+// pair's friction law.
+//
+//   v_rel = (v_B + w_B x (p - o_B)) - (v_A + w_A x (p - o_A))
+//   d' = -n . v_rel,   slip = tangential part of (v_rel + s_B - s_A)
+//   F_B = F_n n + F_t,  F_n from the normal law, F_t = -mu(|slip|) F_n slip/|slip|
+// where s is a body's surface velocity (world frame; it never changes the depth rate). Not here:
+// collision detection, wrench accumulation on bodies (core does that), stateful friction.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <memory>
+
+#include "contact/contact_point.hpp"
+#include "contact/normal_law.hpp"
+#include "friction/friction_law.hpp"
+
+namespace tribo::contact {
+
+// Motion of the body carrying a geometry, world frame.
+struct GeometryMotion {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();            // body origin [m]
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // of the origin [m/s]
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // [rad/s]
+  Eigen::Vector3d surface_velocity = Eigen::Vector3d::Zero();  // belt surface [m/s]
+
+  Eigen::Vector3d pointVelocity(const Eigen::Vector3d& p) const {
+    return velocity + angular_velocity.cross(p - origin);
+  }
+};
+
+// A pair's contact material: how the surfaces push and how they rub.
+struct Material {
+  NormalLaw normal;
+  std::shared_ptr<const friction::FrictionLaw> friction;  // never null in a built model
+};
+
+// Fills `out` (kinematics and forces) for point `cp` between A and B.
+void evaluateContact(const ContactPoint& cp, const GeometryMotion& a, const GeometryMotion& b,
+                     const Material& material, ContactRecord& out);
+
+}  // namespace tribo::contact

@@ -1,0 +1,148 @@
+#include "core/dynamics.hpp"
+
+#include <algorithm>
+
+namespace tribo {
+
+namespace {
+
+contact::CollisionDetector makeDetector(const Model& model) {
+  std::vector<contact::Shape> shapes;
+  for (const auto& g : model.geometries) shapes.push_back(g.shape);
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& p : model.contact_pairs) pairs.emplace_back(p.geometry_a, p.geometry_b);
+  return contact::CollisionDetector(std::move(shapes), std::move(pairs),
+                                    model.options.collision);
+}
+
+contact::GeometryMotion motionOf(const Model& model, const State& state, BodyIndex b) {
+  contact::GeometryMotion m;
+  if (b.isWorld()) return m;
+  const BodyState& s = state.bodies[b.value];
+  m.origin = s.position;
+  m.velocity = s.velocity;
+  m.angular_velocity = s.angular_velocity;
+  m.surface_velocity = s.orientation * model.bodies[b.value].surface_velocity;
+  return m;
+}
+
+void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
+  w.force += force;
+  w.torque += (point - origin).cross(force);
+}
+
+}  // namespace
+
+Dynamics::Dynamics(std::shared_ptr<const Model> model)
+    : model_(std::move(model)), detector_(makeDetector(*model_)), solver_(*model_) {
+  const std::size_t nb = model_->bodies.size();
+  ws_.geometry_poses.assign(model_->geometries.size(), Eigen::Isometry3d::Identity());
+  ws_.contact_wrench.assign(nb, {});
+  ws_.spring_wrench.assign(nb, {});
+  ws_.constraint_wrench.assign(nb, {});
+  ws_.linear_acceleration.assign(nb, Vec3::Zero());
+  ws_.angular_acceleration.assign(nb, Vec3::Zero());
+  ws_.contact_points.reserve(8 * model_->contact_pairs.size());
+  ws_.contacts.reserve(8 * model_->contact_pairs.size());
+}
+
+State Dynamics::initialState() const {
+  State s;
+  s.time = 0.0;
+  for (const Body& b : model_->bodies)
+    s.bodies.push_back({b.position, b.orientation, b.velocity, b.angular_velocity});
+  return s;
+}
+
+void Dynamics::accumulateContacts(const State& state) {
+  const Model& m = *model_;
+  for (std::size_t g = 0; g < m.geometries.size(); ++g) {
+    const Geometry& geo = m.geometries[g];
+    if (geo.body.isWorld()) {
+      ws_.geometry_poses[g] = geo.local_pose;
+    } else {
+      const BodyState& s = state.bodies[geo.body.value];
+      Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
+      body.linear() = s.orientation.toRotationMatrix();
+      body.translation() = s.position;
+      ws_.geometry_poses[g] = body * geo.local_pose;
+    }
+  }
+  detector_.detect(ws_.geometry_poses, ws_.contact_points);
+  ws_.contacts.resize(ws_.contact_points.size());
+  ws_.max_penetration = 0.0;
+  for (std::size_t i = 0; i < ws_.contact_points.size(); ++i) {
+    const contact::ContactPoint& cp = ws_.contact_points[i];
+    const ContactPair& pair = m.contact_pairs[cp.pair];
+    const BodyIndex a = m.geometries[pair.geometry_a].body;
+    const BodyIndex b = m.geometries[pair.geometry_b].body;
+    contact::ContactRecord& rec = ws_.contacts[i];
+    contact::evaluateContact(cp, motionOf(m, state, a), motionOf(m, state, b),
+                             m.materials[pair.material], rec);
+    ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
+    const Vec3 f = rec.force();
+    if (!b.isWorld()) applyAt(ws_.contact_wrench[b.value], state.bodies[b.value].position,
+                              cp.position, f);
+    if (!a.isWorld()) applyAt(ws_.contact_wrench[a.value], state.bodies[a.value].position,
+                              cp.position, -f);
+  }
+}
+
+void Dynamics::accumulateSprings(const State& state) {
+  for (const SpringDamper& s : model_->springs) {
+    auto end = [&](BodyIndex b, const Vec3& local, Vec3& p, Vec3& v) {
+      if (b.isWorld()) {
+        p = local;
+        v.setZero();
+        return;
+      }
+      const BodyState& bs = state.bodies[b.value];
+      const Vec3 r = bs.orientation * local;
+      p = bs.position + r;
+      v = bs.velocity + bs.angular_velocity.cross(r);
+    };
+    Vec3 pa, va, pb, vb;
+    end(s.body_a, s.point_a, pa, va);
+    end(s.body_b, s.point_b, pb, vb);
+    const Vec3 d = pb - pa;
+    const double length = d.norm();
+    if (length < 1e-12) continue;  // direction undefined; zero-length springs carry no force
+    const Vec3 e = d / length;
+    const double tension = s.stiffness * (length - s.rest_length) + s.damping * e.dot(vb - va);
+    const Vec3 f_b = -tension * e;
+    if (!s.body_b.isWorld())
+      applyAt(ws_.spring_wrench[s.body_b.value], state.bodies[s.body_b.value].position, pb, f_b);
+    if (!s.body_a.isWorld())
+      applyAt(ws_.spring_wrench[s.body_a.value], state.bodies[s.body_a.value].position, pa, -f_b);
+  }
+}
+
+const Workspace& Dynamics::evaluate(const State& state) {
+  const Model& m = *model_;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    ws_.contact_wrench[b].setZero();
+    ws_.spring_wrench[b].setZero();
+  }
+  accumulateContacts(state);
+  accumulateSprings(state);
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    const Body& body = m.bodies[b];
+    if (body.kind != BodyKind::kDynamic) {
+      ws_.linear_acceleration[b].setZero();
+      ws_.angular_acceleration[b].setZero();
+      continue;
+    }
+    const BodyState& s = state.bodies[b];
+    const Vec3 force = ws_.contact_wrench[b].force + ws_.spring_wrench[b].force;
+    const Vec3 torque = ws_.contact_wrench[b].torque + ws_.spring_wrench[b].torque;
+    const Mat3 r = s.orientation.toRotationMatrix();
+    const Mat3 inertia_world = r * body.inertia * r.transpose();
+    const Vec3 gyro = s.angular_velocity.cross(inertia_world * s.angular_velocity);
+    ws_.linear_acceleration[b] = force / body.mass + m.options.gravity;
+    ws_.angular_acceleration[b] = inertia_world.ldlt().solve(torque - gyro);
+  }
+  solver_.solve(state, ws_);
+  return ws_;
+}
+
+}  // namespace tribo

@@ -1,0 +1,95 @@
+#include "core/integrator.hpp"
+
+#include <vector>
+
+namespace tribo {
+
+namespace {
+
+class SemiImplicitEuler final : public Integrator {
+ public:
+  void step(Dynamics& dynamics, State& state, double h, bool start_is_evaluated) override {
+    const Workspace& ws = start_is_evaluated ? dynamics.workspace() : dynamics.evaluate(state);
+    for (std::size_t b = 0; b < state.bodies.size(); ++b) {
+      BodyState& s = state.bodies[b];
+      s.velocity += h * ws.linear_acceleration[b];
+      s.angular_velocity += h * ws.angular_acceleration[b];
+      s.position += h * s.velocity;
+      s.orientation = rotateBy(s.angular_velocity, h, s.orientation);
+    }
+    state.time += h;
+  }
+  int evaluationsPerStep() const override { return 1; }
+};
+
+class RungeKutta4 final : public Integrator {
+ public:
+  explicit RungeKutta4(std::size_t n) : stage_(), rates_(4, std::vector<Rate>(n)) {}
+
+  void step(Dynamics& dynamics, State& state, double h, bool start_is_evaluated) override {
+    static constexpr double kStageTime[4] = {0.0, 0.5, 0.5, 1.0};
+    static constexpr double kWeight[4] = {1.0 / 6.0, 2.0 / 6.0, 2.0 / 6.0, 1.0 / 6.0};
+    stage_ = state;
+    for (int k = 0; k < 4; ++k) {
+      if (k > 0) makeStage(state, rates_[k - 1], kStageTime[k] * h);
+      const State& at = k == 0 ? state : stage_;
+      const Workspace& ws =
+          (k == 0 && start_is_evaluated) ? dynamics.workspace() : dynamics.evaluate(at);
+      for (std::size_t b = 0; b < at.bodies.size(); ++b) {
+        const BodyState& s = at.bodies[b];
+        rates_[k][b] = {s.velocity, quaternionRate(s.angular_velocity, s.orientation),
+                        ws.linear_acceleration[b], ws.angular_acceleration[b]};
+      }
+    }
+    for (std::size_t b = 0; b < state.bodies.size(); ++b) {
+      BodyState& s = state.bodies[b];
+      Rate sum{};
+      for (int k = 0; k < 4; ++k) {
+        sum.dp += kWeight[k] * rates_[k][b].dp;
+        sum.dq += kWeight[k] * rates_[k][b].dq;
+        sum.dv += kWeight[k] * rates_[k][b].dv;
+        sum.dw += kWeight[k] * rates_[k][b].dw;
+      }
+      s.position += h * sum.dp;
+      s.orientation.coeffs() += h * sum.dq;
+      s.orientation.normalize();
+      s.velocity += h * sum.dv;
+      s.angular_velocity += h * sum.dw;
+    }
+    state.time += h;
+  }
+  int evaluationsPerStep() const override { return 4; }
+
+ private:
+  struct Rate {
+    Vec3 dp = Vec3::Zero();
+    Eigen::Vector4d dq = Eigen::Vector4d::Zero();
+    Vec3 dv = Vec3::Zero();
+    Vec3 dw = Vec3::Zero();
+  };
+
+  void makeStage(const State& base, const std::vector<Rate>& rate, double dt) {
+    stage_.time = base.time + dt;
+    for (std::size_t b = 0; b < base.bodies.size(); ++b) {
+      const BodyState& s = base.bodies[b];
+      BodyState& o = stage_.bodies[b];
+      o.position = s.position + dt * rate[b].dp;
+      o.orientation.coeffs() = s.orientation.coeffs() + dt * rate[b].dq;
+      o.orientation.normalize();
+      o.velocity = s.velocity + dt * rate[b].dv;
+      o.angular_velocity = s.angular_velocity + dt * rate[b].dw;
+    }
+  }
+
+  State stage_;
+  std::vector<std::vector<Rate>> rates_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> makeIntegrator(IntegratorType type, const Model& model) {
+  if (type == IntegratorType::kRk4) return std::make_unique<RungeKutta4>(model.bodies.size());
+  return std::make_unique<SemiImplicitEuler>();
+}
+
+}  // namespace tribo

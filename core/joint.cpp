@@ -1,0 +1,62 @@
+#include "core/joint.hpp"
+
+#include <stdexcept>
+
+namespace tribo {
+
+namespace {
+using K = ConstraintEquation::Kind;
+const ConstraintEquation kDx{K::kDistance, 0, 0}, kDy{K::kDistance, 1, 0},
+    kDz{K::kDistance, 2, 0};
+const ConstraintEquation kPxy{K::kPerpendicular, 0, 1}, kPyz{K::kPerpendicular, 1, 2},
+    kPzx{K::kPerpendicular, 2, 0}, kPzy{K::kPerpendicular, 2, 1};
+
+struct NamedType {
+  const char* name;
+  JointType type;
+};
+const NamedType kNames[] = {{"fixed", JointType::kFixed},
+                            {"revolute", JointType::kRevolute},
+                            {"prismatic", JointType::kPrismatic},
+                            {"planar_translation", JointType::kPlanarTranslation},
+                            {"spherical", JointType::kSpherical}};
+}  // namespace
+
+const std::vector<ConstraintEquation>& jointEquations(JointType type) {
+  static const std::vector<ConstraintEquation> fixed{kDx, kDy, kDz, kPxy, kPyz, kPzx};
+  static const std::vector<ConstraintEquation> revolute{kDx, kDy, kDz, kPzx, kPzy};
+  static const std::vector<ConstraintEquation> prismatic{kDx, kDy, kPxy, kPyz, kPzx};
+  static const std::vector<ConstraintEquation> planar{kDz, kPxy, kPyz, kPzx};
+  static const std::vector<ConstraintEquation> spherical{kDx, kDy, kDz};
+  switch (type) {
+    case JointType::kFixed:
+      return fixed;
+    case JointType::kRevolute:
+      return revolute;
+    case JointType::kPrismatic:
+      return prismatic;
+    case JointType::kPlanarTranslation:
+      return planar;
+    case JointType::kSpherical:
+      return spherical;
+  }
+  return fixed;
+}
+
+JointType jointTypeFromName(const std::string& name) {
+  std::string known;
+  for (const auto& n : kNames) {
+    if (name == n.name) return n.type;
+    known += (known.empty() ? "" : ", ") + std::string(n.name);
+  }
+  throw std::invalid_argument("unknown joint type '" + name + "' (expected one of: " + known +
+                              ")");
+}
+
+std::string jointTypeName(JointType type) {
+  for (const auto& n : kNames)
+    if (n.type == type) return n.name;
+  return "unknown";
+}
+
+}  // namespace tribo

@@ -1,0 +1,40 @@
+// Everything derived within one force evaluation, preallocated so a warm step does not
+// allocate: geometry poses, contact points and records, force buffers split by source, the
+// resulting accelerations, and the constraint quantities. Written by Dynamics::evaluate;
+// read by the integrators, outputs and tests. Not restart state (core/state.hpp).
+#pragma once
+
+#include <vector>
+
+#include "contact/contact_point.hpp"
+#include "core/math.hpp"
+
+namespace tribo {
+
+struct Wrench {
+  Vec3 force = Vec3::Zero();   // at the body origin, world [N]
+  Vec3 torque = Vec3::Zero();  // about the body origin, world [N m]
+  void setZero() {
+    force.setZero();
+    torque.setZero();
+  }
+};
+
+struct Workspace {
+  std::vector<Eigen::Isometry3d> geometry_poses;  // world
+  std::vector<contact::ContactPoint> contact_points;
+  std::vector<contact::ContactRecord> contacts;   // one per contact point
+  // Per body, by source (gravity is m g, not stored).
+  std::vector<Wrench> contact_wrench;
+  std::vector<Wrench> spring_wrench;
+  std::vector<Wrench> constraint_wrench;          // J^T lambda
+  // Per body, world: the result of the evaluation (zero for kinematic bodies).
+  std::vector<Vec3> linear_acceleration;
+  std::vector<Vec3> angular_acceleration;
+  // Constraint measures at the evaluated state.
+  double max_constraint_error = 0.0;      // max |Phi| [m or -]
+  double max_constraint_rate_error = 0.0; // max |J v|
+  double max_penetration = 0.0;           // [m]
+};
+
+}  // namespace tribo
