@@ -1,0 +1,102 @@
+// The `tribo` command: parse arguments, load the scene (io), run it (core via io), write
+// results, print a short summary. Exit status: 0 success, 1 usage error, 2 bad scene or
+// parameters, 3 the run diverged (partial results written and marked so), 4 output error.
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/result_writer.hpp"
+#include "io/scene_loader.hpp"
+#include "io/scene_run.hpp"
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: tribo run SCENE.yaml --out DIR [--set NAME=VALUE ...]\n"
+    "\n"
+    "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
+    "  --out   output folder (created if missing)\n"
+    "  --set   override a value of the scene's parameters: section (repeatable)\n";
+
+int usage(const std::string& problem) {
+  std::fprintf(stderr, "tribo: %s\n\n%s", problem.c_str(), kUsage);
+  return 1;
+}
+
+void printSummary(const tribo::io::Scene& scene, const tribo::io::RunResult& r,
+                  const std::filesystem::path& out) {
+  const auto& s = r.summary;
+  const auto& o = scene.model->options;
+  std::printf("scene            %s\n", scene.path.c_str());
+  std::printf("integrator       %s, step %g s, %ld steps\n",
+              tribo::integratorName(o.integrator).c_str(), o.time_step, r.stats.steps);
+  std::printf("status           %s\n", r.complete ? "complete" : ("DIVERGED: " + r.message).c_str());
+  std::printf("observed         %s (coordinate %d)\n", scene.output.summary.body.c_str(),
+              scene.output.summary.coordinate);
+  std::printf("oscillating      %s (%zu cycles)\n", s.oscillating ? "yes" : "no", s.cycles.size());
+  std::printf("amplitude (p-p)  %.6g m\n", s.amplitude_pp);
+  std::printf("period           %.6g s\n", s.period);
+  std::printf("time to 98%%      %.6g s\n", s.time_to_98);
+  std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
+  std::printf("max penetration  %.3g m\n", r.stats.max_penetration);
+  std::printf("speed            %.4g simulated s per wall s (%.3g s wall)\n",
+              r.simulated_seconds / r.wall_seconds, r.wall_seconds);
+  std::printf("results          %s\n", out.string().c_str());
+}
+
+int run(const std::vector<std::string>& args) {
+  std::string scene_path;
+  std::string out_dir;
+  std::vector<std::string> overrides;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--out" || a == "--set") {
+      if (i + 1 >= args.size()) return usage(a + " needs a value");
+      (a == "--out" ? out_dir : overrides.emplace_back()) = args[++i];
+    } else if (a.rfind("--", 0) == 0) {
+      return usage("unknown option '" + a + "'");
+    } else if (scene_path.empty()) {
+      scene_path = a;
+    } else {
+      return usage("more than one scene given ('" + scene_path + "', '" + a + "')");
+    }
+  }
+  if (scene_path.empty()) return usage("no scene file given");
+  if (out_dir.empty()) return usage("no output folder given (--out DIR)");
+
+  tribo::io::Scene scene;
+  try {
+    scene = tribo::io::loadScene(scene_path, overrides);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo: %s\n", e.what());
+    return 2;
+  }
+  const tribo::io::RunResult result = tribo::io::runScene(scene);
+  try {
+    tribo::io::writeResults(out_dir, scene, result);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo: %s\n", e.what());
+    return 4;
+  }
+  printSummary(scene, result, out_dir);
+  if (!result.complete) {
+    std::fprintf(stderr, "tribo: run stopped early: %s\n", result.message.c_str());
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) return usage("no command given");
+  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::printf("%s", kUsage);
+    return 0;
+  }
+  if (args[0] == "run") return run({args.begin() + 1, args.end()});
+  return usage("unknown command '" + args[0] + "'");
+}

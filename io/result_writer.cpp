@@ -1,0 +1,117 @@
+#include "io/result_writer.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace tribo::io {
+
+namespace {
+
+std::filesystem::path temporaryFor(const std::filesystem::path& file) {
+  return file.string() + ".partial";
+}
+
+void commit(const std::filesystem::path& tmp, const std::filesystem::path& file) {
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) throw std::runtime_error("cannot write '" + file.string() + "': " + ec.message());
+}
+
+// JSON has no NaN or infinity: a non-finite figure is written as null.
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; }
+
+}  // namespace
+
+void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory) {
+  const auto tmp = temporaryFor(file);
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
+  const auto& names = trajectory.columns();
+  for (std::size_t c = 0; c < names.size(); ++c)
+    std::fprintf(f, "%s%s", c ? "," : "", names[c].c_str());
+  std::fputc('\n', f);
+  char buf[64];
+  for (std::size_t r = 0; r < trajectory.rows(); ++r) {
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      if (c) std::fputc(',', f);
+      const auto res = std::to_chars(buf, buf + sizeof buf, trajectory.column(c)[r],
+                                     std::chars_format::general, 10);
+      std::fwrite(buf, 1, static_cast<std::size_t>(res.ptr - buf), f);
+    }
+    std::fputc('\n', f);
+  }
+  const bool ok = std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !ok) throw std::runtime_error("error writing '" + tmp.string() + "'");
+  commit(tmp, file);
+}
+
+void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
+                      const RunResult& result) {
+  const Model& model = *scene.model;
+  const SimulationOptions& o = model.options;
+  nlohmann::json j;
+  j["status"] = result.complete ? "complete" : "diverged";
+  if (!result.complete) j["error"] = result.message;
+  j["scene"] = scene.path;
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& [name, value] : scene.parameters) params[name] = value;
+  j["parameters"] = params;
+  j["settings"] = {{"integrator", integratorName(o.integrator)},
+                   {"time_step", o.time_step},
+                   {"duration", o.duration},
+                   {"baumgarte_alpha", o.baumgarte_alpha},
+                   {"baumgarte_beta", o.baumgarte_beta},
+                   {"output_interval", scene.output.interval}};
+  nlohmann::json materials = nlohmann::json::array();
+  for (const auto& m : model.materials)
+    materials.push_back(
+        {{"normal_law",
+          m.normal.type == contact::NormalLawType::kLinear ? "linear" : "hunt_crossley"},
+         {"stiffness", m.normal.stiffness},
+         {"damping", m.normal.damping},
+         {"friction_law", std::string(m.friction->name())}});
+  j["settings"]["materials"] = materials;
+  const auto& s = result.summary;
+  static const char* kAxis[] = {"x", "y", "z"};
+  j["observed"] = {{"body", scene.output.summary.body},
+                   {"coordinate", kAxis[scene.output.summary.coordinate]},
+                   {"stick_speed", scene.output.summary.stick_speed}};
+  j["oscillating"] = s.oscillating;
+  j["amplitude_pp"] = number(s.amplitude_pp);
+  j["period"] = number(s.period);
+  j["time_to_98"] = number(s.time_to_98);
+  j["stuck_fraction"] = number(s.stuck_fraction);
+  j["mean"] = number(s.x_mean);
+  j["cycles_found"] = s.cycles.size();
+  j["cycles_used"] = s.cycles_used;
+  j["run"] = {
+      {"simulated_seconds", result.simulated_seconds},
+      {"steps", result.stats.steps},
+      {"wall_seconds", result.wall_seconds},
+      {"simulated_seconds_per_wall_second", number(result.simulated_seconds / result.wall_seconds)},
+      {"max_penetration", result.stats.max_penetration},
+      {"max_constraint_error", result.stats.max_constraint_error},
+      {"max_constraint_rate_error", result.stats.max_constraint_rate_error}};
+  const auto tmp = temporaryFor(file);
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
+    out << j.dump(2) << '\n';
+    if (!out) throw std::runtime_error("error writing '" + tmp.string() + "'");
+  }
+  commit(tmp, file);
+}
+
+void writeResults(const std::filesystem::path& dir, const Scene& scene, const RunResult& result) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw std::runtime_error("cannot create output folder '" + dir.string() + "': " + ec.message());
+  writeTrajectoryCsv(dir / "trajectory.csv", result.trajectory);
+  writeSummaryJson(dir / "summary.json", scene, result);
+}
+
+}  // namespace tribo::io

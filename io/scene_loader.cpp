@@ -1,0 +1,540 @@
+// Scene format (see scenes/belt.yaml for a commented example). Keys in [] are optional;
+// defaults are those of the structs they fill (core/model.hpp, core/body.hpp, ...).
+//   [parameters]: {NAME: number or string}                 "$NAME" below is replaced
+//   [simulation]: [duration] [time_step] [integrator: rk4|semi_implicit_euler] [gravity]
+//                 [baumgarte: {[alpha], [beta]}]
+//                 [collision: {[broadphase], [closed_form_box_halfspace], [max_points_per_pair]}]
+//   bodies: - name [kind: dynamic|kinematic] mass (dynamic) [inertia: 3 or 6 values]
+//             [position] [orientation: w x y z | rpy: roll pitch yaw] [velocity]
+//             [angular_velocity] [surface_velocity] [geometry: - name shape [size]
+//             [position] [orientation | rpy]]
+//   [joints]: - name type parent child [anchor] [axis]
+//   [springs]: - name a point_a b point_b stiffness [damping] [rest_length]
+//   [friction_laws]: {LAW: {key: value}}     LAW is a name known to makeFrictionLaw
+//   [materials]: - name [normal: {[law], [stiffness], [damping], [exponent]}] friction
+//   [contacts]: - a b material                 (geometry names; forces reported on b)
+//   [output]: [interval] [summary: {body, [coordinate: x|y|z], [stick_speed], [last_cycles]}]
+// rpy is R = Rz(yaw) Ry(pitch) Rx(roll) (fixed axes x, then y, then z, as in URDF). 6-value
+// inertia is [ixx, iyy, izz, ixy, ixz, iyz], the entries of the symmetric matrix. Without
+// inertia a dynamic body takes the solid-box inertia of its first box geometry (edges = size,
+// rotated by that geometry's orientation; an offset is not shifted: the body origin is the
+// centre of mass).
+#include "io/scene_loader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "core/model_builder.hpp"
+#include "friction/friction_law.hpp"
+
+namespace tribo::io {
+namespace {
+
+using Keys = std::vector<std::string>;
+
+std::string joined(const Keys& words) {
+  std::string out;
+  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out.empty() ? "(none)" : out;
+}
+
+// One YAML value and its key path. Scalars are read through the parameter table, so a
+// "$name" scalar reads as the parameter's current value.
+class Value {
+ public:
+  Value(const std::string& file, const ParameterTable& params, YAML::Node node, std::string path)
+      : file_(&file), params_(&params), node_(std::move(node)), path_(std::move(path)) {}
+
+  Value child(const YAML::Node& node, const std::string& key) const {
+    return {*file_, *params_, node, path_.empty() ? key : path_ + "." + key};
+  }
+  const YAML::Node& node() const { return node_; }
+  const std::string& path() const { return path_; }
+  SourceLocation where() const {
+    const YAML::Mark m = node_.Mark();
+    return {*file_, m.line < 0 ? 0 : m.line + 1, m.column < 0 ? 0 : m.column + 1};
+  }
+  [[noreturn]] void fail(const std::string& what) const { throw SceneError(where(), path_, what); }
+
+  // What is there, for "expected X, found Y" messages.
+  std::string found() const {
+    if (node_.IsNull()) return "nothing";
+    if (node_.IsSequence()) return "a sequence of " + std::to_string(node_.size()) + " items";
+    if (node_.IsMap()) return "a mapping";
+    const std::string& s = node_.Scalar();
+    if (isReference(s)) return "'" + text() + "' (from " + s + ")";
+    return "'" + s + "'";
+  }
+
+  std::string text() const {
+    if (!node_.IsScalar()) fail("expected a string, found " + found());
+    const std::string& s = node_.Scalar();
+    return isReference(s) ? params_->resolve(s, where(), path_).text : s;
+  }
+  double number() const {
+    if (node_.IsScalar())
+      if (const auto v = parseNumber(text())) return *v;
+    fail("expected a number, found " + found());
+  }
+  double positive() const {
+    const double v = number();
+    if (!(v > 0.0)) fail("expected a number > 0, found " + found());
+    return v;
+  }
+  double nonNegative() const {
+    const double v = number();
+    if (!(v >= 0.0)) fail("expected a number >= 0, found " + found());
+    return v;
+  }
+  int integer(int at_least) const {
+    const double v = number();
+    if (v != std::floor(v) || v < at_least || v > 1e9)
+      fail("expected a whole number >= " + std::to_string(at_least) + ", found " + found());
+    return static_cast<int>(v);
+  }
+  bool flag() const {
+    const std::string t = node_.IsScalar() ? text() : "";
+    if (t != "true" && t != "false") fail("expected true or false, found " + found());
+    return t == "true";
+  }
+  // Index of the text in `names`.
+  int choice(const Keys& names) const {
+    const std::string t = node_.IsScalar() ? text() : "";
+    const auto it = std::find(names.begin(), names.end(), t);
+    if (!node_.IsScalar() || it == names.end())
+      fail("expected one of " + joined(names) + ", found " + found());
+    return static_cast<int>(it - names.begin());
+  }
+
+  // Items of a sequence (`null` reads as empty when allowed).
+  std::vector<Value> items(const std::string& what, bool null_is_empty = false) const {
+    std::vector<Value> out;
+    if (null_is_empty && node_.IsNull()) return out;
+    if (!node_.IsSequence()) fail("expected a sequence of " + what + ", found " + found());
+    for (std::size_t i = 0; i < node_.size(); ++i)
+      out.push_back({*file_, *params_, node_[i], path_ + "[" + std::to_string(i) + "]"});
+    return out;
+  }
+  // A sequence of numbers whose length is one of `sizes`; `what` describes it.
+  std::vector<double> numbers(std::initializer_list<std::size_t> sizes,
+                              const std::string& what) const {
+    if (!node_.IsSequence() || std::find(sizes.begin(), sizes.end(), node_.size()) == sizes.end())
+      fail("expected " + what + ", found " + found());
+    std::vector<double> out;
+    for (const Value& item : items(what)) out.push_back(item.number());
+    return out;
+  }
+  Vec3 vec3(const std::string& what = "3 numbers [x, y, z]") const {
+    const auto v = numbers({3}, what);
+    return {v[0], v[1], v[2]};
+  }
+
+ private:
+  const std::string* file_;
+  const ParameterTable* params_;
+  YAML::Node node_;
+  std::string path_;
+};
+
+// A mapping whose keys are checked at once: an unknown or repeated key is an error at that
+// key, listing the accepted ones. An empty accepted list accepts any key.
+class Map {
+ public:
+  Map(const Value& self, const Keys& accepted) : self_(self) {
+    const YAML::Node& node = self.node();
+    if (!node.IsMap())
+      self.fail("expected a mapping" +
+                (accepted.empty() ? std::string() : " with keys " + joined(accepted)) + ", found " +
+                self.found());
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const Value key = self.child(it->first, it->first.Scalar());
+      if (!it->first.IsScalar()) key.fail("expected a key name, found " + key.found());
+      const std::string name = it->first.Scalar();
+      if (!accepted.empty() && std::find(accepted.begin(), accepted.end(), name) == accepted.end())
+        key.fail("unknown key '" + name + "' (accepted keys: " + joined(accepted) + ")");
+      if (get(name)) key.fail("key '" + name + "' given twice");
+      entries_.emplace_back(name, self.child(it->second, name));
+    }
+  }
+
+  const Value& self() const { return self_; }
+  const std::vector<std::pair<std::string, Value>>& entries() const { return entries_; }
+  std::optional<Value> get(const std::string& key) const {
+    for (const auto& [name, value] : entries_)
+      if (name == key) return value;
+    return std::nullopt;
+  }
+  Value required(const std::string& key) const {
+    if (auto v = get(key)) return *v;
+    self_.fail("missing required key '" + key + "'");
+  }
+  Vec3 vec3(const std::string& key, const Vec3& fallback) const {
+    const auto v = get(key);
+    return v ? v->vec3() : fallback;
+  }
+
+ private:
+  Value self_;
+  std::vector<std::pair<std::string, Value>> entries_;
+};
+
+// Runs f; an error of the model builder, a law factory or a name lookup becomes a SceneError
+// located at `at`.
+template <typename F>
+auto guarded(const Value& at, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const ModelError& e) {
+    at.fail(e.what());
+  } catch (const std::invalid_argument& e) {  // incl. friction::FrictionParameterError
+    at.fail(e.what());
+  }
+}
+
+Quat orientation(const Map& m) {
+  const auto q = m.get("orientation");
+  const auto rpy = m.get("rpy");
+  if (q && rpy) rpy->fail("give orientation or rpy, not both");
+  if (q) {
+    const auto v = q->numbers({4}, "a quaternion [w, x, y, z]");
+    const Quat out(v[0], v[1], v[2], v[3]);
+    if (out.norm() < 1e-12) q->fail("expected a non-zero quaternion [w, x, y, z]");
+    return out.normalized();
+  }
+  if (rpy) {
+    const Vec3 a = rpy->vec3("3 angles [roll, pitch, yaw] [rad]");
+    return Quat(Eigen::AngleAxisd(a.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(a.y(), Vec3::UnitY()) *
+                Eigen::AngleAxisd(a.x(), Vec3::UnitX()));
+  }
+  return Quat::Identity();
+}
+
+struct GeometrySpec {
+  Value at;
+  std::string name;
+  contact::Shape shape;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+};
+
+struct LawEntry {
+  Value at;
+  friction::LawSpec spec;
+  std::shared_ptr<const friction::FrictionLaw> law;  // built when a material selects it
+};
+
+class Loader {
+ public:
+  Loader(std::string file, const YAML::Node& root) : file_(std::move(file)), root_(root) {}
+
+  Scene load(const std::vector<std::string>& overrides) {
+    const Value root(file_, params_, root_, "");
+    const Map m(root, {"parameters", "simulation", "bodies", "joints", "springs", "friction_laws",
+                       "materials", "contacts", "output"});
+    if (auto p = m.get("parameters")) readParameters(*p);
+    params_.applyOverrides(overrides, file_);
+    if (auto s = m.get("simulation")) readSimulation(*s);
+    for (const Value& b : m.required("bodies").items("bodies")) readBody(b);
+    if (auto j = m.get("joints"))
+      for (const Value& v : j->items("joints", true)) readJoint(v);
+    if (auto s = m.get("springs"))
+      for (const Value& v : s->items("springs", true)) readSpring(v);
+    if (auto f = m.get("friction_laws")) readFrictionLaws(*f);
+    if (auto mat = m.get("materials"))
+      for (const Value& v : mat->items("materials", true)) readMaterial(v);
+    if (auto c = m.get("contacts"))
+      for (const Value& v : c->items("contacts", true)) readContact(v);
+    Scene scene;
+    if (auto o = m.get("output")) scene.output = readOutput(*o);
+    scene.path = file_;
+    try {
+      scene.model = builder_.build();
+    } catch (const ModelError& e) {
+      throw SceneError({file_}, "", e.what());
+    }
+    scene.parameters = params_.values();
+    return scene;
+  }
+
+ private:
+  void readParameters(const Value& v) {
+    const Map table(v, {});
+    for (const auto& [name, value] : table.entries()) {
+      if (!value.node().IsScalar())
+        value.fail("expected a number or a string, found " + value.found());
+      params_.add(name, value.node().Scalar(), value.where());
+    }
+  }
+
+  void readSimulation(const Value& v) {
+    const Map m(v, {"duration", "time_step", "integrator", "gravity", "baumgarte", "collision"});
+    SimulationOptions& o = builder_.options();
+    if (auto x = m.get("duration")) o.duration = x->positive();
+    if (auto x = m.get("time_step")) o.time_step = x->positive();
+    if (auto x = m.get("integrator"))
+      o.integrator = guarded(*x, [&] { return integratorFromName(x->text()); });
+    o.gravity = m.vec3("gravity", o.gravity);
+    if (auto x = m.get("baumgarte")) {
+      const Map b(*x, {"alpha", "beta"});
+      if (auto a = b.get("alpha")) o.baumgarte_alpha = a->nonNegative();
+      if (auto a = b.get("beta")) o.baumgarte_beta = a->nonNegative();
+    }
+    if (auto x = m.get("collision")) {
+      const Map c(*x, {"broadphase", "closed_form_box_halfspace", "max_points_per_pair"});
+      if (auto a = c.get("broadphase")) o.collision.broadphase = a->flag();
+      if (auto a = c.get("closed_form_box_halfspace"))
+        o.collision.closed_form_box_halfspace = a->flag();
+      if (auto a = c.get("max_points_per_pair")) o.collision.max_points_per_pair = a->integer(1);
+    }
+  }
+
+  void readBody(const Value& v) {
+    const Map m(v, {"name", "kind", "mass", "inertia", "position", "orientation", "rpy", "velocity",
+                    "angular_velocity", "surface_velocity", "geometry"});
+    Body body;
+    body.name = m.required("name").text();
+    if (auto k = m.get("kind"))
+      body.kind =
+          k->choice({"dynamic", "kinematic"}) == 0 ? BodyKind::kDynamic : BodyKind::kKinematic;
+    body.position = m.vec3("position", Vec3::Zero());
+    body.orientation = orientation(m);
+    body.velocity = m.vec3("velocity", Vec3::Zero());
+    body.angular_velocity = m.vec3("angular_velocity", Vec3::Zero());
+    body.surface_velocity = m.vec3("surface_velocity", Vec3::Zero());
+    std::vector<GeometrySpec> geometries;
+    if (auto g = m.get("geometry"))
+      for (const Value& item : g->items("geometries", true))
+        geometries.push_back(readGeometry(item));
+
+    const bool dynamic = body.kind == BodyKind::kDynamic;
+    if (auto mass = dynamic ? std::optional(m.required("mass")) : m.get("mass"))
+      body.mass = mass->number();
+    if (auto inertia = m.get("inertia")) {
+      const auto i = inertia->numbers(
+          {3, 6}, "3 principal moments [ixx, iyy, izz] or 6 values [ixx, iyy, izz, ixy, ixz, iyz]");
+      body.inertia = Vec3(i[0], i[1], i[2]).asDiagonal();
+      if (i.size() == 6) {
+        body.inertia(0, 1) = body.inertia(1, 0) = i[3];
+        body.inertia(0, 2) = body.inertia(2, 0) = i[4];
+        body.inertia(1, 2) = body.inertia(2, 1) = i[5];
+      }
+    } else if (dynamic) {
+      const auto box = std::find_if(geometries.begin(), geometries.end(), [](const auto& g) {
+        return g.shape.type == contact::ShapeType::kBox;
+      });
+      if (box == geometries.end())
+        v.fail("missing key 'inertia' (needed by a dynamic body without box geometry)");
+      const Vec3 e2 = (2.0 * box->shape.half_extents).cwiseAbs2();  // squared edge lengths
+      const Mat3 local =
+          (body.mass / 12.0 * Vec3(e2.y() + e2.z(), e2.x() + e2.z(), e2.x() + e2.y())).asDiagonal();
+      const Mat3 r = box->pose.linear();
+      body.inertia = r * local * r.transpose();
+    }
+    const BodyIndex index = guarded(v, [&] { return builder_.addBody(body); });
+    for (const auto& g : geometries) {
+      guarded(g.at, [&] { return builder_.addGeometry(g.name, index, g.shape, g.pose); });
+      geometry_names_.push_back(g.name);
+    }
+  }
+
+  GeometrySpec readGeometry(const Value& v) {
+    const Map m(v, {"name", "shape", "size", "position", "orientation", "rpy"});
+    GeometrySpec g{v, m.required("name").text(), {}, Eigen::Isometry3d::Identity()};
+    const Value shape = m.required("shape");
+    if (shape.choice({"box", "halfspace"}) == 0) {
+      const Value size = m.required("size");
+      const Vec3 edges = size.vec3("3 edge lengths [x, y, z] [m]");
+      if (!(edges.minCoeff() > 0.0))
+        size.fail("expected 3 edge lengths > 0, found " + size.found());
+      g.shape = contact::Shape::box(edges / 2.0);
+    } else {
+      if (auto size = m.get("size")) size->fail("a halfspace takes no size");
+      g.shape = contact::Shape::halfSpace();
+    }
+    g.pose.translation() = m.vec3("position", Vec3::Zero());
+    g.pose.linear() = orientation(m).toRotationMatrix();
+    return g;
+  }
+
+  BodyIndex body(const Value& v) const {
+    const std::string name = v.text();
+    if (auto index = builder_.findBody(name)) return *index;
+    Keys known{"world"};
+    for (const auto& b : builder_.bodies()) known.push_back(b.name);
+    v.fail("unknown body '" + name + "' (known bodies: " + joined(known) + ")");
+  }
+
+  void readJoint(const Value& v) {
+    const Map m(v, {"name", "type", "parent", "child", "anchor", "axis"});
+    const std::string name = m.required("name").text();
+    const Value type_value = m.required("type");
+    const JointType type =
+        guarded(type_value, [&] { return jointTypeFromName(type_value.text()); });
+    const auto parent_value = m.get("parent");
+    const BodyIndex parent = parent_value ? body(*parent_value) : BodyIndex::world();
+    const BodyIndex child = body(m.required("child"));
+    const Vec3 child_position =
+        child.isWorld() ? Vec3::Zero() : builder_.bodies()[child.value].position;
+    const Vec3 anchor = m.vec3("anchor", child_position);
+    const Vec3 axis = m.vec3("axis", Vec3::UnitZ());
+    guarded(v, [&] { builder_.addJoint(name, type, parent, child, anchor, axis); });
+  }
+
+  void readSpring(const Value& v) {
+    const Map m(v, {"name", "a", "point_a", "b", "point_b", "stiffness", "damping", "rest_length"});
+    const std::string name = m.required("name").text();
+    const BodyIndex a = body(m.required("a"));
+    const BodyIndex b = body(m.required("b"));
+    const Vec3 pa = m.required("point_a").vec3();
+    const Vec3 pb = m.required("point_b").vec3();
+    const double k = m.required("stiffness").number();
+    const auto damping = m.get("damping");
+    const auto rest = m.get("rest_length");
+    const double c = damping ? damping->number() : 0.0;
+    const double l0 = rest ? rest->nonNegative() : -1.0;  // < 0: the initial distance
+    guarded(v, [&] { builder_.addSpring(name, a, pa, b, pb, k, c, l0); });
+  }
+
+  // Reads every law entry (known law name, scalar values, resolvable references) but builds
+  // only the laws a material selects (readMaterial), so that values out of range for a law
+  // that is not used are no error: e.g. `--set a=0.5` while the materials use recurdyn.
+  // Key names are checked by makeFrictionLaw, and so also only for the laws in use.
+  void readFrictionLaws(const Value& v) {
+    const Keys& known = friction::knownFrictionLaws();
+    const Map laws(v, {});
+    for (const auto& [law, entry] : laws.entries()) {
+      if (std::find(known.begin(), known.end(), law) == known.end())
+        entry.fail("unknown friction law '" + law + "' (known laws: " + joined(known) + ")");
+      LawEntry e{entry, {law, {}, {}}, nullptr};
+      const Map keys(entry, {});
+      for (const auto& [key, value] : keys.entries()) {
+        if (!value.node().IsScalar())
+          value.fail("expected a number or a string, found " + value.found());
+        const std::string text = value.text();
+        if (const auto number = parseNumber(text))
+          e.spec.values[key] = *number;
+        else
+          e.spec.options[key] = text;
+      }
+      law_names_.push_back(law);
+      laws_.emplace(law, std::move(e));
+    }
+  }
+
+  void readMaterial(const Value& v) {
+    const Map m(v, {"name", "normal", "friction"});
+    const Value name_value = m.required("name");
+    const std::string name = name_value.text();
+    if (materials_.count(name)) name_value.fail("material '" + name + "' defined twice");
+    contact::Material material;
+    if (auto n = m.get("normal")) material.normal = readNormalLaw(*n);
+    const Value f = m.required("friction");
+    const auto it = laws_.find(f.text());
+    if (it == laws_.end())
+      f.fail("friction law '" + f.text() +
+             "' is not defined in friction_laws (defined: " + joined(law_names_) + ")");
+    LawEntry& law = it->second;
+    if (!law.law) {
+      try {
+        law.law = friction::makeFrictionLaw(law.spec);
+      } catch (const friction::FrictionParameterError& e) {
+        law.at.fail(std::string(e.what()) + " (selected by " + f.path() + ")");
+      }
+    }
+    material.friction = law.law;
+    materials_[name] = guarded(v, [&] { return builder_.addMaterial(material); });
+  }
+
+  contact::NormalLaw readNormalLaw(const Value& v) {
+    const Map m(v, {"law", "stiffness", "damping", "exponent"});
+    contact::NormalLaw law;
+    if (auto x = m.get("law"))
+      law.type = guarded(*x, [&] { return contact::normalLawFromName(x->text()); });
+    if (auto x = m.get("stiffness")) law.stiffness = x->number();
+    if (auto x = m.get("damping")) law.damping = x->number();
+    if (auto x = m.get("exponent")) {
+      if (law.type != contact::NormalLawType::kHuntCrossley)
+        x->fail("exponent applies to law hunt_crossley only");
+      law.exponent = x->number();
+    }
+    guarded(v, [&] { law.validate(); });
+    return law;
+  }
+
+  void readContact(const Value& v) {
+    const Map m(v, {"a", "b", "material"});
+    auto geometry = [&](const Value& g) {
+      const auto index = builder_.findGeometry(g.text());
+      if (!index)
+        g.fail("unknown geometry '" + g.text() + "' (known geometries: " + joined(geometry_names_) +
+               ")");
+      return *index;
+    };
+    const int a = geometry(m.required("a"));
+    const int b = geometry(m.required("b"));
+    const Value mat = m.required("material");
+    const auto it = materials_.find(mat.text());
+    if (it == materials_.end()) {
+      Keys known;
+      for (const auto& [name, index] : materials_) known.push_back(name);
+      mat.fail("unknown material '" + mat.text() + "' (known materials: " + joined(known) + ")");
+    }
+    guarded(v, [&] { builder_.addContactPair(a, b, it->second); });
+  }
+
+  OutputSpec readOutput(const Value& v) {
+    const Map m(v, {"interval", "summary"});
+    OutputSpec out;
+    if (auto x = m.get("interval")) out.interval = x->positive();
+    if (auto x = m.get("summary")) {
+      const Map s(*x, {"body", "coordinate", "stick_speed", "last_cycles"});
+      const Value b = s.required("body");
+      if (body(b).isWorld()) b.fail("expected a body of the scene, found 'world'");
+      out.summary.body = b.text();
+      if (auto c = s.get("coordinate")) out.summary.coordinate = c->choice({"x", "y", "z"});
+      if (auto c = s.get("stick_speed")) out.summary.stick_speed = c->nonNegative();
+      if (auto c = s.get("last_cycles")) out.summary.last_cycles = c->integer(1);
+    }
+    return out;
+  }
+
+  std::string file_;
+  YAML::Node root_;
+  ParameterTable params_;
+  ModelBuilder builder_;
+  Keys geometry_names_;
+  Keys law_names_;  // in file order, for messages
+  std::map<std::string, LawEntry> laws_;
+  std::map<std::string, int> materials_;
+};
+
+}  // namespace
+
+Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
+                          const std::vector<std::string>& overrides) {
+  try {
+    const YAML::Node root = YAML::Load(yaml);
+    return Loader(name_for_errors, root).load(overrides);
+  } catch (const YAML::Exception& e) {  // syntax errors, and any the reader did not foresee
+    const int line = e.mark.line < 0 ? 0 : e.mark.line + 1;
+    const int column = e.mark.column < 0 ? 0 : e.mark.column + 1;
+    throw SceneError({name_for_errors, line, column}, "", "invalid YAML: " + e.msg);
+  }
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  std::ifstream in(path);
+  if (!std::filesystem::is_regular_file(path, ec) || !in)
+    throw SceneError("cannot open scene file '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return loadSceneFromString(text.str(), path, overrides);
+}
+
+}  // namespace tribo::io

@@ -1,0 +1,55 @@
+// Scene files: a YAML description of bodies, geometry, joints, springs, friction laws,
+// materials, contact pairs and output, turned into a validated, immutable Model through
+// ModelBuilder. The format is documented on scenes/belt.yaml and in io/scene_loader.cpp;
+// in short, the top-level keys are
+//   parameters, simulation, bodies, joints, springs, friction_laws, materials, contacts, output
+// and a scalar "$name" anywhere stands for parameter `name` (io/scene_parameters.hpp).
+// The loader is strict: unknown keys, wrong types and dangling names are SceneErrors that
+// give file:line:col, the key path (e.g. "bodies[1].mass") and what was expected vs found;
+// errors of ModelBuilder, the friction-law factory and the normal laws come back the same
+// way, located at the element that caused them.
+// Not here: running the scene or writing results; URDF; writing scene files.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/model.hpp"
+#include "io/scene_parameters.hpp"
+
+namespace tribo::io {
+
+// Which body coordinate the run summary analyses (io/oscillation_summary.hpp).
+struct SummarySpec {
+  std::string body;           // body name; empty when the scene asks for no summary
+  int coordinate = 0;         // of the body origin, world frame: 0 = x, 1 = y, 2 = z
+  double stick_speed = 1e-3;  // [m/s] slip speed below which the body counts as stuck
+  int last_cycles = 3;        // cycles averaged for amplitude and period
+};
+
+struct OutputSpec {
+  double interval = 1e-3;  // [s] sampling of trajectory.csv
+  SummarySpec summary;
+};
+
+struct Scene {
+  std::string path;  // the file it came from (or the name given for a string)
+  std::shared_ptr<const tribo::Model> model;
+  OutputSpec output;
+  // Resolved parameter name -> value text (after overrides), in file order, for the run
+  // summary.
+  std::vector<std::pair<std::string, std::string>> parameters;
+};
+
+// Loads a scene file. `overrides` are NAME=VALUE strings (the command line's --set), applied
+// to the parameters: section before any "$name" is resolved. Throws SceneError.
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The same from YAML text; `name_for_errors` stands for the file name in messages and in
+// Scene::path.
+Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
+                          const std::vector<std::string>& overrides = {});
+
+}  // namespace tribo::io

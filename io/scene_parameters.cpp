@@ -1,0 +1,134 @@
+#include "io/scene_parameters.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <system_error>
+
+namespace tribo::io {
+namespace {
+
+std::string located(const SourceLocation& where, const std::string& key_path,
+                    const std::string& what) {
+  std::ostringstream out;
+  if (!where.file.empty()) {
+    out << where.file;
+    if (where.line > 0) out << ':' << where.line;
+    if (where.line > 0 && where.column > 0) out << ':' << where.column;
+    out << ": ";
+  }
+  if (!key_path.empty()) out << key_path << ": ";
+  out << what;
+  return out.str();
+}
+
+std::string_view trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t");
+  return s.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+SceneError::SceneError(const SourceLocation& where, const std::string& key_path,
+                       const std::string& what)
+    : std::runtime_error(located(where, key_path, what)),
+      where_(where),
+      key_path_(key_path),
+      detail_(what) {}
+
+SceneError::SceneError(const std::string& what) : std::runtime_error(what), detail_(what) {}
+
+std::optional<double> parseNumber(std::string_view text) {
+  // from_chars takes no leading '+'; accept exactly one before a digit or '.'.
+  if (text.size() > 1 && text.front() == '+' && text[1] != '-' && text[1] != '+')
+    text.remove_prefix(1);
+  if (text.empty()) return std::nullopt;
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+bool isParameterName(std::string_view name) {
+  if (name.empty()) return false;
+  auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (!alpha(name.front())) return false;
+  for (const char c : name)
+    if (!alpha(c) && !(c >= '0' && c <= '9')) return false;
+  return true;
+}
+
+void ParameterTable::add(const std::string& name, const std::string& text,
+                         const SourceLocation& where) {
+  const std::string key_path = "parameters." + name;
+  if (!isParameterName(name))
+    throw SceneError(where, key_path,
+                     "a parameter name must be letters, digits and '_', not starting with a "
+                     "digit (got '" +
+                         name + "')");
+  if (find(name)) throw SceneError(where, key_path, "parameter '" + name + "' defined twice");
+  if (isReference(text))
+    throw SceneError(where, key_path,
+                     "a parameter's value must be a number or a string, not a reference to "
+                     "another parameter (got '" +
+                         text + "')");
+  parameters_.push_back({name, text, parseNumber(text).has_value(), where, key_path, false});
+}
+
+void ParameterTable::applyOverrides(std::span<const std::string> overrides,
+                                    const std::string& file) {
+  const SourceLocation in_file{file, 0, 0};
+  for (const std::string& item : overrides) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos)
+      throw SceneError(in_file, "--set", "expected NAME=VALUE, got '" + item + "'");
+    const std::string name(trimmed(std::string_view(item).substr(0, eq)));
+    const std::string value(trimmed(std::string_view(item).substr(eq + 1)));
+    Parameter* p = nullptr;
+    for (auto& candidate : parameters_)
+      if (candidate.name == name) p = &candidate;
+    if (p == nullptr)
+      throw SceneError(in_file, "--set " + item,
+                       "unknown parameter '" + name + "' (known parameters: " + knownNames() + ")");
+    if (p->numeric && !parseNumber(value))
+      throw SceneError(p->where, p->key_path,
+                       "parameter '" + name + "': expected a number, got '" + value +
+                           "' (from --set " + item + ")");
+    p->text = value;
+    p->overridden = true;
+  }
+}
+
+const ParameterTable::Parameter& ParameterTable::resolve(std::string_view reference,
+                                                         const SourceLocation& where,
+                                                         const std::string& key_path) const {
+  const std::string_view name = reference.substr(isReference(reference) ? 1 : 0);
+  if (const Parameter* p = find(name)) return *p;
+  throw SceneError(where, key_path,
+                   "'" + std::string(reference) +
+                       "' refers to no parameter (known parameters: " + knownNames() + ")");
+}
+
+const ParameterTable::Parameter* ParameterTable::find(std::string_view name) const {
+  for (const auto& p : parameters_)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+std::string ParameterTable::knownNames() const {
+  std::string out;
+  for (const auto& p : parameters_) out += (out.empty() ? "" : ", ") + p.name;
+  return out.empty() ? "(none)" : out;
+}
+
+std::vector<std::pair<std::string, std::string>> ParameterTable::values() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  out.reserve(parameters_.size());
+  for (const auto& p : parameters_) out.emplace_back(p.name, p.text);
+  return out;
+}
+
+}  // namespace tribo::io

@@ -1,0 +1,34 @@
+// Runs a loaded scene from t = 0 to its duration, recording at the output interval, and
+// analyses the observed coordinate (limit-cycle amplitude, period, time to 98% of the
+// amplitude, stuck fraction). The loop does no I/O. A diverged run stops at the failing
+// step and is returned with complete = false and the simulator's message; what was
+// recorded up to the last good step is kept.
+// Not here: writing files (io/result_writer.hpp), argument parsing (apps/).
+#pragma once
+
+#include <string>
+
+#include "core/simulator.hpp"
+#include "io/oscillation_summary.hpp"
+#include "io/scene_loader.hpp"
+#include "io/trajectory_recorder.hpp"
+
+namespace tribo::io {
+
+struct RunResult {
+  bool complete = false;
+  std::string message;  // why the run stopped early, when !complete
+  StepStats stats;
+  double wall_seconds = 0.0;  // time spent stepping (analysis excluded)
+  double simulated_seconds = 0.0;
+  TrajectoryRecorder trajectory;
+  OscillationSummary summary;  // of output.summary's body and coordinate
+};
+
+RunResult runScene(const Scene& scene);
+
+// The oscillation summary of a recorded trajectory for a summary spec.
+OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& model,
+                             const SummarySpec& spec);
+
+}  // namespace tribo::io
