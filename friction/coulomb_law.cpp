@@ -1,0 +1,100 @@
+#include "friction/coulomb_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+namespace tribo::friction {
+namespace {
+
+[[noreturn]] void fail(const std::string& rule, double value) {
+  std::ostringstream os;
+  os << "coulomb: " << rule << " (got " << std::setprecision(15) << value << ")";
+  throw FrictionParameterError(os.str());
+}
+
+const CoulombParams& validated(const CoulombParams& p) {
+  if (!std::isfinite(p.mu)) fail("mu must be a finite number", p.mu);
+  if (!std::isfinite(p.v_eps)) fail("v_eps must be a finite number", p.v_eps);
+  if (!(p.mu >= 0.0)) fail("mu must be >= 0", p.mu);
+  if (!(p.v_eps > 0.0)) fail("v_eps must be > 0", p.v_eps);
+  return p;
+}
+
+// sign(v) with sign(0) = 0; NaN stays NaN.
+double signOf(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : v * 0.0); }
+
+}  // namespace
+
+std::string_view toString(CoulombRegularization regularization) {
+  switch (regularization) {
+    case CoulombRegularization::kNone:
+      return "none";
+    case CoulombRegularization::kLinear:
+      return "linear";
+    case CoulombRegularization::kTanh:
+      return "tanh";
+    case CoulombRegularization::kHavsin:
+      return "havsin";
+  }
+  return "unknown";
+}
+
+CoulombLaw::CoulombLaw(const CoulombParams& params)
+    : params_(validated(params)),
+      inv_v_eps_(1.0 / params.v_eps),
+      ramp_(0.0, 0.0, params.v_eps, params.mu) {}
+
+double CoulombLaw::coefficient(double v) const {
+  const double mu = params_.mu;
+  switch (params_.regularization) {
+    case CoulombRegularization::kNone:
+      return mu * signOf(v);
+    case CoulombRegularization::kLinear:
+      return mu * std::clamp(v * inv_v_eps_, -1.0, 1.0);
+    case CoulombRegularization::kTanh:
+      return mu * std::tanh(v * inv_v_eps_);
+    case CoulombRegularization::kHavsin:
+      return std::copysign(ramp_.value(std::abs(v)), v);
+  }
+  return 0.0;
+}
+
+double CoulombLaw::slope(double v) const {
+  if (std::isnan(v)) return v;
+  const double mu = params_.mu;
+  switch (params_.regularization) {
+    case CoulombRegularization::kNone:
+      return 0.0;
+    case CoulombRegularization::kLinear:
+      return std::abs(v) < params_.v_eps ? mu * inv_v_eps_ : 0.0;
+    case CoulombRegularization::kTanh: {
+      const double t = std::tanh(v * inv_v_eps_);
+      return mu * inv_v_eps_ * (1.0 - t * t);
+    }
+    case CoulombRegularization::kHavsin:
+      return ramp_.derivative(std::abs(v));
+  }
+  return 0.0;
+}
+
+double CoulombLaw::maxCoefficient(double v_max) const {
+  // Every regularization is monotone in |v|, so the largest value is the one at v_max.
+  return std::abs(coefficient(std::abs(v_max)));
+}
+
+std::vector<double> CoulombLaw::breakpoints() const {
+  switch (params_.regularization) {
+    case CoulombRegularization::kLinear:
+    case CoulombRegularization::kHavsin:
+      return {params_.v_eps};
+    case CoulombRegularization::kNone:
+    case CoulombRegularization::kTanh:
+      break;
+  }
+  return {};
+}
+
+}  // namespace tribo::friction
