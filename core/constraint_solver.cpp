@@ -8,28 +8,23 @@ namespace tribo {
 namespace {
 
 struct Motion {
-  Mat3 rotation = Mat3::Identity();
-  Vec3 origin = Vec3::Zero();
-  Vec3 velocity = Vec3::Zero();
-  Vec3 angular_velocity = Vec3::Zero();
+  const Mat3& rotation;
+  const Vec3& origin;
+  const Vec3& velocity;
+  const Vec3& angular_velocity;
 };
 
-Motion motionOf(const State& state, BodyIndex b) {
-  if (b.isWorld()) return {};
+Motion motionOf(const State& state, const Workspace& ws, BodyIndex b) {
+  static const Mat3 kIdentity = Mat3::Identity();
+  static const Vec3 kZero = Vec3::Zero();
+  if (b.isWorld()) return {kIdentity, kZero, kZero, kZero};
   const BodyState& s = state.bodies[b.value];
-  return {s.orientation.toRotationMatrix(), s.position, s.velocity, s.angular_velocity};
+  return {ws.rotation[b.value], s.position, s.velocity, s.angular_velocity};
 }
 
 }  // namespace
 
 ConstraintSolver::ConstraintSolver(const Model& model) : model_(model) {
-  dof_.assign(model.bodies.size(), -1);
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    if (model.bodies[b].kind == BodyKind::kDynamic) {
-      dof_[b] = n_dof_;
-      n_dof_ += 6;
-    }
-  }
   for (const Joint& j : model.joints) {
     for (const ConstraintEquation& e : jointEquations(j.type)) {
       rows_.push_back({e.kind, j.parent, j.child, j.axes_in_parent.col(e.parent_axis),
@@ -37,13 +32,30 @@ ConstraintSolver::ConstraintSolver(const Model& model) : model_(model) {
     }
   }
   const int m = equationCount();
-  jac_.setZero(m, n_dof_);
-  minv_jt_.setZero(n_dof_, m);
-  schur_.setZero(m, m);
-  rhs_.setZero(m);
+  jac_.resize(m);
+  if (m <= kSmall) {
+    schur_small_.setZero(m, m);
+    rhs_small_.setZero(m);
+  } else {
+    schur_.setZero(m, m);
+    rhs_.setZero(m);
+  }
   lambda_.setZero(m);
-  ldlt_ = Eigen::LDLT<Eigen::MatrixXd>(m);
-  inv_inertia_world_.assign(model.bodies.size(), Mat3::Zero());
+}
+
+template <typename Matrix>
+void ConstraintSolver::fillSchur(Matrix& schur) const {
+  const int m = equationCount();
+  for (int r = 0; r < m; ++r) {
+    for (int s = r; s < m; ++s) {
+      double sum = 0.0;
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b)
+          if (jac_[r].body[a] >= 0 && jac_[r].body[a] == jac_[s].body[b])
+            sum += jac_[r].j[a].dot(jac_[s].minv_j[b]);
+      schur(r, s) = schur(s, r) = sum;
+    }
+  }
 }
 
 void ConstraintSolver::solve(const State& state, Workspace& ws) {
@@ -54,18 +66,14 @@ void ConstraintSolver::solve(const State& state, Workspace& ws) {
   if (m == 0) return;
   const double alpha = model_.options.baumgarte_alpha;
   const double beta = model_.options.baumgarte_beta;
+  auto dynamic = [&](BodyIndex b) {
+    return !b.isWorld() && model_.bodies[b.value].kind == BodyKind::kDynamic;
+  };
 
-  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    if (dof_[b] < 0) continue;
-    const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
-    inv_inertia_world_[b] = r * model_.bodies[b].inertia.inverse() * r.transpose();
-  }
-
-  jac_.setZero();
   for (int i = 0; i < m; ++i) {
     const Row& row = rows_[i];
-    const Motion p = motionOf(state, row.parent);
-    const Motion c = motionOf(state, row.child);
+    const Motion p = motionOf(state, ws, row.parent);
+    const Motion c = motionOf(state, ws, row.child);
     const Vec3 u = p.rotation * row.u_parent;
     const Vec3 wp_u = p.angular_velocity.cross(u);
     Row6 jp, jc;
@@ -91,44 +99,51 @@ void ConstraintSolver::solve(const State& state, Workspace& ws) {
       jdot_v = p.angular_velocity.cross(wp_u).dot(w) + 2.0 * wp_u.dot(wc_w) +
                u.dot(c.angular_velocity.cross(wc_w));
     }
-    Eigen::Matrix<double, 6, 1> vp, vc;
-    vp << p.velocity, p.angular_velocity;
-    vc << c.velocity, c.angular_velocity;
-    const double phi_dot = jp.dot(vp) + jc.dot(vc);
+    const double phi_dot = jp.head<3>().dot(p.velocity) + jp.tail<3>().dot(p.angular_velocity) +
+                           jc.head<3>().dot(c.velocity) + jc.tail<3>().dot(c.angular_velocity);
+    RowJacobian& rj = jac_[i];
     double ja_free = 0.0;  // J a for the unconstrained accelerations
-    auto place = [&](BodyIndex b, const Row6& jb) {
-      if (b.isWorld() || dof_[b.value] < 0) return;
-      jac_.block<1, 6>(i, dof_[b.value]) += jb;
-      ja_free += jb.head<3>().dot(ws.linear_acceleration[b.value]) +
-                 jb.tail<3>().dot(ws.angular_acceleration[b.value]);
-    };
-    place(row.parent, jp);
-    place(row.child, jc);
-    rhs_(i) = -jdot_v - 2.0 * alpha * phi_dot - beta * beta * phi - ja_free;
+    int k = 0;
+    for (const auto& [body, jb] : {std::pair{row.parent, jp}, std::pair{row.child, jc}}) {
+      rj.body[k] = -1;
+      if (dynamic(body)) {
+        const int b = body.value;
+        rj.body[k] = b;
+        rj.j[k] = jb;
+        rj.minv_j[k] << jb.head<3>() / model_.bodies[b].mass,
+            (ws.inv_inertia_world[b] * jb.tail<3>().transpose()).transpose();
+        ja_free += jb.head<3>().dot(ws.linear_acceleration[b]) +
+                   jb.tail<3>().dot(ws.angular_acceleration[b]);
+      }
+      ++k;
+    }
+    const double rhs = -jdot_v - 2.0 * alpha * phi_dot - beta * beta * phi - ja_free;
+    (m <= kSmall ? rhs_small_(i) : rhs_(i)) = rhs;
     ws.max_constraint_error = std::max(ws.max_constraint_error, std::abs(phi));
     ws.max_constraint_rate_error = std::max(ws.max_constraint_rate_error, std::abs(phi_dot));
   }
 
-  // M^-1 J^T, body block by body block.
-  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    const int o = dof_[b];
-    if (o < 0) continue;
-    const double inv_m = 1.0 / model_.bodies[b].mass;
-    minv_jt_.middleRows<3>(o).noalias() = inv_m * jac_.middleCols<3>(o).transpose();
-    minv_jt_.middleRows<3>(o + 3).noalias() =
-        inv_inertia_world_[b] * jac_.middleCols<3>(o + 3).transpose();
+  // Schur complement J M^-1 J^T from the sparse row blocks, then the multipliers.
+  if (m <= kSmall) {
+    fillSchur(schur_small_);
+    llt_small_.compute(schur_small_);
+    lambda_ = llt_small_.solve(rhs_small_);
+  } else {
+    fillSchur(schur_);
+    ldlt_.compute(schur_);
+    lambda_ = ldlt_.solve(rhs_);
   }
-  schur_.noalias() = jac_ * minv_jt_;
-  ldlt_.compute(schur_);
-  lambda_ = ldlt_.solve(rhs_);
 
-  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    const int o = dof_[b];
-    if (o < 0) continue;
-    ws.linear_acceleration[b] += minv_jt_.middleRows<3>(o) * lambda_;
-    ws.angular_acceleration[b] += minv_jt_.middleRows<3>(o + 3) * lambda_;
-    ws.constraint_wrench[b].force = jac_.middleCols<3>(o).transpose() * lambda_;
-    ws.constraint_wrench[b].torque = jac_.middleCols<3>(o + 3).transpose() * lambda_;
+  for (int r = 0; r < m; ++r) {
+    for (int a = 0; a < 2; ++a) {
+      const int b = jac_[r].body[a];
+      if (b < 0) continue;
+      const double l = lambda_(r);
+      ws.linear_acceleration[b] += l * jac_[r].minv_j[a].head<3>().transpose();
+      ws.angular_acceleration[b] += l * jac_[r].minv_j[a].tail<3>().transpose();
+      ws.constraint_wrench[b].force += l * jac_[r].j[a].head<3>().transpose();
+      ws.constraint_wrench[b].torque += l * jac_[r].j[a].tail<3>().transpose();
+    }
   }
 }
 

