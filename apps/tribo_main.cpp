@@ -41,6 +41,8 @@ void printSummary(const tribo::io::Scene& scene, const tribo::io::RunResult& r,
   std::printf("time to 98%%      %.6g s\n", s.time_to_98);
   std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
   std::printf("max penetration  %.3g m\n", r.stats.max_penetration);
+  std::printf("stable step     < %.3g s (%s)\n", r.stability.limit.max_step,
+              r.stability.limit.element.c_str());
   std::printf("speed            %.4g simulated s per wall s (%.3g s wall)\n",
               r.simulated_seconds / r.wall_seconds, r.wall_seconds);
   std::printf("results          %s\n", out.string().c_str());
@@ -74,6 +76,7 @@ int run(const std::vector<std::string>& args) {
     return 2;
   }
   const tribo::io::RunResult result = tribo::io::runScene(scene);
+  for (const auto& w : result.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
   try {
     tribo::io::writeResults(out_dir, scene, result);
   } catch (const std::exception& e) {

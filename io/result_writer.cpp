@@ -55,6 +55,7 @@ void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
   nlohmann::json j;
   j["status"] = result.complete ? "complete" : "diverged";
   if (!result.complete) j["error"] = result.message;
+  j["warnings"] = result.warnings;
   j["scene"] = scene.path;
   nlohmann::json params = nlohmann::json::object();
   for (const auto& [name, value] : scene.parameters) params[name] = value;
@@ -74,6 +75,9 @@ void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
          {"damping", m.normal.damping},
          {"friction_law", std::string(m.friction->name())}});
   j["settings"]["materials"] = materials;
+  j["stability"] = {{"estimated_max_step", number(result.stability.limit.max_step)},
+                    {"limiting_element", result.stability.limit.element},
+                    {"notes", result.stability.notes}};
   const auto& s = result.summary;
   static const char* kAxis[] = {"x", "y", "z"};
   j["observed"] = {{"body", scene.output.summary.body},

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 namespace tribo::io {
@@ -40,7 +41,18 @@ RunResult runScene(const Scene& scene) {
       0.0,
       0.0,
       TrajectoryRecorder(model, static_cast<std::size_t>(model.options.duration / interval + 2)),
+      {},
+      {},
       {}};
+  result.stability = estimateStableStep(model);
+  if (dt > result.stability.limit.max_step) {
+    std::ostringstream w;
+    w << "time step " << dt << " s exceeds the estimated stability limit "
+      << result.stability.limit.max_step << " s of " << integratorName(model.options.integrator)
+      << " (set by " << result.stability.limit.element
+      << "); results may be wrong even if the run completes";
+    result.warnings.push_back(w.str());
+  }
   Simulator sim(scene.model);
   const auto start = std::chrono::steady_clock::now();
   result.trajectory.record(sim.state(), sim.current());

@@ -1,6 +1,7 @@
 // Runs a loaded scene from t = 0 to its duration, recording at the output interval, and
 // analyses the observed coordinate (limit-cycle amplitude, period, time to 98% of the
-// amplitude, stuck fraction). The loop does no I/O. A diverged run stops at the failing
+// amplitude, stuck fraction). Before the run, the step is checked against the a-priori
+// stability limit (core/stability.hpp); exceeding it is a warning carried in the result. The loop does no I/O. A diverged run stops at the failing
 // step and is returned with complete = false and the simulator's message; what was
 // recorded up to the last good step is kept.
 // Not here: writing files (io/result_writer.hpp), argument parsing (apps/).
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "core/simulator.hpp"
+#include "core/stability.hpp"
 #include "io/oscillation_summary.hpp"
 #include "io/scene_loader.hpp"
 #include "io/trajectory_recorder.hpp"
@@ -23,6 +25,8 @@ struct RunResult {
   double simulated_seconds = 0.0;
   TrajectoryRecorder trajectory;
   OscillationSummary summary;  // of output.summary's body and coordinate
+  StabilityReport stability;   // a-priori step limit of the model
+  std::vector<std::string> warnings;  // e.g. the step exceeds the stability limit
 };
 
 RunResult runScene(const Scene& scene);

@@ -113,5 +113,21 @@ TEST(BeltScene, StepBeyondTheContactStabilityLimitStopsWithAClearError) {
     for (double v : r.trajectory.column(c)) ASSERT_TRUE(std::isfinite(v));
 }
 
+TEST(BeltScene, StepJustAboveTheEstimatedLimitIsFlaggedBeforeTheRun) {
+  // Vertical contact mode: omega = sqrt(4 k_c / m), zeta = 4 c_c / (2 sqrt(4 k_c m)); the
+  // estimate must sit between the steps that are observed to work and to fail.
+  const io::Scene ok = io::loadScene(kBelt, {"dt=0.008", "duration=1"});
+  const io::RunResult r_ok = io::runScene(ok);
+  EXPECT_TRUE(r_ok.warnings.empty());
+  EXPECT_GT(r_ok.stability.limit.max_step, 0.008);
+  EXPECT_LT(r_ok.stability.limit.max_step, 0.0095);
+  const io::RunResult r_bad = io::runScene(io::loadScene(kBelt, {"dt=0.0095", "duration=1"}));
+  ASSERT_EQ(r_bad.warnings.size(), 1u);
+  EXPECT_NE(r_bad.warnings[0].find("belt_surface, box_shape"), std::string::npos);
+  // roh_yoo's stick branch (beta < 1) has no finite slope at zero slip: said in the notes.
+  ASSERT_FALSE(r_ok.stability.notes.empty());
+  EXPECT_NE(r_ok.stability.notes[0].find("roh_yoo"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace tribo
