@@ -33,6 +33,14 @@ ConstraintSolver::ConstraintSolver(const Model& model) : model_(model) {
   }
   const int m = equationCount();
   jac_.resize(m);
+  auto dynamicIndex = [&](BodyIndex b) {
+    return (!b.isWorld() && model.bodies[b.value].kind == BodyKind::kDynamic) ? b.value : -1;
+  };
+  for (int i = 0; i < m; ++i) {
+    jac_[i].body[0] = dynamicIndex(rows_[i].parent);
+    jac_[i].body[1] = dynamicIndex(rows_[i].child);
+  }
+  for (const Body& b : model.bodies) inv_mass_.push_back(1.0 / b.mass);
   if (m <= kSmall) {
     schur_small_.setZero(m, m);
     rhs_small_.setZero(m);
@@ -66,9 +74,6 @@ void ConstraintSolver::solve(const State& state, Workspace& ws) {
   if (m == 0) return;
   const double alpha = model_.options.baumgarte_alpha;
   const double beta = model_.options.baumgarte_beta;
-  auto dynamic = [&](BodyIndex b) {
-    return !b.isWorld() && model_.bodies[b.value].kind == BodyKind::kDynamic;
-  };
 
   for (int i = 0; i < m; ++i) {
     const Row& row = rows_[i];
@@ -103,19 +108,16 @@ void ConstraintSolver::solve(const State& state, Workspace& ws) {
                            jc.head<3>().dot(c.velocity) + jc.tail<3>().dot(c.angular_velocity);
     RowJacobian& rj = jac_[i];
     double ja_free = 0.0;  // J a for the unconstrained accelerations
-    int k = 0;
-    for (const auto& [body, jb] : {std::pair{row.parent, jp}, std::pair{row.child, jc}}) {
-      rj.body[k] = -1;
-      if (dynamic(body)) {
-        const int b = body.value;
-        rj.body[k] = b;
-        rj.j[k] = jb;
-        rj.minv_j[k] << jb.head<3>() / model_.bodies[b].mass,
-            (ws.inv_inertia_world[b] * jb.tail<3>().transpose()).transpose();
-        ja_free += jb.head<3>().dot(ws.linear_acceleration[b]) +
-                   jb.tail<3>().dot(ws.angular_acceleration[b]);
-      }
-      ++k;
+    const Row6* blocks[2] = {&jp, &jc};
+    for (int k = 0; k < 2; ++k) {
+      const int b = rj.body[k];
+      if (b < 0) continue;
+      const Row6& jb = *blocks[k];
+      rj.j[k] = jb;
+      rj.minv_j[k].head<3>() = jb.head<3>() * inv_mass_[b];
+      rj.minv_j[k].tail<3>() = jb.tail<3>() * ws.inv_inertia_world[b];  // symmetric
+      ja_free += jb.head<3>().dot(ws.linear_acceleration[b]) +
+                 jb.tail<3>().dot(ws.angular_acceleration[b]);
     }
     const double rhs = -jdot_v - 2.0 * alpha * phi_dot - beta * beta * phi - ja_free;
     (m <= kSmall ? rhs_small_(i) : rhs_(i)) = rhs;

@@ -53,6 +53,7 @@ class ConstraintSolver {
   std::vector<Row> rows_;
   // Preallocated.
   std::vector<RowJacobian> jac_;
+  std::vector<double> inv_mass_;  // per body
   // J M^-1 J^T and its factorization. Up to kSmall equations (a few joints) the matrices
   // live on the stack-sized fixed-capacity type and are factorized by Cholesky (LLT):
   // measured 3x cheaper than LDLT at 4 equations. Larger systems use LDLT.

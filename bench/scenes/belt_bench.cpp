@@ -61,10 +61,10 @@ void BM_Baseline_OneDofRk4(benchmark::State& st) {
 BENCHMARK(BM_Baseline_OneDofRk4)->Name("BM_Baseline_OneDofRk4")->Arg(1000)->Arg(250)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_BeltScene, rk4, std::string("rk4"))
-    ->Name("BM_BeltScene/rk4")->Arg(4000)->Arg(2000)->Arg(1000)->Arg(500)->Arg(250)
+    ->Name("BM_BeltScene/rk4")->Arg(8000)->Arg(4000)->Arg(2000)->Arg(1000)->Arg(500)->Arg(250)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_BeltScene, semi_implicit_euler, std::string("semi_implicit_euler"))
-    ->Name("BM_BeltScene/semi_implicit_euler")->Arg(1000)->Arg(500)->Arg(250)->Arg(100)
+    ->Name("BM_BeltScene/semi_implicit_euler")->Arg(2000)->Arg(1000)->Arg(500)->Arg(250)->Arg(100)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
