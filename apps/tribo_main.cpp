@@ -33,8 +33,9 @@ void printSummary(const tribo::io::Scene& scene, const tribo::io::RunResult& r,
   std::printf("integrator       %s, step %g s, %ld steps\n",
               tribo::integratorName(o.integrator).c_str(), o.time_step, r.stats.steps);
   std::printf("status           %s\n", r.complete ? "complete" : ("DIVERGED: " + r.message).c_str());
-  std::printf("observed         %s (coordinate %d)\n", scene.output.summary.body.c_str(),
-              scene.output.summary.coordinate);
+  static const char* kAxis[] = {"x", "y", "z"};
+  std::printf("observed         %s.%s\n", scene.output.summary.body.c_str(),
+              kAxis[scene.output.summary.coordinate]);
   std::printf("oscillating      %s (%zu cycles)\n", s.oscillating ? "yes" : "no", s.cycles.size());
   std::printf("amplitude (p-p)  %.6g m\n", s.amplitude_pp);
   std::printf("period           %.6g s\n", s.period);
