@@ -1,7 +1,7 @@
 // The ADAMS-style friction law (scene name "adams"): static coefficient mu_s reached at the
 // static transition speed v_s, kinetic coefficient mu_k from the dynamic transition speed
 // v_d on, joined by cubic STEP functions (MSC ADAMS/Solver reference, STEP function and the
-// friction of joints; docs/SEED.md). For v >= 0, odd in v:
+// friction of joints; as in Roh & Yoo 2007). For v >= 0, odd in v:
 //
 //   0   <= v < v_s:  mu = step(v, 0,   0,    v_s, mu_s)
 //   v_s <= v < v_d:  mu = step(v, v_s, mu_s, v_d, mu_k)

@@ -1,6 +1,6 @@
 // The RecurDyn friction law (scene name "recurdyn"): static coefficient mu_s reached at the
 // static transition speed v_s, kinetic coefficient mu_k from the dynamic transition speed
-// v_d on, joined by haversine steps (RecurDyn Solver Theory, "Friction"; docs/SEED.md). For
+// v_d on, joined by haversine steps (RecurDyn Solver Theory, "Friction"; as in Roh & Yoo 2007). For
 // v >= 0, odd in v:
 //
 //   0   <= v < v_s:  mu = havsin(v, 0,   0,    v_s, mu_s)

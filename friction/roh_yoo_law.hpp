@@ -1,5 +1,5 @@
 // The friction law proposed by Roh & Yoo (2007), "Friction Model to Realize Self-excited
-// Vibration of Multi-body Systems", Trans. KSNVE (scene name "roh_yoo"; docs/SEED.md). A power
+// Vibration of Multi-body Systems", Trans. KSNVE 17(6) (scene name "roh_yoo"). A power
 // law up to the static peak mu_s at v_s, then an exponential decay towards mu_k:
 //
 //   |v| <= v_s:  mu = mu_s * sign(v) * (|v| / v_s)^beta

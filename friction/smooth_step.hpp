@@ -1,5 +1,5 @@
 // Smooth steps shared by the regularized friction laws: the haversine step used by RecurDyn
-// and the cubic STEP used by MSC ADAMS (docs/SEED.md; RecurDyn "Friction" and ADAMS "STEP"
+// and the cubic STEP used by MSC ADAMS (as in Roh & Yoo 2007; RecurDyn "Friction" and ADAMS "STEP"
 // function reference pages). Both go from h0 at x0 to h1 at x1 with zero slope at both ends:
 //
 //   havsin(x, x0, h0, x1, h1) = h0 + (h1 - h0) * (1 - cos(pi * (x - x0) / (x1 - x0))) / 2

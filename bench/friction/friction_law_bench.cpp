@@ -29,7 +29,7 @@ const std::array<double, kSpeeds>& slipSpeeds() {
   return speeds;
 }
 
-// Table 1 of the seed paper (docs/SEED.md); stribeck with v_st = 0.1 and viscous 0.01.
+// Table 1 of the seed paper (Roh & Yoo 2007); stribeck with v_st = 0.1 and viscous 0.01.
 LawSpec table1(const std::string& name) {
   if (name == "coulomb") return {"coulomb", {{"mu", 0.3}}, {}};
   if (name == "roh_yoo") {

@@ -1,5 +1,5 @@
 // Properties every friction law must have, checked over all laws built through the factory
-// with the paper's Table 1 values (docs/SEED.md), every coulomb regularization, and the same
+// with the paper's Table 1 values (Roh & Yoo 2007), every coulomb regularization, and the same
 // laws with tiny transition speeds: odd symmetry, mu(0) = 0, continuity (at breakpoints and
 // on a dense grid), the maxCoefficient bound, slope against finite differences, and the
 // tangential force (dissipative, proportional to the load, magnitude mu * F_n).

@@ -1,4 +1,4 @@
-// Law-specific values against closed forms computed here from the formulas in docs/SEED.md
+// Law-specific values against closed forms computed here from the formulas of Roh & Yoo 2007
 // (Table 1 parameters unless stated).
 #include <gtest/gtest.h>
 

@@ -31,7 +31,7 @@ std::string set(const std::string& name, double value) {
   return name + "=" + buf;
 }
 
-// Roh-Yoo coefficient on the slip branch, from SEED's closed form (not the library).
+// Roh-Yoo coefficient on the slip branch, from the paper's closed form (not the library).
 double rohYooMu(double v) {
   const double b = -std::log(kMuS - kMuK) / std::log(kA) - kVs;
   return std::pow(kA, -(v + b)) + kMuK;
@@ -47,7 +47,8 @@ TEST(BeltScene, RohYooEarlyGrowthMatchesLinearizedRate) {
       runBelt({"friction=roh_yoo", set("x0", x_eq + 1e-3), "duration=30"});
   ASSERT_GE(r.summary.cycles.size(), 20u);
   const double measured = io::envelopeGrowthRate(r.summary.cycles, 1.0, 30.0);
-  EXPECT_NEAR(measured / sigma, 1.0, 0.05) << "measured " << measured << " expected " << sigma;
+  // Asked: within 5%. Measured: 5e-5 (RK4, 1 ms), so hold it to 1%.
+  EXPECT_NEAR(measured / sigma, 1.0, 0.01) << "measured " << measured << " expected " << sigma;
   EXPECT_NEAR(r.summary.x_mean, x_eq, 1e-3 * x_eq);
 }
 
@@ -82,7 +83,7 @@ TEST(BeltScene, RohYooSaturatesIntoTheStickSlipCycleOfTheReference) {
 
   const io::RunResult r = runBelt({"friction=roh_yoo"});
   EXPECT_TRUE(r.summary.oscillating);
-  EXPECT_NEAR(r.summary.amplitude_pp, reference, 0.01 * reference)
+  EXPECT_NEAR(r.summary.amplitude_pp, reference, 1e-3 * reference)
       << "engine " << r.summary.amplitude_pp << " reference " << reference;
   // It grew: the first cycle is far smaller than the limit cycle, and it sticks.
   ASSERT_FALSE(r.summary.cycles.empty());
