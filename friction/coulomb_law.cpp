@@ -2,24 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <string>
+
+#include "friction/parameter_check.hpp"
 
 namespace tribo::friction {
 namespace {
 
-[[noreturn]] void fail(const std::string& rule, double value) {
-  std::ostringstream os;
-  os << "coulomb: " << rule << " (got " << std::setprecision(15) << value << ")";
-  throw FrictionParameterError(os.str());
-}
-
 const CoulombParams& validated(const CoulombParams& p) {
-  if (!std::isfinite(p.mu)) fail("mu must be a finite number", p.mu);
-  if (!std::isfinite(p.v_eps)) fail("v_eps must be a finite number", p.v_eps);
-  if (!(p.mu >= 0.0)) fail("mu must be >= 0", p.mu);
-  if (!(p.v_eps > 0.0)) fail("v_eps must be > 0", p.v_eps);
+  const ParameterCheck check("coulomb");
+  check.finite({{"mu", p.mu}, {"v_eps", p.v_eps}});
+  check.require(p.mu >= 0.0, "mu must be >= 0", p.mu);
+  check.require(p.v_eps > 0.0, "v_eps must be > 0", p.v_eps);
   return p;
 }
 

@@ -105,20 +105,20 @@ std::unique_ptr<const FrictionLaw> makeCoulomb(const LawSpec& spec) {
   return std::make_unique<CoulombLaw>(params);
 }
 
-std::unique_ptr<const FrictionLaw> makeRecurDyn(const LawSpec& spec) {
+TwoStepParams twoStepParams(const LawSpec& spec) {
   const SpecReader reader(spec, kStepLawKeys);
-  return std::make_unique<RecurDynLaw>(RecurDynParams{.mu_s = reader.required("mu_s"),
-                                                      .mu_k = reader.required("mu_k"),
-                                                      .v_s = reader.required("v_s"),
-                                                      .v_d = reader.required("v_d")});
+  return {.mu_s = reader.required("mu_s"),
+          .mu_k = reader.required("mu_k"),
+          .v_s = reader.required("v_s"),
+          .v_d = reader.required("v_d")};
+}
+
+std::unique_ptr<const FrictionLaw> makeRecurDyn(const LawSpec& spec) {
+  return std::make_unique<RecurDynLaw>("recurdyn", twoStepParams(spec));
 }
 
 std::unique_ptr<const FrictionLaw> makeAdams(const LawSpec& spec) {
-  const SpecReader reader(spec, kStepLawKeys);
-  return std::make_unique<AdamsLaw>(AdamsParams{.mu_s = reader.required("mu_s"),
-                                                .mu_k = reader.required("mu_k"),
-                                                .v_s = reader.required("v_s"),
-                                                .v_d = reader.required("v_d")});
+  return std::make_unique<AdamsLaw>("adams", twoStepParams(spec));
 }
 
 std::unique_ptr<const FrictionLaw> makeRohYoo(const LawSpec& spec) {

@@ -2,40 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
-#include <string>
+
+#include "friction/parameter_check.hpp"
 
 namespace tribo::friction {
 namespace {
 
-std::string num(double value) {
-  std::ostringstream os;
-  os.precision(15);
-  os << value;
-  return os.str();
-}
-
-[[noreturn]] void fail(const std::string& what) {
-  throw FrictionParameterError("roh_yoo: " + what);
-}
-
 const RohYooParams& validated(const RohYooParams& p) {
-  for (const auto& [key, value] :
-       {std::pair{"mu_s", p.mu_s}, std::pair{"mu_k", p.mu_k}, std::pair{"v_s", p.v_s},
-        std::pair{"a", p.a}, std::pair{"beta", p.beta}}) {
-    if (!std::isfinite(value)) {
-      fail(std::string(key) + " must be a finite number (got " + num(value) + ")");
-    }
-  }
-  if (!(p.mu_k >= 0.0)) fail("mu_k must be >= 0 (got " + num(p.mu_k) + ")");
-  if (!(p.mu_s > p.mu_k)) {
-    fail(
-        "mu_s must exceed mu_k for roh_yoo, since b = -ln(mu_s - mu_k) / ln(a) - v_s (got mu_s = " +
-        num(p.mu_s) + ", mu_k = " + num(p.mu_k) + ")");
-  }
-  if (!(p.v_s > 0.0)) fail("v_s must be > 0 (got " + num(p.v_s) + ")");
-  if (!(p.a > 1.0)) fail("a must be > 1 (got " + num(p.a) + ")");
-  if (!(p.beta > 0.0)) fail("beta must be > 0 (got " + num(p.beta) + ")");
+  const ParameterCheck check("roh_yoo");
+  check.finite({{"mu_s", p.mu_s}, {"mu_k", p.mu_k}, {"v_s", p.v_s}, {"a", p.a}, {"beta", p.beta}});
+  check.require(p.mu_k >= 0.0, "mu_k must be >= 0", p.mu_k);
+  check.require(p.mu_s > p.mu_k,
+                "mu_s must exceed mu_k for roh_yoo, since b = -ln(mu_s - mu_k) / ln(a) - v_s",
+                "mu_s", p.mu_s, "mu_k", p.mu_k);
+  check.require(p.v_s > 0.0, "v_s must be > 0", p.v_s);
+  check.require(p.a > 1.0, "a must be > 1", p.a);
+  check.require(p.beta > 0.0, "beta must be > 0", p.beta);
   return p;
 }
 

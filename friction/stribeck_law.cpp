@@ -3,40 +3,28 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <utility>
+
+#include "friction/parameter_check.hpp"
 
 namespace tribo::friction {
 namespace {
 
-std::string num(double value) {
-  std::ostringstream os;
-  os.precision(15);
-  os << value;
-  return os.str();
-}
-
-[[noreturn]] void fail(const std::string& what) {
-  throw FrictionParameterError("stribeck: " + what);
-}
-
 const StribeckParams& validated(const StribeckParams& p) {
-  for (const auto& [key, value] : {std::pair{"mu_s", p.mu_s}, std::pair{"mu_k", p.mu_k},
-                                   std::pair{"v_st", p.v_st}, std::pair{"delta", p.delta},
-                                   std::pair{"viscous", p.viscous}, std::pair{"v_eps", p.v_eps}}) {
-    if (!std::isfinite(value)) {
-      fail(std::string(key) + " must be a finite number (got " + num(value) + ")");
-    }
-  }
-  if (!(p.mu_k >= 0.0)) fail("mu_k must be >= 0 (got " + num(p.mu_k) + ")");
-  if (!(p.mu_s >= p.mu_k)) {
-    fail("mu_s must be >= mu_k (got mu_s = " + num(p.mu_s) + ", mu_k = " + num(p.mu_k) + ")");
-  }
-  if (!(p.v_st > 0.0)) fail("v_st must be > 0 (got " + num(p.v_st) + ")");
-  if (!(p.delta > 0.0)) fail("delta must be > 0 (got " + num(p.delta) + ")");
-  if (!(p.viscous >= 0.0)) fail("viscous must be >= 0 (got " + num(p.viscous) + ")");
-  if (!(p.v_eps > 0.0)) fail("v_eps must be > 0 (got " + num(p.v_eps) + ")");
+  const ParameterCheck check("stribeck");
+  check.finite({{"mu_s", p.mu_s},
+                {"mu_k", p.mu_k},
+                {"v_st", p.v_st},
+                {"delta", p.delta},
+                {"viscous", p.viscous},
+                {"v_eps", p.v_eps}});
+  check.require(p.mu_k >= 0.0, "mu_k must be >= 0", p.mu_k);
+  check.require(p.mu_s >= p.mu_k, "mu_s must be >= mu_k", "mu_s", p.mu_s, "mu_k", p.mu_k);
+  check.require(p.v_st > 0.0, "v_st must be > 0", p.v_st);
+  check.require(p.delta > 0.0, "delta must be > 0", p.delta);
+  check.require(p.viscous >= 0.0, "viscous must be >= 0", p.viscous);
+  check.require(p.v_eps > 0.0, "v_eps must be > 0", p.v_eps);
   return p;
 }
 

@@ -1,0 +1,51 @@
+// Checks shared by the friction laws' constructors, so every law words its parameter
+// errors the same way: "LAW: RULE (got VALUE)", thrown as FrictionParameterError.
+// Not a parser: the factory (friction_law.cpp) maps scene keys to parameter structs.
+#pragma once
+
+#include <cmath>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "friction/friction_law.hpp"
+
+namespace tribo::friction {
+
+class ParameterCheck {
+ public:
+  explicit ParameterCheck(std::string_view law) : law_(law) {}
+
+  // Every value finite: "KEY must be a finite number (got nan)".
+  void finite(std::initializer_list<std::pair<const char*, double>> values) const {
+    for (const auto& [key, value] : values)
+      require(std::isfinite(value), std::string(key) + " must be a finite number", value);
+  }
+  // Throws "LAW: RULE (got VALUE)" unless ok.
+  void require(bool ok, const std::string& rule, double got) const {
+    if (!ok) fail(rule + " (got " + number(got) + ")");
+  }
+  // Throws "LAW: RULE (got A_NAME = A, B_NAME = B)" unless ok.
+  void require(bool ok, const std::string& rule, const char* a_name, double a, const char* b_name,
+               double b) const {
+    if (!ok)
+      fail(rule + " (got " + a_name + " = " + number(a) + ", " + b_name + " = " + number(b) + ")");
+  }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw FrictionParameterError(law_ + ": " + what);
+  }
+
+  static std::string number(double value) {
+    std::ostringstream os;
+    os.precision(15);
+    os << value;
+    return os.str();
+  }
+
+ private:
+  std::string law_;
+};
+
+}  // namespace tribo::friction
