@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/info_command.hpp"
 #include "io/result_writer.hpp"
 #include "io/scene_loader.hpp"
 #include "io/scene_run.hpp"
@@ -15,10 +16,12 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: tribo run SCENE.yaml --out DIR [--set NAME=VALUE ...]\n"
+    "       tribo info FILE.urdf [--package-path DIR ...]\n"
     "\n"
     "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
     "  --out   output folder (created if missing)\n"
-    "  --set   override a value of the scene's parameters: section (repeatable)\n";
+    "  --set   override a value of the scene's parameters: section (repeatable)\n"
+    "  info    print a URDF robot's tree, masses, joint types and model checks\n";
 
 int usage(const std::string& problem) {
   std::fprintf(stderr, "tribo: %s\n\n%s", problem.c_str(), kUsage);
@@ -32,7 +35,8 @@ void printSummary(const tribo::io::Scene& scene, const tribo::io::RunResult& r,
   std::printf("scene            %s\n", scene.path.c_str());
   std::printf("integrator       %s, step %g s, %ld steps\n",
               tribo::integratorName(o.integrator).c_str(), o.time_step, r.stats.steps);
-  std::printf("status           %s\n", r.complete ? "complete" : ("DIVERGED: " + r.message).c_str());
+  std::printf("status           %s\n",
+              r.complete ? "complete" : ("DIVERGED: " + r.message).c_str());
   static const char* kAxis[] = {"x", "y", "z"};
   std::printf("observed         %s.%s\n", scene.output.summary.body.c_str(),
               kAxis[scene.output.summary.coordinate]);
@@ -102,5 +106,6 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (args[0] == "run") return run({args.begin() + 1, args.end()});
+  if (args[0] == "info") return tribo::app::runInfo({args.begin() + 1, args.end()});
   return usage("unknown command '" + args[0] + "'");
 }

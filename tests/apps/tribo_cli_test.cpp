@@ -42,7 +42,8 @@ class TriboCli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("tribo_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("tribo_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -70,10 +71,10 @@ TEST_F(TriboCli, BadParametersFailWithFileAndKeyAndWriteNothing) {
     std::string set;
     std::string expected;
   };
-  for (const Case& c : {Case{"--set nope=1", "nope"}, Case{"--set friction=magic", "magic"},
-                        Case{"--set a=0.9", "a must be > 1"},
-                        Case{"--set mu_k=0.4", "mu_s must exceed mu_k"},
-                        Case{"--set k=abc", "expected a number"}}) {
+  for (const Case& c :
+       {Case{"--set nope=1", "nope"}, Case{"--set friction=magic", "magic"},
+        Case{"--set a=0.9", "a must be > 1"}, Case{"--set mu_k=0.4", "mu_s must exceed mu_k"},
+        Case{"--set k=abc", "expected a number"}}) {
     const Result r = run("run " + kBelt + " --out " + dir_.string() + " " + c.set);
     EXPECT_EQ(r.status, 2) << c.set << "\n" << r.output;
     EXPECT_NE(r.output.find("belt.yaml"), std::string::npos) << r.output;
@@ -101,6 +102,22 @@ TEST_F(TriboCli, UsageErrors) {
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.output.find("/nonexistent/scene.yaml"), std::string::npos);
   EXPECT_EQ(run("--help").status, 0);
+}
+
+TEST_F(TriboCli, InfoPrintsTheUrdfTreeAndRefusesAnInvalidOne) {
+  const fs::path corpus = fs::path(TRIBO_SOURCE_DIR) / ".." / "shared" / "urdf";
+  if (!fs::exists(corpus / "bullet3" / "r2d2.urdf")) GTEST_SKIP() << "no URDF corpus at " << corpus;
+  const Result ok = run("info " + (corpus / "bullet3" / "r2d2.urdf").string());
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  EXPECT_NE(ok.output.find("links 16, joints 15 (5 continuous, 7 fixed, 1 prismatic, 2 revolute), "
+                           "total mass 65.25 kg"),
+            std::string::npos)
+      << ok.output;
+  EXPECT_NE(ok.output.find("left_gripper  [revolute 'left_gripper_joint']"), std::string::npos);
+  const Result loop =
+      run("info " + (corpus / "ros_urdf/urdf/test/fail_pr2_desc_loop.urdf").string());
+  EXPECT_EQ(loop.status, 2) << loop.output;
+  EXPECT_NE(loop.output.find("No root link found"), std::string::npos) << loop.output;
 }
 
 }  // namespace

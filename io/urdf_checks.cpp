@@ -1,0 +1,60 @@
+#include "io/urdf_checks.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <sstream>
+
+namespace tribo::io {
+
+namespace {
+
+std::string str(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+void checkUrdfRobot(UrdfRobot& robot) {
+  auto issue = [&](UrdfIssue::Severity sev, const std::string& link, const std::string& what) {
+    robot.issues.push_back({sev, "link '" + link + "'", what});
+  };
+  using S = UrdfIssue::Severity;
+  for (const UrdfLink& l : robot.links) {
+    if (!l.has_inertial) {
+      if (!l.collisions.empty())
+        issue(S::kWarning, l.name, "has collision geometry but no <inertial>: it is massless");
+      continue;
+    }
+    if (!std::isfinite(l.mass) || l.mass < 0.0) {
+      issue(S::kError, l.name, "mass must be >= 0 (got " + str(l.mass) + ")");
+      continue;
+    }
+    if (l.mass == 0.0) {
+      issue(S::kWarning, l.name, "has zero mass");
+      continue;
+    }
+    const Eigen::Matrix3d& i = l.inertia;
+    if (!i.allFinite()) {
+      issue(S::kError, l.name, "inertia is not finite");
+      continue;
+    }
+    if (i.isZero(0.0)) {
+      issue(S::kWarning, l.name, "has mass " + str(l.mass) + " kg but zero inertia");
+      continue;
+    }
+    const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
+    if (p.minCoeff() <= 0.0) {
+      issue(S::kWarning, l.name,
+            "inertia is not positive definite (principal moments " + str(p(0)) + ", " + str(p(1)) +
+                ", " + str(p(2)) + ")");
+    } else if (p(0) + p(1) < p(2) * (1.0 - 1e-9)) {
+      issue(S::kWarning, l.name,
+            "principal moments " + str(p(0)) + ", " + str(p(1)) + ", " + str(p(2)) +
+                " violate the triangle inequality");
+    }
+  }
+}
+
+}  // namespace tribo::io

@@ -1,0 +1,15 @@
+// Checks on a read URDF robot that decide whether it can be simulated meaningfully:
+//   errors:   negative or non-finite mass, a collision mesh that cannot be found;
+//   warnings: zero mass, inertia not positive definite or violating the triangle
+//             inequality (I1 + I2 >= I3 for the principal moments), positive mass with zero
+//             inertia, a link without <inertial> that carries collision geometry.
+// Appends to robot.issues. Not here: parsing, tree structure (urdfdom rejects bad trees).
+#pragma once
+
+#include "io/urdf_robot.hpp"
+
+namespace tribo::io {
+
+void checkUrdfRobot(UrdfRobot& robot);
+
+}  // namespace tribo::io

@@ -1,0 +1,392 @@
+#include "io/urdf_reader.hpp"
+
+#include <console_bridge/console.h>
+#include <tinyxml.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+
+#include "io/urdf_checks.hpp"
+
+namespace tribo::io {
+
+namespace {
+
+const std::set<std::string> kJointTypes{"fixed",     "revolute", "continuous",
+                                        "prismatic", "floating", "planar"};
+
+// Collects urdfdom's console messages while it parses, instead of printing them.
+class MessageCollector : public console_bridge::OutputHandler {
+ public:
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN) messages.push_back(text);
+  }
+  std::vector<std::string> messages;
+};
+
+std::mutex console_mutex;  // console_bridge's handler is process-wide
+
+Eigen::Isometry3d toIsometry(const urdf::Pose& p) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() = Eigen::Vector3d(p.position.x, p.position.y, p.position.z);
+  double x, y, z, w;
+  p.rotation.getQuaternion(x, y, z, w);
+  t.linear() = Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+  return t;
+}
+
+std::optional<double> number(const char* text) {
+  if (!text) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text) return std::nullopt;
+  while (*end == ' ' || *end == '\n' || *end == '\t') ++end;
+  if (*end != '\0') return std::nullopt;
+  return v;
+}
+
+std::vector<double> numbers(const char* text) {
+  std::vector<double> out;
+  if (!text) return out;
+  std::istringstream s(text);
+  double v;
+  while (s >> v) out.push_back(v);
+  return out;
+}
+
+// <origin xyz rpy> of an element, URDF convention R = Rz(yaw) Ry(pitch) Rx(roll).
+Eigen::Isometry3d originOf(const TiXmlElement* parent) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  const TiXmlElement* o = parent->FirstChildElement("origin");
+  if (!o) return t;
+  const auto xyz = numbers(o->Attribute("xyz"));
+  const auto rpy = numbers(o->Attribute("rpy"));
+  if (xyz.size() == 3) t.translation() = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+  if (rpy.size() == 3)
+    t.linear() = (Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) *
+                  Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *
+                  Eigen::AngleAxisd(rpy[0], Eigen::Vector3d::UnitX()))
+                     .toRotationMatrix();
+  return t;
+}
+
+struct XmlIndex {
+  std::map<std::string, const TiXmlElement*> links, joints;
+};
+
+class Reader {
+ public:
+  Reader(const std::string& path, const PackagePaths& packages)
+      : path_(path), packages_(packages) {}
+
+  UrdfRobot read() {
+    std::ifstream in(path_);
+    if (!in) throw UrdfError("cannot open URDF file '" + path_ + "'");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string xml = buffer.str();
+
+    TiXmlDocument doc;
+    doc.Parse(xml.c_str());
+    if (doc.Error())
+      throw UrdfError(at(doc.ErrorRow()) + "malformed XML: " + doc.ErrorDesc() + " (column " +
+                      std::to_string(doc.ErrorCol()) + ")");
+    const TiXmlElement* robot = doc.RootElement();
+    if (!robot || std::string(robot->Value()) != "robot")
+      throw UrdfError(at(robot ? robot->Row() : 0) + "expected a <robot> root element");
+    const XmlIndex index = indexAndCheck(robot);
+
+    urdf::ModelInterfaceSharedPtr model;
+    std::vector<std::string> messages;
+    {
+      std::lock_guard<std::mutex> lock(console_mutex);
+      MessageCollector collector;
+      console_bridge::useOutputHandler(&collector);
+      model = urdf::parseURDF(xml);
+      console_bridge::restorePreviousOutputHandler();
+      messages = collector.messages;
+    }
+    if (!model) {
+      std::string why;
+      for (const auto& m : messages) why += (why.empty() ? "" : "; ") + m;
+      throw UrdfError(at(0) +
+                      "urdfdom rejected the file: " + (why.empty() ? "no reason given" : why));
+    }
+    UrdfRobot r;
+    r.name = model->getName();
+    r.path = path_;
+    const urdf::LinkConstSharedPtr root = model->getRoot();
+    if (!root) throw UrdfError(at(0) + "no root link");
+    r.root = root->name;
+    addLink(r, root, index);
+    readGazebo(r, robot);
+    checkUrdfRobot(r);
+    return r;
+  }
+
+ private:
+  std::string at(int line) const {
+    std::ostringstream s;
+    s << path_;
+    if (line > 0) s << ':' << line;
+    s << ": ";
+    return s.str();
+  }
+
+  // Locates links and joints and checks what urdfdom would only report without a line.
+  XmlIndex indexAndCheck(const TiXmlElement* robot) const {
+    XmlIndex index;
+    for (const TiXmlElement* e = robot->FirstChildElement("link"); e;
+         e = e->NextSiblingElement("link")) {
+      const char* name = e->Attribute("name");
+      if (!name) throw UrdfError(at(e->Row()) + "<link> without a name");
+      if (!index.links.emplace(name, e).second)
+        throw UrdfError(at(e->Row()) + "link '" + name + "' is defined twice");
+    }
+    for (const TiXmlElement* e = robot->FirstChildElement("joint"); e;
+         e = e->NextSiblingElement("joint")) {
+      const char* name = e->Attribute("name");
+      if (!name) throw UrdfError(at(e->Row()) + "<joint> without a name");
+      const std::string who = "joint '" + std::string(name) + "'";
+      index.joints.emplace(name, e);
+      const char* type = e->Attribute("type");
+      if (!type || !kJointTypes.count(type))
+        throw UrdfError(at(e->Row()) + who + ": unknown type '" + (type ? type : "") +
+                        "' (expected one of: fixed, revolute, continuous, prismatic, floating, "
+                        "planar)");
+      for (const char* role : {"parent", "child"}) {
+        const TiXmlElement* p = e->FirstChildElement(role);
+        const char* link = p ? p->Attribute("link") : nullptr;
+        if (!link) throw UrdfError(at(e->Row()) + who + ": no <" + role + " link=...>");
+        if (!index.links.count(link))
+          throw UrdfError(at(p->Row()) + who + ": " + role + " link '" + link + "' is not defined");
+      }
+    }
+    return index;
+  }
+
+  void addLink(UrdfRobot& r, const urdf::LinkConstSharedPtr& link, const XmlIndex& index) {
+    UrdfLink l;
+    l.name = link->name;
+    const auto it = index.links.find(l.name);
+    const TiXmlElement* xml = it != index.links.end() ? it->second : nullptr;
+    l.line = xml ? xml->Row() : 0;
+    if (link->inertial) {
+      const urdf::Inertial& in = *link->inertial;
+      l.has_inertial = true;
+      l.mass = in.mass;
+      l.inertial_origin = toIsometry(in.origin);
+      l.inertia << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+    }
+    int xml_collisions = 0;
+    if (xml)
+      for (const TiXmlElement* c = xml->FirstChildElement("collision"); c;
+           c = c->NextSiblingElement("collision"))
+        ++xml_collisions;
+    if (xml && xml_collisions > static_cast<int>(link->collision_array.size())) {
+      readCollisionsFromXml(r, l, xml);
+    } else {
+      for (const auto& c : link->collision_array) addCollision(r, l, *c);
+    }
+    r.links.push_back(l);
+    for (const auto& child : link->child_links) {
+      addJoint(r, *child->parent_joint, index);
+      addLink(r, child, index);
+    }
+  }
+
+  void addJoint(UrdfRobot& r, const urdf::Joint& j, const XmlIndex& index) {
+    UrdfJoint u;
+    u.name = j.name;
+    const auto it = index.joints.find(j.name);
+    u.line = it != index.joints.end() ? it->second->Row() : 0;
+    static const std::map<int, std::string> kNames{
+        {urdf::Joint::FIXED, "fixed"},           {urdf::Joint::REVOLUTE, "revolute"},
+        {urdf::Joint::CONTINUOUS, "continuous"}, {urdf::Joint::PRISMATIC, "prismatic"},
+        {urdf::Joint::FLOATING, "floating"},     {urdf::Joint::PLANAR, "planar"}};
+    u.type = kNames.count(j.type) ? kNames.at(j.type) : "unknown";
+    u.parent = j.parent_link_name;
+    u.child = j.child_link_name;
+    u.origin = toIsometry(j.parent_to_joint_origin_transform);
+    const Eigen::Vector3d axis(j.axis.x, j.axis.y, j.axis.z);
+    if (axis.norm() > 0.0) {
+      u.axis = axis.normalized();
+    } else if (u.type != "fixed" && u.type != "floating") {
+      r.issues.push_back(
+          {UrdfIssue::Severity::kError, "joint '" + u.name + "'", "axis has zero length"});
+    }
+    if (j.limits) {
+      u.has_limits = true;
+      u.lower = j.limits->lower;
+      u.upper = j.limits->upper;
+      u.effort = j.limits->effort;
+      u.velocity = j.limits->velocity;
+    }
+    if (j.dynamics) {
+      u.damping = j.dynamics->damping;
+      u.friction = j.dynamics->friction;
+    }
+    if (j.mimic) {
+      u.mimic_joint = j.mimic->joint_name;
+      u.mimic_multiplier = j.mimic->multiplier;
+      u.mimic_offset = j.mimic->offset;
+    }
+    r.joints.push_back(u);
+  }
+
+  void resolveMesh(UrdfRobot& r, const UrdfLink& l, UrdfCollision& c) {
+    const auto folder = std::filesystem::path(path_).parent_path().string();
+    const auto res = packages_.resolve(c.mesh_uri, folder.empty() ? "." : folder);
+    if (res.path) {
+      c.mesh_path = *res.path;
+      return;
+    }
+    std::string tried;
+    for (const auto& t : res.tried) tried += (tried.empty() ? "" : ", ") + t;
+    r.issues.push_back({UrdfIssue::Severity::kError, "link '" + l.name + "'",
+                        "collision mesh '" + c.mesh_uri + "': " + res.problem +
+                            (tried.empty() ? "" : " (tried: " + tried + ")")});
+  }
+
+  void addCollision(UrdfRobot& r, UrdfLink& l, const urdf::Collision& c) {
+    if (!c.geometry) return;
+    UrdfCollision u;
+    u.origin = toIsometry(c.origin);
+    switch (c.geometry->type) {
+      case urdf::Geometry::BOX: {
+        const auto& b = static_cast<const urdf::Box&>(*c.geometry);
+        u.kind = UrdfCollision::Kind::kBox;
+        u.size = Eigen::Vector3d(b.dim.x, b.dim.y, b.dim.z);
+        break;
+      }
+      case urdf::Geometry::SPHERE:
+        u.kind = UrdfCollision::Kind::kSphere;
+        u.radius = static_cast<const urdf::Sphere&>(*c.geometry).radius;
+        break;
+      case urdf::Geometry::CYLINDER: {
+        const auto& cy = static_cast<const urdf::Cylinder&>(*c.geometry);
+        u.kind = UrdfCollision::Kind::kCylinder;
+        u.radius = cy.radius;
+        u.length = cy.length;
+        break;
+      }
+      case urdf::Geometry::MESH: {
+        const auto& m = static_cast<const urdf::Mesh&>(*c.geometry);
+        u.kind = UrdfCollision::Kind::kMesh;
+        u.mesh_uri = m.filename;
+        u.scale = Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z);
+        resolveMesh(r, l, u);
+        break;
+      }
+    }
+    l.collisions.push_back(u);
+  }
+
+  // urdfdom stops at the first collision geometry it does not know (capsule) and keeps
+  // none of that link's collisions; read them here instead.
+  void readCollisionsFromXml(UrdfRobot& r, UrdfLink& l, const TiXmlElement* link) {
+    for (const TiXmlElement* c = link->FirstChildElement("collision"); c;
+         c = c->NextSiblingElement("collision")) {
+      const TiXmlElement* g = c->FirstChildElement("geometry");
+      const TiXmlElement* shape = g ? g->FirstChildElement() : nullptr;
+      if (!shape) continue;
+      const std::string kind = shape->Value();
+      UrdfCollision u;
+      u.origin = originOf(c);
+      if (kind == "box") {
+        const auto size = numbers(shape->Attribute("size"));
+        if (size.size() != 3) continue;
+        u.kind = UrdfCollision::Kind::kBox;
+        u.size = Eigen::Vector3d(size[0], size[1], size[2]);
+      } else if (kind == "sphere" || kind == "cylinder" || kind == "capsule") {
+        u.kind = kind == "sphere"     ? UrdfCollision::Kind::kSphere
+                 : kind == "cylinder" ? UrdfCollision::Kind::kCylinder
+                                      : UrdfCollision::Kind::kCapsule;
+        u.radius = number(shape->Attribute("radius")).value_or(0.0);
+        u.length = number(shape->Attribute("length")).value_or(0.0);
+      } else if (kind == "mesh") {
+        u.kind = UrdfCollision::Kind::kMesh;
+        u.mesh_uri = shape->Attribute("filename") ? shape->Attribute("filename") : "";
+        const auto scale = numbers(shape->Attribute("scale"));
+        if (scale.size() == 3) u.scale = Eigen::Vector3d(scale[0], scale[1], scale[2]);
+        resolveMesh(r, l, u);
+      } else {
+        r.issues.push_back({UrdfIssue::Severity::kWarning, "link '" + l.name + "'",
+                            "line " + std::to_string(shape->Row()) +
+                                ": unknown collision geometry <" + kind + ">, ignored"});
+        continue;
+      }
+      l.collisions.push_back(u);
+    }
+    r.issues.push_back({UrdfIssue::Severity::kWarning, "link '" + l.name + "'",
+                        "collision elements read by Tribo: urdfdom dropped them (it does not "
+                        "know every geometry used here, e.g. <capsule>)"});
+  }
+
+  void readGazebo(UrdfRobot& r, const TiXmlElement* robot) {
+    for (const TiXmlElement* g = robot->FirstChildElement("gazebo"); g;
+         g = g->NextSiblingElement("gazebo")) {
+      const char* ref = g->Attribute("reference");
+      if (!ref) continue;
+      UrdfLink* link = nullptr;
+      for (auto& l : r.links)
+        if (l.name == ref) link = &l;
+      if (!link) continue;
+      auto read = [&](const char* tag, std::optional<double>& into) {
+        if (const TiXmlElement* e = g->FirstChildElement(tag)) {
+          const auto v = number(e->GetText());
+          if (v)
+            into = v;
+          else
+            r.issues.push_back({UrdfIssue::Severity::kWarning, "link '" + link->name + "'",
+                                "line " + std::to_string(e->Row()) + ": <gazebo><" + tag +
+                                    "> is not a number, ignored"});
+        }
+      };
+      read("mu1", link->contact.mu1);
+      read("mu2", link->contact.mu2);
+      read("kp", link->contact.kp);
+      read("kd", link->contact.kd);
+    }
+  }
+
+  std::string path_;
+  const PackagePaths& packages_;
+};
+
+}  // namespace
+
+double UrdfRobot::totalMass() const {
+  double m = 0.0;
+  for (const auto& l : links) m += l.has_inertial ? l.mass : 0.0;
+  return m;
+}
+
+const UrdfLink* UrdfRobot::findLink(const std::string& n) const {
+  for (const auto& l : links)
+    if (l.name == n) return &l;
+  return nullptr;
+}
+
+const UrdfJoint* UrdfRobot::parentJoint(const std::string& link) const {
+  for (const auto& j : joints)
+    if (j.child == link) return &j;
+  return nullptr;
+}
+
+bool UrdfRobot::hasErrors() const {
+  for (const auto& i : issues)
+    if (i.severity == UrdfIssue::Severity::kError) return true;
+  return false;
+}
+
+UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages) {
+  return Reader(path, packages).read();
+}
+
+}  // namespace tribo::io

@@ -1,0 +1,190 @@
+// Reading URDF: malformed inputs give their clear error (file, line, what was expected),
+// the model checks flag dubious inertias, Gazebo contact tags are read, and mesh URIs
+// resolve (relative, file://, package:// through search paths and ROS_PACKAGE_PATH).
+#include "io/urdf_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace tribo::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class UrdfReader : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("tribo_urdf_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  std::string errorOf(const std::string& path, const PackagePaths& packages = {}) {
+    try {
+      readUrdf(path, packages);
+    } catch (const UrdfError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  fs::path dir_;
+};
+
+const char* kPendulum = R"(<?xml version="1.0"?>
+<robot name="pendulum">
+  <link name="base"/>
+  <link name="arm">
+    <inertial>
+      <origin xyz="0 0 -0.5" rpy="0 0 0"/>
+      <mass value="2.0"/>
+      <inertia ixx="0.2" ixy="0" ixz="0" iyy="0.2" iyz="0" izz="0.01"/>
+    </inertial>
+    <collision><origin xyz="0 0 -0.5"/><geometry><box size="0.05 0.05 1.0"/></geometry></collision>
+  </link>
+  <joint name="hinge" type="revolute">
+    <parent link="base"/><child link="arm"/>
+    <origin xyz="0 0 2" rpy="0 0 1.5707963267948966"/>
+    <axis xyz="0 2 0"/>
+    <limit lower="-1" upper="1" effort="10" velocity="3"/>
+    <dynamics damping="0.1" friction="0.05"/>
+  </joint>
+  <gazebo reference="arm"><mu1>0.7</mu1><mu2>0.6</mu2><kp>100000</kp><kd>10</kd></gazebo>
+</robot>
+)";
+
+TEST_F(UrdfReader, ReadsLinksJointsInertialsLimitsAndGazeboTags) {
+  const UrdfRobot r = readUrdf(write("p.urdf", kPendulum));
+  ASSERT_EQ(r.links.size(), 2u);
+  ASSERT_EQ(r.joints.size(), 1u);
+  EXPECT_EQ(r.root, "base");
+  const UrdfLink& arm = *r.findLink("arm");
+  EXPECT_EQ(arm.line, 4);
+  EXPECT_DOUBLE_EQ(arm.mass, 2.0);
+  EXPECT_TRUE(arm.inertial_origin.translation().isApprox(Eigen::Vector3d(0, 0, -0.5)));
+  EXPECT_DOUBLE_EQ(arm.inertia(2, 2), 0.01);
+  ASSERT_EQ(arm.collisions.size(), 1u);
+  EXPECT_TRUE(arm.collisions[0].size.isApprox(Eigen::Vector3d(0.05, 0.05, 1.0)));
+  EXPECT_EQ(*arm.contact.mu1, 0.7);
+  EXPECT_EQ(*arm.contact.kp, 100000.0);
+  const UrdfJoint& j = r.joints[0];
+  EXPECT_EQ(j.type, "revolute");
+  EXPECT_TRUE(j.axis.isApprox(Eigen::Vector3d::UnitY()));  // normalized
+  EXPECT_TRUE(j.origin.translation().isApprox(Eigen::Vector3d(0, 0, 2)));
+  // rpy yaw = pi/2 turns the child x axis onto the parent y axis.
+  EXPECT_TRUE((j.origin.linear() * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY()));
+  EXPECT_TRUE(j.has_limits);
+  EXPECT_DOUBLE_EQ(j.upper, 1.0);
+  EXPECT_DOUBLE_EQ(j.damping, 0.1);
+  EXPECT_DOUBLE_EQ(j.friction, 0.05);
+  EXPECT_TRUE(r.issues.empty());
+  EXPECT_DOUBLE_EQ(r.totalMass(), 2.0);
+}
+
+TEST_F(UrdfReader, TruncatedXmlNamesFileAndLine) {
+  const std::string text(kPendulum);
+  const std::string path = write("cut.urdf", text.substr(0, text.find("<joint")));
+  const std::string e = errorOf(path);
+  EXPECT_NE(e.find(path + ":"), std::string::npos) << e;
+  EXPECT_NE(e.find("malformed XML"), std::string::npos) << e;
+}
+
+TEST_F(UrdfReader, UnknownJointTypeNamesJointLineAndTheKnownTypes) {
+  std::string text(kPendulum);
+  text.replace(text.find("type=\"revolute\""), 15, "type=\"hinge\"");
+  const std::string path = write("t.urdf", text);
+  const std::string e = errorOf(path);
+  EXPECT_NE(e.find(path + ":12: joint 'hinge': unknown type 'hinge'"), std::string::npos) << e;
+  EXPECT_NE(e.find("continuous"), std::string::npos) << e;
+}
+
+TEST_F(UrdfReader, MissingParentLinkIsNamed) {
+  std::string text(kPendulum);
+  text.replace(text.find("<parent link=\"base\"/>"), 21, "<parent link=\"bsae\"/>");
+  const std::string e = errorOf(write("m.urdf", text));
+  EXPECT_NE(e.find(":13: joint 'hinge': parent link 'bsae' is not defined"), std::string::npos)
+      << e;
+}
+
+TEST_F(UrdfReader, CyclicTreeIsRefusedWithUrdfdomsReason) {
+  const std::string e = errorOf(write("loop.urdf", R"(<robot name="loop">
+  <link name="a"/><link name="b"/>
+  <joint name="ab" type="fixed"><parent link="a"/><child link="b"/></joint>
+  <joint name="ba" type="fixed"><parent link="b"/><child link="a"/></joint>
+</robot>)"));
+  EXPECT_NE(e.find("No root link found"), std::string::npos) << e;
+}
+
+TEST_F(UrdfReader, NegativeMassAndDubiousInertiasAreFound) {
+  std::string text(kPendulum);
+  text.replace(text.find("<mass value=\"2.0\"/>"), 19, "<mass value=\"-2.0\"/>");
+  const UrdfRobot neg = readUrdf(write("neg.urdf", text));
+  ASSERT_TRUE(neg.hasErrors());
+  EXPECT_EQ(neg.issues[0].where, "link 'arm'");
+  EXPECT_NE(neg.issues[0].message.find("mass must be >= 0 (got -2)"), std::string::npos);
+
+  std::string tri(kPendulum);
+  tri.replace(tri.find("izz=\"0.01\""), 10, "izz=\"0.5\" ");
+  const UrdfRobot t = readUrdf(write("tri.urdf", tri));
+  ASSERT_EQ(t.issues.size(), 1u);
+  EXPECT_NE(t.issues[0].message.find("triangle inequality"), std::string::npos);
+  EXPECT_FALSE(t.hasErrors());
+}
+
+TEST_F(UrdfReader, MissingMeshNamesLinkAndEveryPathTried) {
+  std::string text(kPendulum);
+  text.replace(text.find("<box size=\"0.05 0.05 1.0\"/>"), 27,
+               "<mesh filename=\"package://arms/meshes/arm.stl\"/>");
+  const std::string path = write("mesh.urdf", text);
+  const UrdfRobot r = readUrdf(path, PackagePaths({(dir_ / "pkgs").string()}));
+  ASSERT_TRUE(r.hasErrors());
+  const UrdfIssue& i = r.issues[0];
+  EXPECT_EQ(i.where, "link 'arm'");
+  EXPECT_NE(i.message.find("package://arms/meshes/arm.stl"), std::string::npos) << i.message;
+  EXPECT_NE(i.message.find((dir_ / "pkgs" / "arms" / "meshes" / "arm.stl").string()),
+            std::string::npos)
+      << i.message;
+  // Once the file exists in a package folder, it resolves.
+  write("pkgs/arms/meshes/arm.stl", "solid x\nendsolid x\n");
+  const UrdfRobot ok = readUrdf(path, PackagePaths({(dir_ / "pkgs").string()}));
+  EXPECT_FALSE(ok.hasErrors());
+  EXPECT_EQ(ok.findLink("arm")->collisions[0].mesh_path,
+            (dir_ / "pkgs" / "arms" / "meshes" / "arm.stl").string());
+}
+
+TEST_F(UrdfReader, MeshUrisResolveRelativeFileAndPackageThroughEnvironment) {
+  const std::string mesh = write("robot/meshes/a.stl", "solid a\nendsolid a\n");
+  const PackagePaths none;
+  EXPECT_EQ(*none.resolve("meshes/a.stl", (dir_ / "robot").string()).path, mesh);
+  EXPECT_EQ(*none.resolve("file://" + mesh, "/elsewhere").path, mesh);
+  EXPECT_FALSE(none.resolve("https://example.org/a.stl", ".").path);
+  EXPECT_NE(none.resolve("package://robot/meshes/a.stl", ".").problem.find("no package path"),
+            std::string::npos);
+  // A search folder named like the package is the package itself.
+  EXPECT_EQ(
+      *PackagePaths({(dir_ / "robot").string()}).resolve("package://robot/meshes/a.stl", ".").path,
+      mesh);
+  setenv("ROS_PACKAGE_PATH", ("/nonexistent:" + dir_.string()).c_str(), 1);
+  const PackagePaths env = PackagePaths::withEnvironment({});
+  unsetenv("ROS_PACKAGE_PATH");
+  EXPECT_EQ(*env.resolve("package://robot/meshes/a.stl", ".").path, mesh);
+}
+
+TEST_F(UrdfReader, UnreadableFile) {
+  const std::string e = errorOf((dir_ / "none.urdf").string());
+  EXPECT_NE(e.find("cannot open URDF file"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace tribo::io
