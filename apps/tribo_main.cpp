@@ -8,15 +8,23 @@
 #include <vector>
 
 #include "apps/info_command.hpp"
+#include "apps/sweep_command.hpp"
+#include "apps/tradeoff_command.hpp"
 #include "io/result_writer.hpp"
 #include "io/scene_loader.hpp"
 #include "io/scene_run.hpp"
+#include "io/urdf_scene.hpp"
 
 namespace {
 
 constexpr const char* kUsage =
     "usage: tribo run SCENE.yaml --out DIR [--set NAME=VALUE ...]\n"
+    "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "       tribo info FILE.urdf [--package-path DIR ...]\n"
+    "       tribo sweep SCENE.yaml --out DIR --grid NAME=START:STOP:COUNT | --list NAME=V1,... "
+    "(see tribo sweep --help)\n"
+    "       tribo tradeoff SCENE.yaml [--out DIR] (integrators vs a converged reference; "
+    "see tribo tradeoff --help)\n"
     "\n"
     "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
     "  --out   output folder (created if missing)\n"
@@ -57,11 +65,17 @@ int run(const std::vector<std::string>& args) {
   std::string scene_path;
   std::string out_dir;
   std::vector<std::string> overrides;
+  std::vector<std::string> package_paths;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--out" || a == "--set") {
+    if (a == "--out" || a == "--set" || a == "--package-path") {
       if (i + 1 >= args.size()) return usage(a + " needs a value");
-      (a == "--out" ? out_dir : overrides.emplace_back()) = args[++i];
+      if (a == "--out")
+        out_dir = args[++i];
+      else if (a == "--set")
+        overrides.push_back(args[++i]);
+      else
+        package_paths.push_back(args[++i]);
     } else if (a.rfind("--", 0) == 0) {
       return usage("unknown option '" + a + "'");
     } else if (scene_path.empty()) {
@@ -75,12 +89,15 @@ int run(const std::vector<std::string>& args) {
 
   tribo::io::Scene scene;
   try {
-    scene = tribo::io::loadScene(scene_path, overrides);
+    const bool urdf = scene_path.size() > 5 && scene_path.substr(scene_path.size() - 5) == ".urdf";
+    scene = urdf ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides)
+                 : tribo::io::loadScene(scene_path, overrides);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;
   }
   const tribo::io::RunResult result = tribo::io::runScene(scene);
+  for (const auto& n : scene.notes) std::fprintf(stderr, "tribo: note: %s\n", n.c_str());
   for (const auto& w : result.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
   try {
     tribo::io::writeResults(out_dir, scene, result);
@@ -107,5 +124,7 @@ int main(int argc, char** argv) {
   }
   if (args[0] == "run") return run({args.begin() + 1, args.end()});
   if (args[0] == "info") return tribo::app::runInfo({args.begin() + 1, args.end()});
+  if (args[0] == "sweep") return tribo::app::sweepCommand({args.begin() + 1, args.end()});
+  if (args[0] == "tradeoff") return tribo::app::tradeoffCommand({args.begin() + 1, args.end()});
   return usage("unknown command '" + args[0] + "'");
 }

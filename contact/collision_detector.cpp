@@ -1,28 +1,98 @@
 #include "contact/collision_detector.hpp"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/cone.h>
+#include <fcl/geometry/shape/convex.h>
+#include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/halfspace.h>
+#include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
 
-#include <map>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace tribo::contact {
 
 namespace {
 
-enum class PairKind { kBoxHalfSpace, kHalfSpaceBox, kFcl };
+enum class PairKind {
+  kHalfSpaceBox,    // the hot belt pair, straight to its corner manifold
+  kHalfSpaceShape,  // A half-space, B anything: closed form
+  kShapeHalfSpace,  // the same, normal flipped
+  kSphereSphere,
+  kBoxSphere,
+  kSphereBox,
+  kFcl
+};
 
 std::shared_ptr<fcl::CollisionGeometryd> makeFclGeometry(const Shape& shape) {
   switch (shape.type) {
     case ShapeType::kBox:
       return std::make_shared<fcl::Boxd>(2.0 * shape.half_extents);
+    case ShapeType::kSphere:
+      return std::make_shared<fcl::Sphered>(shape.radius);
+    case ShapeType::kCylinder:
+      return std::make_shared<fcl::Cylinderd>(shape.radius, 2.0 * shape.half_length);
+    case ShapeType::kCapsule:
+      return std::make_shared<fcl::Capsuled>(shape.radius, 2.0 * shape.half_length);
+    case ShapeType::kCone:
+      return std::make_shared<fcl::Coned>(shape.radius, 2.0 * shape.half_length);
     case ShapeType::kHalfSpace:
       return std::make_shared<fcl::Halfspaced>(Eigen::Vector3d::UnitZ(), 0.0);
+    case ShapeType::kConvexMesh: {
+      auto vertices = std::make_shared<std::vector<Eigen::Vector3d>>(shape.mesh->vertices);
+      auto faces = std::make_shared<std::vector<int>>();
+      for (const auto& t : shape.mesh->triangles)
+        faces->insert(faces->end(), {3, t[0], t[1], t[2]});
+      return std::make_shared<fcl::Convexd>(vertices,
+                                            static_cast<int>(shape.mesh->triangles.size()), faces);
+    }
+    case ShapeType::kTriangleMesh: {
+      auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+      std::vector<fcl::Triangle> triangles;
+      for (const auto& t : shape.mesh->triangles)
+        triangles.emplace_back(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]),
+                               static_cast<std::size_t>(t[2]));
+      model->beginModel();
+      model->addSubModel(shape.mesh->vertices, triangles);
+      model->endModel();
+      model->computeLocalAABB();
+      return model;
+    }
   }
   throw std::invalid_argument("unsupported shape");
+}
+
+// FCL's own world AABB of a rotated object is the bounding sphere's box, which makes
+// resting neighbours overlap; this one is the tight box from the shape's support function
+// (for meshes with many vertices FCL's is kept: the support costs a pass over them).
+class TrackedObject : public fcl::CollisionObjectd {
+ public:
+  using fcl::CollisionObjectd::CollisionObjectd;
+  void updateAabb(const Shape& shape, const Eigen::Isometry3d& pose) {
+    if (shape.mesh && shape.mesh->vertices.size() > 64) {
+      computeAABB();
+      return;
+    }
+    const Eigen::Matrix3d& r = pose.linear();
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d axis = r.row(i).transpose();  // world axis i in the shape frame
+      aabb.max_[i] = pose.translation()[i] + shape.support(axis);
+      aabb.min_[i] = pose.translation()[i] - shape.support(-axis);
+    }
+  }
+};
+
+std::uint64_t pairKey(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
 }
 
 }  // namespace
@@ -32,41 +102,82 @@ struct CollisionDetector::Impl {
   std::vector<std::pair<int, int>> pairs;
   std::vector<PairKind> kinds;
   CollisionOptions options;
-  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
-  std::map<std::pair<int, int>, int> pair_index;  // (min geom, max geom) -> pair
+  bool any_fcl_pair = false;
+  std::vector<std::unique_ptr<TrackedObject>> objects;
+  std::unordered_map<std::uint64_t, int> pair_index;  // geometry pair -> pair
   fcl::DynamicAABBTreeCollisionManagerd manager;
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
   std::vector<int> candidates;
   std::vector<int> unbounded_pairs;  // pairs with a half-space: never culled
+  bool timing = false;
+  double fcl_seconds = 0.0;
 
   void narrowphase(int p, std::span<const Eigen::Isometry3d> poses,
                    std::vector<ContactPoint>& out) {
     const auto [a, b] = pairs[p];
+    const int max_points = options.max_points_per_pair;
     switch (kinds[p]) {
       case PairKind::kHalfSpaceBox:
         boxHalfSpaceContacts(poses[b], shapes[b].half_extents, poses[a], p, out);
         return;
-      case PairKind::kBoxHalfSpace: {
+      case PairKind::kHalfSpaceShape:
+        halfSpaceContacts(shapes[b], poses[b], poses[a], p, max_points, out);
+        return;
+      case PairKind::kShapeHalfSpace: {
         const auto first = out.size();
-        boxHalfSpaceContacts(poses[a], shapes[a].half_extents, poses[b], p, out);
+        halfSpaceContacts(shapes[a], poses[a], poses[b], p, max_points, out);
+        for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
+        return;
+      }
+      case PairKind::kSphereSphere:
+        sphereSphereContact(poses[a].translation(), shapes[a].radius, poses[b].translation(),
+                            shapes[b].radius, p, out);
+        return;
+      case PairKind::kBoxSphere:
+        boxSphereContact(poses[a], shapes[a].half_extents, poses[b].translation(), shapes[b].radius,
+                         p, out);
+        return;
+      case PairKind::kSphereBox: {
+        const auto first = out.size();
+        boxSphereContact(poses[b], shapes[b].half_extents, poses[a].translation(), shapes[a].radius,
+                         p, out);
         for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
         return;
       }
       case PairKind::kFcl:
         break;
     }
+    const auto start =
+        timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     result.clear();
-    fcl::collide(objects[a].get(), objects[b].get(), request, result);
+    // FCL 0.7 answers shape/mesh with the normal reversed (and misses some sphere/triangle
+    // contacts) but mesh/shape correctly: ask with the mesh first and turn the normal back.
+    // Its sphere/triangle test also reports the depth with a negative sign: for mesh pairs
+    // the magnitude is used.
+    const bool swap =
+        shapes[b].type == ShapeType::kTriangleMesh && shapes[a].type != ShapeType::kTriangleMesh;
+    const bool mesh =
+        shapes[a].type == ShapeType::kTriangleMesh || shapes[b].type == ShapeType::kTriangleMesh;
+    if (swap)
+      fcl::collide(objects[b].get(), objects[a].get(), request, result);
+    else
+      fcl::collide(objects[a].get(), objects[b].get(), request, result);
     for (std::size_t i = 0; i < result.numContacts(); ++i) {
       const auto& c = result.getContact(i);
+      const double depth = mesh ? std::abs(c.penetration_depth) : c.penetration_depth;
+      if (!(depth > 0.0)) continue;  // touching, or FCL gave no depth
       ContactPoint cp;
       cp.pair = p;
       cp.position = c.pos;
-      cp.normal = c.normal.normalized();  // FCL: from o1 (A) to o2 (B)
-      cp.depth = c.penetration_depth;
+      // FCL: from o1 to o2, so from A into B unless swapped.
+      cp.normal = swap ? Eigen::Vector3d(-c.normal.normalized()) : c.normal.normalized();
+      cp.depth = depth;
       out.push_back(cp);
     }
+    if (timing)
+      fcl_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 };
 
@@ -80,8 +191,11 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
   m.options = options;
   const int n = static_cast<int>(m.shapes.size());
   for (int g = 0; g < n; ++g) {
-    m.objects.push_back(std::make_unique<fcl::CollisionObjectd>(makeFclGeometry(m.shapes[g])));
-    m.objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(g)));
+    try {
+      m.shapes[g].validate();
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("geometry " + std::to_string(g) + ": " + e.what());
+    }
   }
   for (std::size_t p = 0; p < m.pairs.size(); ++p) {
     const auto [a, b] = m.pairs[p];
@@ -93,17 +207,34 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
       throw std::invalid_argument("contact pair " + std::to_string(p) +
                                   ": two half-spaces cannot be in contact");
     PairKind kind = PairKind::kFcl;
-    if (options.closed_form_box_halfspace) {
-      if (ta == ShapeType::kHalfSpace && tb == ShapeType::kBox) kind = PairKind::kHalfSpaceBox;
-      if (ta == ShapeType::kBox && tb == ShapeType::kHalfSpace) kind = PairKind::kBoxHalfSpace;
+    const bool box_plane = (ta == ShapeType::kBox && tb == ShapeType::kHalfSpace) ||
+                           (tb == ShapeType::kBox && ta == ShapeType::kHalfSpace);
+    const bool closed =
+        box_plane ? options.closed_form_box_halfspace : options.closed_form_primitives;
+    if (closed) {
+      if (ta == ShapeType::kHalfSpace)
+        kind = tb == ShapeType::kBox ? PairKind::kHalfSpaceBox : PairKind::kHalfSpaceShape;
+      if (tb == ShapeType::kHalfSpace) kind = PairKind::kShapeHalfSpace;
+      if (ta == ShapeType::kSphere && tb == ShapeType::kSphere) kind = PairKind::kSphereSphere;
+      if (ta == ShapeType::kBox && tb == ShapeType::kSphere) kind = PairKind::kBoxSphere;
+      if (ta == ShapeType::kSphere && tb == ShapeType::kBox) kind = PairKind::kSphereBox;
     }
     m.kinds.push_back(kind);
-    m.pair_index[{std::min(a, b), std::max(a, b)}] = static_cast<int>(p);
+    m.any_fcl_pair = m.any_fcl_pair || kind == PairKind::kFcl;
+    m.pair_index[pairKey(a, b)] = static_cast<int>(p);
+  }
+  // FCL objects only where FCL is asked something: an FCL pair, or the broadphase.
+  std::vector<bool> needed(n, options.broadphase);
+  for (std::size_t p = 0; p < m.pairs.size(); ++p)
+    if (m.kinds[p] == PairKind::kFcl) needed[m.pairs[p].first] = needed[m.pairs[p].second] = true;
+  for (int g = 0; g < n; ++g) {
+    m.objects.push_back(needed[g] ? std::make_unique<TrackedObject>(makeFclGeometry(m.shapes[g]))
+                                  : nullptr);
+    if (m.objects.back())
+      m.objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(g)));
   }
   m.request = fcl::CollisionRequestd(static_cast<std::size_t>(options.max_points_per_pair), true);
   if (options.broadphase) {
-    // Half-spaces have infinite AABBs, which FCL's tree cannot hold: they stay out of it,
-    // and their pairs are always handed to the narrowphase (a cheap closed form).
     std::vector<fcl::CollisionObjectd*> raw;
     for (int g = 0; g < n; ++g)
       if (m.shapes[g].type != ShapeType::kHalfSpace) raw.push_back(m.objects[g].get());
@@ -123,62 +254,42 @@ CollisionDetector& CollisionDetector::operator=(CollisionDetector&&) noexcept = 
 
 const std::vector<std::pair<int, int>>& CollisionDetector::pairs() const { return impl_->pairs; }
 
+void CollisionDetector::setTiming(bool timing) { impl_->timing = timing; }
+double CollisionDetector::fclSeconds() const { return impl_->fcl_seconds; }
+
 void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
                                std::vector<ContactPoint>& out) {
   Impl& m = *impl_;
   out.clear();
-  const bool need_fcl_poses =
-      m.options.broadphase ||
-      std::any_of(m.kinds.begin(), m.kinds.end(), [](PairKind k) { return k == PairKind::kFcl; });
-  if (need_fcl_poses) {
+  if (m.any_fcl_pair || m.options.broadphase) {
     for (std::size_t g = 0; g < m.objects.size(); ++g) {
+      if (!m.objects[g]) continue;
       m.objects[g]->setTransform(poses[g]);
-      if (m.options.broadphase) m.objects[g]->computeAABB();
+      if (m.options.broadphase && m.shapes[g].type != ShapeType::kHalfSpace)
+        m.objects[g]->updateAabb(m.shapes[g], poses[g]);
     }
   }
   if (!m.options.broadphase) {
     for (std::size_t p = 0; p < m.pairs.size(); ++p) m.narrowphase(static_cast<int>(p), poses, out);
     return;
   }
+  const auto start =
+      m.timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
   m.manager.update();
   m.candidates.assign(m.unbounded_pairs.begin(), m.unbounded_pairs.end());
-  struct Data {
-    Impl* impl;
-  } data{&m};
-  m.manager.collide(&data, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* d) {
-    auto* self = static_cast<Data*>(d)->impl;
+  m.manager.collide(&m, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* d) {
+    auto* self = static_cast<Impl*>(d);
     const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
     const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-    const auto it = self->pair_index.find({std::min(a, b), std::max(a, b)});
+    const auto it = self->pair_index.find(pairKey(a, b));
     if (it != self->pair_index.end()) self->candidates.push_back(it->second);
     return false;  // keep going
   });
+  if (m.timing)
+    m.fcl_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::sort(m.candidates.begin(), m.candidates.end());  // deterministic order
   for (int p : m.candidates) m.narrowphase(p, poses, out);
-}
-
-int boxHalfSpaceContacts(const Eigen::Isometry3d& box_pose, const Eigen::Vector3d& half_extents,
-                         const Eigen::Isometry3d& plane_pose, int pair,
-                         std::vector<ContactPoint>& out) {
-  const Eigen::Vector3d n = plane_pose.linear().col(2);
-  const double offset = n.dot(plane_pose.translation());
-  int added = 0;
-  for (int k = 0; k < 8; ++k) {
-    const Eigen::Vector3d local((k & 1) ? half_extents.x() : -half_extents.x(),
-                                (k & 2) ? half_extents.y() : -half_extents.y(),
-                                (k & 4) ? half_extents.z() : -half_extents.z());
-    const Eigen::Vector3d corner = box_pose * local;
-    const double depth = offset - n.dot(corner);
-    if (depth <= 0.0) continue;
-    ContactPoint cp;
-    cp.pair = pair;
-    cp.position = corner + 0.5 * depth * n;
-    cp.normal = n;
-    cp.depth = depth;
-    out.push_back(cp);
-    ++added;
-  }
-  return added;
 }
 
 }  // namespace tribo::contact

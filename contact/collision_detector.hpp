@@ -1,11 +1,16 @@
 // Collision detection over a fixed set of geometries and candidate pairs: the one place
 // FCL is used (behind a pimpl, so no FCL type leaks into Tribo headers).
 //
-// Each pair (A, B) yields contact points with the normal from A into B. Box/half-space
-// pairs use an exact closed form (every penetrating box corner is a point, so a box
-// resting on a face gets four) unless `closed_form_box_halfspace` is off; box/box pairs use
-// FCL's narrowphase. With `broadphase` on, FCL's dynamic AABB tree culls the pairs first.
-// Not here: forces, materials, contact identity between steps.
+// Each pair (A, B) yields contact points with the normal from A into B. Pairs with a closed
+// form (contact/primitive_contacts.hpp: any shape on a half-space, sphere/sphere,
+// sphere/box) use it unless switched off; every other pair (box/box, cylinder, capsule,
+// cone, convex and triangle meshes among themselves) goes to FCL's narrowphase (libccd
+// GJK/EPA, FCL's box/box manifold, BVH traversal for meshes), at most
+// `max_points_per_pair` points. With `broadphase` on, FCL's dynamic AABB tree culls the
+// pairs first; half-spaces stay out of the tree (their AABB is infinite) and their pairs are
+// always tested.
+// Not here: forces, materials, which pairs exist (the model builder), contact identity
+// between steps (contact/stick_anchor.hpp).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -15,42 +20,49 @@
 #include <vector>
 
 #include "contact/contact_point.hpp"
+#include "contact/primitive_contacts.hpp"
 #include "contact/shape.hpp"
 
 namespace tribo::contact {
 
 struct CollisionOptions {
-  bool broadphase = false;                 // cull pairs with FCL's dynamic AABB tree
-  bool closed_form_box_halfspace = true;   // exact corners instead of FCL's single point
+  bool broadphase = false;                // cull pairs with FCL's dynamic AABB tree
+  bool closed_form_box_halfspace = true;  // exact corners instead of FCL's single point
+  bool closed_form_primitives = true;     // other closed forms (see primitive_contacts.hpp)
   int max_points_per_pair = 8;
+  // Automatic pairs (a scene that lists no contacts): do bodies joined by a joint collide?
+  bool joined_bodies_collide = false;
+  // Contact identity for stateful friction when the narrowphase gives no feature id: a
+  // contact continues the previous step's nearest contact of the same pair within this
+  // distance [m] (contact/stick_anchor.hpp).
+  double match_radius = 0.01;
 };
 
 class CollisionDetector {
  public:
-  // Throws std::invalid_argument for a pair that cannot collide (half-space/half-space)
-  // or an index out of range.
+  // Throws std::invalid_argument for a pair that cannot collide (half-space/half-space),
+  // an index out of range or an invalid shape.
   CollisionDetector(std::vector<Shape> shapes, std::vector<std::pair<int, int>> pairs,
                     CollisionOptions options = {});
   ~CollisionDetector();
   CollisionDetector(CollisionDetector&&) noexcept;
   CollisionDetector& operator=(CollisionDetector&&) noexcept;
 
-  // World poses of all geometries in, contact points out (cleared first). Does not
-  // allocate once `out` has grown to its working size.
+  // World poses of all geometries in, contact points out (cleared first), grouped by pair
+  // in increasing pair order. Does not allocate once `out` has grown to its working size
+  // (FCL's own narrowphase may).
   void detect(std::span<const Eigen::Isometry3d> poses, std::vector<ContactPoint>& out);
 
   const std::vector<std::pair<int, int>>& pairs() const;
+
+  // Wall time spent inside FCL (broadphase and FCL narrowphase) since construction [s];
+  // measured only when `timing` is on (it costs two clock reads per call).
+  void setTiming(bool timing);
+  double fclSeconds() const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-// Exact box/half-space contact: every box corner below the plane, at the midpoint between
-// the corner and the plane, normal = the plane's outward normal (from the half-space into
-// the box). Appends to `out`; returns the number of points added.
-int boxHalfSpaceContacts(const Eigen::Isometry3d& box_pose, const Eigen::Vector3d& half_extents,
-                         const Eigen::Isometry3d& plane_pose, int pair,
-                         std::vector<ContactPoint>& out);
 
 }  // namespace tribo::contact

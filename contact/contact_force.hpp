@@ -5,8 +5,10 @@
 //   v_rel = (v_B + w_B x (p - o_B)) - (v_A + w_A x (p - o_A))
 //   d' = -n . v_rel,   slip = tangential part of (v_rel + s_B - s_A)
 //   F_B = F_n n + F_t,  F_n from the normal law, F_t = -mu(|slip|) F_n slip/|slip|
-// where s is a body's surface velocity (world frame; it never changes the depth rate). Not here:
-// collision detection, wrench accumulation on bodies (core does that), stateful friction.
+// where s is a body's surface velocity (world frame; it never changes the depth rate). A
+// stateful law gets the contact's StickView instead and returns F_t itself.
+// Not here: collision detection, wrench accumulation on bodies (core does that), keeping
+// the state of stateful laws (contact/stick_anchor.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -37,8 +39,12 @@ struct Material {
   std::shared_ptr<const friction::FrictionLaw> friction;  // never null in a built model
 };
 
-// Fills `out` (kinematics and forces) for point `cp` between A and B.
+// Fills `out` (kinematics and forces) for point `cp` between A and B with a memoryless law.
 void evaluateContact(const ContactPoint& cp, const GeometryMotion& a, const GeometryMotion& b,
                      const Material& material, ContactRecord& out);
+
+// The same for a stateful law, given the contact's state view.
+void evaluateContact(const ContactPoint& cp, const GeometryMotion& a, const GeometryMotion& b,
+                     const Material& material, const friction::StickView& view, ContactRecord& out);
 
 }  // namespace tribo::contact

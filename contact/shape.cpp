@@ -1,20 +1,121 @@
 #include "contact/shape.hpp"
 
+#include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace tribo::contact {
 
+namespace {
+
+Eigen::Vector3d meshHalfExtents(const MeshData& mesh) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (const auto& v : mesh.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  return 0.5 * (hi - lo);
+}
+
+}  // namespace
+
 double Shape::size() const {
-  if (type == ShapeType::kHalfSpace) return std::numeric_limits<double>::infinity();
-  return half_extents.minCoeff();
+  switch (type) {
+    case ShapeType::kBox:
+      return half_extents.minCoeff();
+    case ShapeType::kSphere:
+    case ShapeType::kCapsule:
+      return radius;
+    case ShapeType::kCylinder:
+    case ShapeType::kCone:
+      return std::min(radius, half_length);
+    case ShapeType::kConvexMesh:
+      return mesh ? meshHalfExtents(*mesh).minCoeff() : 0.0;
+    case ShapeType::kHalfSpace:
+    case ShapeType::kTriangleMesh:
+      return std::numeric_limits<double>::infinity();
+  }
+  return 0.0;
+}
+
+double Shape::support(const Eigen::Vector3d& d) const {
+  switch (type) {
+    case ShapeType::kBox:
+      return d.cwiseAbs().dot(half_extents);
+    case ShapeType::kSphere:
+      return radius * d.norm();
+    case ShapeType::kCapsule:
+      return radius * d.norm() + half_length * std::abs(d.z());
+    case ShapeType::kCylinder:
+      return radius * std::hypot(d.x(), d.y()) + half_length * std::abs(d.z());
+    case ShapeType::kCone:
+      return std::max(half_length * d.z(),
+                      -half_length * d.z() + radius * std::hypot(d.x(), d.y()));
+    case ShapeType::kConvexMesh:
+    case ShapeType::kTriangleMesh: {
+      double best = -std::numeric_limits<double>::infinity();
+      for (const auto& v : mesh->vertices) best = std::max(best, d.dot(v));
+      return best;
+    }
+    case ShapeType::kHalfSpace:
+      return d.z() > 0 && d.head<2>().norm() == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  }
+  return 0.0;
+}
+
+void Shape::validate() const {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  const std::string name = shapeName(type);
+  switch (type) {
+    case ShapeType::kBox:
+      if (!half_extents.allFinite() || !(half_extents.minCoeff() > 0.0))
+        throw std::invalid_argument("box half extents must be > 0");
+      return;
+    case ShapeType::kSphere:
+      if (!positive(radius)) throw std::invalid_argument("sphere radius must be > 0");
+      return;
+    case ShapeType::kCylinder:
+    case ShapeType::kCapsule:
+    case ShapeType::kCone:
+      if (!positive(radius)) throw std::invalid_argument(name + " radius must be > 0");
+      if (!positive(half_length)) throw std::invalid_argument(name + " length must be > 0");
+      return;
+    case ShapeType::kConvexMesh:
+    case ShapeType::kTriangleMesh: {
+      if (!mesh || mesh->vertices.size() < 3 || mesh->triangles.empty())
+        throw std::invalid_argument(name + " needs at least one triangle");
+      const int n = static_cast<int>(mesh->vertices.size());
+      for (const auto& v : mesh->vertices)
+        if (!v.allFinite()) throw std::invalid_argument(name + ": a vertex is not finite");
+      for (const auto& t : mesh->triangles)
+        for (int i : t)
+          if (i < 0 || i >= n) throw std::invalid_argument(name + ": triangle index out of range");
+      return;
+    }
+    case ShapeType::kHalfSpace:
+      return;
+  }
 }
 
 std::string shapeName(ShapeType type) {
   switch (type) {
     case ShapeType::kBox:
       return "box";
+    case ShapeType::kSphere:
+      return "sphere";
+    case ShapeType::kCylinder:
+      return "cylinder";
+    case ShapeType::kCapsule:
+      return "capsule";
+    case ShapeType::kCone:
+      return "cone";
     case ShapeType::kHalfSpace:
       return "halfspace";
+    case ShapeType::kConvexMesh:
+      return "convex_mesh";
+    case ShapeType::kTriangleMesh:
+      return "mesh";
   }
   return "unknown";
 }

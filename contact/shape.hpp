@@ -1,29 +1,109 @@
 // Collision shapes attached to bodies, described in the geometry's own frame.
 //
-// A box is centred on its frame origin with the given half extents [m]. A half-space is
-// the solid below the plane z = 0 of its frame (outward normal +z). The set is what the
-// validating scenes need; it is not a mesh or convex-hull library.
+//   box:           centred on the origin, half extents (hx, hy, hz) [m]
+//   sphere:        centred on the origin, radius r
+//   cylinder:      axis z, centred, radius r, length 2 h (faces at z = -h and z = +h)
+//   capsule:       the segment z in [-h, h] swept by a sphere of radius r
+//   cone:          axis z, base disc of radius r at z = -h, apex at z = +h (FCL's convention)
+//   half-space:    the solid below the plane z = 0 (outward normal +z)
+//   convex_mesh:   a closed convex polyhedron (vertices and outward triangles)
+//   mesh:          a triangle mesh, not necessarily convex or closed (a surface)
+// Meshes are shared, immutable vertex/triangle lists (contact/mesh_loader.hpp reads them).
+// Not here: collision tests (contact/collision_detector.hpp), inertia (shape_inertia.hpp).
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace tribo::contact {
 
-enum class ShapeType { kBox, kHalfSpace };
+enum class ShapeType {
+  kBox,
+  kSphere,
+  kCylinder,
+  kCapsule,
+  kCone,
+  kHalfSpace,
+  kConvexMesh,
+  kTriangleMesh
+};
+
+// Triangles index `vertices`, counter-clockwise seen from outside for closed meshes.
+struct MeshData {
+  std::vector<Eigen::Vector3d> vertices;  // geometry frame [m]
+  std::vector<std::array<int, 3>> triangles;
+  std::string source;  // file it came from (for messages), may be empty
+};
 
 struct Shape {
   ShapeType type = ShapeType::kBox;
-  Eigen::Vector3d half_extents = Eigen::Vector3d::Constant(0.5);  // box only [m]
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Constant(0.5);  // box [m]
+  double radius = 0.0;                   // sphere, cylinder, capsule, cone [m]
+  double half_length = 0.0;              // cylinder, capsule, cone: half the length along z [m]
+  std::shared_ptr<const MeshData> mesh;  // convex_mesh, mesh
 
-  static Shape box(const Eigen::Vector3d& half_extents) { return {ShapeType::kBox, half_extents}; }
-  static Shape halfSpace() { return {ShapeType::kHalfSpace, Eigen::Vector3d::Zero()}; }
+  static Shape box(const Eigen::Vector3d& half_extents) {
+    Shape s;
+    s.type = ShapeType::kBox;
+    s.half_extents = half_extents;
+    return s;
+  }
+  static Shape halfSpace() {
+    Shape s;
+    s.type = ShapeType::kHalfSpace;
+    s.half_extents.setZero();
+    return s;
+  }
+  static Shape sphere(double radius) { return round(ShapeType::kSphere, radius, 0.0); }
+  static Shape cylinder(double radius, double half_length) {
+    return round(ShapeType::kCylinder, radius, half_length);
+  }
+  static Shape capsule(double radius, double half_length) {
+    return round(ShapeType::kCapsule, radius, half_length);
+  }
+  static Shape cone(double radius, double half_length) {
+    return round(ShapeType::kCone, radius, half_length);
+  }
+  static Shape convexMesh(std::shared_ptr<const MeshData> mesh) {
+    return meshShape(ShapeType::kConvexMesh, std::move(mesh));
+  }
+  static Shape triangleMesh(std::shared_ptr<const MeshData> mesh) {
+    return meshShape(ShapeType::kTriangleMesh, std::move(mesh));
+  }
 
-  // Characteristic size [m]: smallest box half extent, infinite for a half-space. A
-  // penetration deeper than this means the contact has failed (the run is unstable).
+  // Characteristic size [m]: the depth beyond which a contact has failed (the run is
+  // unstable). Smallest half dimension for solids; infinite for a half-space and for a
+  // triangle mesh (a surface has no thickness to measure against).
   double size() const;
+  // The shape's points farthest along -n would be the first to touch a plane with outward
+  // normal n: its support distance h(d) = max over the shape of d . x (geometry frame).
+  double support(const Eigen::Vector3d& d) const;
+  // Throws std::invalid_argument naming what is wrong (non-positive dimensions, empty mesh).
+  void validate() const;
+
+ private:
+  static Shape round(ShapeType type, double radius, double half_length) {
+    Shape s;
+    s.type = type;
+    s.half_extents.setZero();
+    s.radius = radius;
+    s.half_length = half_length;
+    return s;
+  }
+  static Shape meshShape(ShapeType type, std::shared_ptr<const MeshData> mesh) {
+    Shape s;
+    s.type = type;
+    s.half_extents.setZero();
+    s.mesh = std::move(mesh);
+    return s;
+  }
 };
 
+// Scene names: "box", "sphere", "cylinder", "capsule", "cone", "halfspace", "convex_mesh",
+// "mesh".
 std::string shapeName(ShapeType type);
 
 }  // namespace tribo::contact

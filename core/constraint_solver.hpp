@@ -1,75 +1,68 @@
 // Joint constraints at acceleration level with Lagrange multipliers and Baumgarte
 // stabilization (Baumgarte 1972, Comput. Methods Appl. Mech. Eng. 1:1-16):
 //
-//   M a = f + J^T lambda,   J a = -J' v - 2 alpha Phi' - beta^2 Phi
-//   => (J M^-1 J^T) lambda = -J' v - 2 alpha Phi' - beta^2 Phi - J M^-1 f
+//   M a = f + J^T lambda,   J a = -(J' v - f'') - 2 alpha Phi' - beta^2 Phi
+//   => (J M^-1 J^T) lambda = -(J' v - f'') - 2 alpha Phi' - beta^2 Phi - J M^-1 f
 //
-// over the dynamic bodies' world-frame velocities (v, w) per body, M = diag(m I, I_W).
-// J is stored sparse (a 1x6 block per body a row touches), so the Schur complement costs
-// O(rows^2) small dot products, independent of the number of bodies.
-// Kinematic bodies and the world enter through their known motion only. The multiplier
-// system is dense and factorized with Eigen's LDLT: right for the few constraints of the
-// validating scenes; sparse and recursive solves are later work.
-// Not here: position/velocity projection, limits, redundancy detection.
+// over the dynamic bodies' world-frame velocities (v, w) per body, M = diag(m I, I_W); f'
+// and f'' are the prescribed rates of drive rows (zero for the others). Rows come from
+// core/constraint_rows.hpp (joint equations, drives, couplings), J is stored by body
+// (core/constraint_jacobian.hpp) and J M^-1 J^T is factorized dense or sparse by size
+// (core/multiplier_matrix.hpp; ConstraintOptions::solver). Kinematic bodies and the world
+// enter through their known motion only.
+// Not here: projection (core/constraint_projection.hpp), redundancy detection
+// (core/constraint_rank.hpp), joint forces (core/joint_forces.hpp).
 #pragma once
 
 #include <Eigen/Dense>
 #include <vector>
 
+#include "core/constraint_jacobian.hpp"
+#include "core/constraint_rows.hpp"
 #include "core/model.hpp"
+#include "core/multiplier_matrix.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
 
 namespace tribo {
+
+// Whether a system of `equations` rows is factorized sparse under `options`.
+bool useSparseFactorization(const ConstraintOptions& options, int equations);
 
 class ConstraintSolver {
  public:
   explicit ConstraintSolver(const Model& model);
 
   int equationCount() const { return static_cast<int>(rows_.size()); }
+  bool isSparse() const { return matrix_.isSparse(); }
+  const std::vector<ConstraintRow>& rows() const { return rows_; }
 
   // Given unconstrained accelerations and the kinematics stage in ws, adds
   // M^-1 J^T lambda to the accelerations, fills ws.constraint_wrench and the constraint
-  // error measures.
+  // error measures. If J M^-1 J^T cannot be factorized (a singular configuration) the
+  // accelerations become NaN, which the simulator reports.
   void solve(const State& state, Workspace& ws);
 
- private:
-  struct Row {
-    ConstraintEquation::Kind kind;
-    BodyIndex parent, child;
-    Vec3 u_parent;       // parent axis i, parent frame
-    Vec3 w_child;        // child axis j, child frame (perpendicular)
-    Vec3 anchor_parent;  // parent frame
-    Vec3 anchor_child;   // child frame
-  };
-  // A row's Jacobian, kept sparse: one 1x6 block per dynamic body it touches (a row
-  // touches at most two), and M^-1 applied to each block.
-  struct RowJacobian {
-    int body[2] = {-1, -1};  // dynamic body index or -1 (world, kinematic)
-    Row6 j[2];
-    Row6 minv_j[2];
-  };
-  const Model& model_;
-  std::vector<Row> rows_;
-  // Preallocated.
-  std::vector<RowJacobian> jac_;
-  std::vector<double> inv_mass_;  // per body
-  // J M^-1 J^T and its factorization. Up to kSmall equations (a few joints) the matrices
-  // live on the stack-sized fixed-capacity type and are factorized by Cholesky (LLT):
-  // measured 3x cheaper than LDLT at 4 equations. Larger systems use LDLT.
-  static constexpr int kSmall = 12;
-  using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kSmall, kSmall>;
-  using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kSmall, 1>;
-  SmallMatrix schur_small_;
-  SmallVector rhs_small_;
-  Eigen::LLT<SmallMatrix> llt_small_;
-  Eigen::MatrixXd schur_;
-  Eigen::VectorXd rhs_;
-  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
-  Eigen::VectorXd lambda_;
+  // After solve(): the applied forces change by `delta` (per body, world, at the origin);
+  // updates lambda, the accelerations and the constraint wrenches with the same
+  // factorization (one back-substitution).
+  void addForcesAndResolve(const std::vector<Wrench>& delta, Workspace& ws);
 
-  template <typename Matrix>
-  void fillSchur(Matrix& schur) const;
+  // After solve(): the force the joint's own equations exert on its child [N, world].
+  Vec3 reactionForce(int joint) const;
+
+ private:
+  const Model& model_;
+  std::vector<ConstraintRow> rows_;
+  std::vector<RowGroup> groups_;
+  std::vector<std::vector<int>> joint_rows_;  // per joint, its equation rows
+  ConstraintJacobian jacobian_;
+  MultiplierMatrix matrix_;
+  std::vector<RowValue> values_;
+  std::vector<double> inv_mass_;  // per body
+  Eigen::VectorXd rhs_;
+  Eigen::VectorXd lambda_;
+  Eigen::VectorXd delta_lambda_;
 };
 
 }  // namespace tribo

@@ -35,7 +35,11 @@ void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force
 }  // namespace
 
 Dynamics::Dynamics(std::shared_ptr<const Model> model)
-    : model_(std::move(model)), detector_(makeDetector(*model_)), solver_(*model_) {
+    : model_(std::move(model)),
+      detector_(makeDetector(*model_)),
+      solver_(*model_),
+      joint_forces_(*model_),
+      projection_(*model_) {
   const std::size_t nb = model_->bodies.size();
   for (const Body& b : model_->bodies)
     inv_inertia_body_.push_back(b.kind == BodyKind::kDynamic ? Mat3(b.inertia.inverse())
@@ -43,13 +47,56 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   ws_.geometry_poses.assign(model_->geometries.size(), Eigen::Isometry3d::Identity());
   ws_.contact_wrench.assign(nb, {});
   ws_.spring_wrench.assign(nb, {});
+  ws_.joint_wrench.assign(nb, {});
   ws_.constraint_wrench.assign(nb, {});
   ws_.rotation.assign(nb, Mat3::Identity());
   ws_.inv_inertia_world.assign(nb, Mat3::Zero());
   ws_.linear_acceleration.assign(nb, Vec3::Zero());
   ws_.angular_acceleration.assign(nb, Vec3::Zero());
-  ws_.contact_points.reserve(8 * model_->contact_pairs.size());
-  ws_.contacts.reserve(8 * model_->contact_pairs.size());
+  // Automatic contacts list every pair that may touch; reserve for the few that do.
+  const std::size_t expected =
+      model_->automatic_contacts ? 8 * model_->geometries.size() : 8 * model_->contact_pairs.size();
+  ws_.contact_points.reserve(expected);
+  ws_.contacts.reserve(expected);
+  for (const auto& material : model_->materials) {
+    stateful_material_.push_back(material.friction->stateful() ? 1 : 0);
+    any_stateful_ = any_stateful_ || material.friction->stateful();
+  }
+}
+
+namespace {
+
+contact::AnchorFrames anchorFrames(const Workspace& ws, const ContactPair& pair,
+                                   const contact::GeometryMotion& a,
+                                   const contact::GeometryMotion& b) {
+  return {&ws.geometry_poses[pair.geometry_a], &ws.geometry_poses[pair.geometry_b],
+          a.surface_velocity, b.surface_velocity};
+}
+
+}  // namespace
+
+bool Dynamics::advanceFrictionStates(State& state) {
+  if (!any_stateful_) return false;
+  const Model& m = *model_;
+  anchor_book_.begin(state.stick_anchors);
+  for (const contact::ContactRecord& rec : ws_.contacts) {
+    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    if (!stateful_material_[pair.material]) continue;
+    const auto a = motionOf(m, state, ws_, m.geometries[pair.geometry_a].body);
+    const auto b = motionOf(m, state, ws_, m.geometries[pair.geometry_b].body);
+    const contact::AnchorFrames frames = anchorFrames(ws_, pair, a, b);
+    const contact::StickAnchor* old =
+        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
+    const friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
+    const friction::StickUpdate update =
+        m.materials[pair.material].friction->advance(rec.slip, rec.normal_force, view);
+    anchor_book_.add(contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point, frames,
+                                       state.time, update));
+  }
+  std::vector<contact::StickAnchor> next = anchor_book_.finish();
+  if (next == state.stick_anchors) return false;
+  state.stick_anchors = std::move(next);
+  return true;
 }
 
 State Dynamics::initialState() const {
@@ -57,7 +104,14 @@ State Dynamics::initialState() const {
   s.time = 0.0;
   for (const Body& b : model_->bodies)
     s.bodies.push_back({b.position, b.orientation, b.velocity, b.angular_velocity});
+  const ConstraintOptions& c = model_->options.constraints;
+  if (c.project_initial) projection_.project(s, c.projection_tolerance, c.projection_iterations);
   return s;
+}
+
+void Dynamics::projectConstraints(State& state) {
+  const ConstraintOptions& c = model_->options.constraints;
+  if (c.projection) projection_.project(state, c.projection_tolerance, c.projection_iterations);
 }
 
 void Dynamics::accumulateContacts(const State& state) {
@@ -83,8 +137,17 @@ void Dynamics::accumulateContacts(const State& state) {
     const BodyIndex a = m.geometries[pair.geometry_a].body;
     const BodyIndex b = m.geometries[pair.geometry_b].body;
     contact::ContactRecord& rec = ws_.contacts[i];
-    contact::evaluateContact(cp, motionOf(m, state, ws_, a), motionOf(m, state, ws_, b),
-                             m.materials[pair.material], rec);
+    if (!stateful_material_[pair.material]) {
+      contact::evaluateContact(cp, motionOf(m, state, ws_, a), motionOf(m, state, ws_, b),
+                               m.materials[pair.material], rec);
+    } else {
+      const auto ma = motionOf(m, state, ws_, a), mb = motionOf(m, state, ws_, b);
+      const contact::StickAnchor* anchor =
+          contact::findAnchor(state.stick_anchors, cp, m.options.collision.match_radius);
+      const friction::StickView view =
+          contact::stickView(anchor, cp, anchorFrames(ws_, pair, ma, mb), state.time);
+      contact::evaluateContact(cp, ma, mb, m.materials[pair.material], view, rec);
+    }
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
     const Vec3 f = rec.force();
     if (!b.isWorld()) applyAt(ws_.contact_wrench[b.value], state.bodies[b.value].position,
@@ -142,6 +205,7 @@ const Workspace& Dynamics::evaluate(const State& state) {
   computeKinematics(state);
   accumulateContacts(state);
   accumulateSprings(state);
+  joint_forces_.accumulate(state, ws_);
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     const Body& body = m.bodies[b];
     if (body.kind != BodyKind::kDynamic) {
@@ -150,14 +214,17 @@ const Workspace& Dynamics::evaluate(const State& state) {
       continue;
     }
     const BodyState& s = state.bodies[b];
-    const Vec3 force = ws_.contact_wrench[b].force + ws_.spring_wrench[b].force;
-    const Vec3 torque = ws_.contact_wrench[b].torque + ws_.spring_wrench[b].torque;
+    const Vec3 force =
+        ws_.contact_wrench[b].force + ws_.spring_wrench[b].force + ws_.joint_wrench[b].force;
+    const Vec3 torque =
+        ws_.contact_wrench[b].torque + ws_.spring_wrench[b].torque + ws_.joint_wrench[b].torque;
     const Mat3& r = ws_.rotation[b];
     const Vec3 gyro = s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));
     ws_.linear_acceleration[b] = force / body.mass + m.options.gravity;
     ws_.angular_acceleration[b] = ws_.inv_inertia_world[b] * (torque - gyro);
   }
   solver_.solve(state, ws_);
+  joint_forces_.applyReactionFriction(solver_, ws_);
   return ws_;
 }
 

@@ -1,8 +1,9 @@
 // One force evaluation: state in, forces and constrained accelerations out. The fixed
 // pipeline of every evaluation:
-//   kinematics (rotations, world inertias) -> geometry poses -> collision -> contact kinematics, normal force, friction law ->
-//   spring-dampers -> gravity and gyroscopic terms -> constraint solve (Lagrange
-//   multipliers) -> accelerations
+//   kinematics (rotations, world inertias) -> geometry poses -> collision -> contact kinematics,
+//   normal force, friction law -> spring-dampers -> joint forces (core/joint_forces.hpp) -> gravity
+//   and gyroscopic terms -> constraint solve (Lagrange multipliers) -> joint friction under
+//   reaction load -> accelerations
 // Results land in the Workspace, split by source. Not here: time stepping
 // (core/integrator.hpp), run control and divergence checks (core/simulator.hpp).
 #pragma once
@@ -10,7 +11,9 @@
 #include <memory>
 
 #include "contact/collision_detector.hpp"
+#include "core/constraint_projection.hpp"
 #include "core/constraint_solver.hpp"
+#include "core/joint_forces.hpp"
 #include "core/model.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
@@ -28,6 +31,19 @@ class Dynamics {
   // next call.
   const Workspace& evaluate(const State& state);
   const Workspace& workspace() const { return ws_; }
+  // Drift control after a step (ConstraintOptions::projection): moves `state` back onto the
+  // joint constraints (core/constraint_projection.hpp); does nothing unless enabled.
+  void projectConstraints(State& state);
+
+  // Stateful friction: true when some material's law keeps per-contact state. After a step,
+  // with the workspace evaluated at `state`, advanceFrictionStates lets each stateful law
+  // decide its contacts' new mode and elongation and re-sets their anchors in
+  // state.stick_anchors (contact/stick_anchor.hpp); returns true when they changed.
+  bool hasStatefulFriction() const { return any_stateful_; }
+  bool advanceFrictionStates(State& state);
+  // Time spent inside FCL, measured when switched on (benchmarks) [s].
+  void setCollisionTiming(bool on) { detector_.setTiming(on); }
+  double collisionFclSeconds() const { return detector_.fclSeconds(); }
 
  private:
   void computeKinematics(const State& state);
@@ -37,8 +53,13 @@ class Dynamics {
   std::shared_ptr<const Model> model_;
   contact::CollisionDetector detector_;
   ConstraintSolver solver_;
+  JointForces joint_forces_;
+  mutable ConstraintProjection projection_;  // scratch only; initialState() uses it
   Workspace ws_;
-  std::vector<Mat3> inv_inertia_body_;  // per body, zero for kinematic bodies
+  std::vector<Mat3> inv_inertia_body_;   // per body, zero for kinematic bodies
+  std::vector<char> stateful_material_;  // per material: its friction law keeps state
+  bool any_stateful_ = false;
+  contact::AnchorBook anchor_book_;
 };
 
 }  // namespace tribo

@@ -2,13 +2,17 @@
 
 #include <vector>
 
+#include "core/sundials_integrators.hpp"
+
 namespace tribo {
 
 namespace {
 
 class SemiImplicitEuler final : public Integrator {
  public:
-  void step(Dynamics& dynamics, State& state, double h, bool start_is_evaluated) override {
+  IntegratorStatus step(Dynamics& dynamics, State& state, double h,
+                        bool start_is_evaluated) override {
+    if (!start_is_evaluated) ++counters_.evaluations;
     const Workspace& ws = start_is_evaluated ? dynamics.workspace() : dynamics.evaluate(state);
     for (std::size_t b = 0; b < state.bodies.size(); ++b) {
       BodyState& s = state.bodies[b];
@@ -18,6 +22,8 @@ class SemiImplicitEuler final : public Integrator {
       s.orientation = rotateBy(s.angular_velocity, h, s.orientation);
     }
     state.time += h;
+    ++counters_.steps;
+    return {};
   }
   int evaluationsPerStep() const override { return 1; }
 };
@@ -26,15 +32,17 @@ class RungeKutta4 final : public Integrator {
  public:
   explicit RungeKutta4(std::size_t n) : stage_(), rates_(4, std::vector<Rate>(n)) {}
 
-  void step(Dynamics& dynamics, State& state, double h, bool start_is_evaluated) override {
+  IntegratorStatus step(Dynamics& dynamics, State& state, double h,
+                        bool start_is_evaluated) override {
     static constexpr double kStageTime[4] = {0.0, 0.5, 0.5, 1.0};
     static constexpr double kWeight[4] = {1.0 / 6.0, 2.0 / 6.0, 2.0 / 6.0, 1.0 / 6.0};
     stage_ = state;
     for (int k = 0; k < 4; ++k) {
       if (k > 0) makeStage(state, rates_[k - 1], kStageTime[k] * h);
       const State& at = k == 0 ? state : stage_;
-      const Workspace& ws =
-          (k == 0 && start_is_evaluated) ? dynamics.workspace() : dynamics.evaluate(at);
+      const bool reuse = k == 0 && start_is_evaluated;
+      if (!reuse) ++counters_.evaluations;
+      const Workspace& ws = reuse ? dynamics.workspace() : dynamics.evaluate(at);
       for (std::size_t b = 0; b < at.bodies.size(); ++b) {
         const BodyState& s = at.bodies[b];
         rates_[k][b] = {s.velocity, quaternionRate(s.angular_velocity, s.orientation),
@@ -57,6 +65,8 @@ class RungeKutta4 final : public Integrator {
       s.angular_velocity += h * sum.dw;
     }
     state.time += h;
+    ++counters_.steps;
+    return {};
   }
   int evaluationsPerStep() const override { return 4; }
 
@@ -87,8 +97,21 @@ class RungeKutta4 final : public Integrator {
 
 }  // namespace
 
+bool isAdaptive(IntegratorType type) {
+  return type == IntegratorType::kDopri5 || type == IntegratorType::kBdf;
+}
+
 std::unique_ptr<Integrator> makeIntegrator(IntegratorType type, const Model& model) {
-  if (type == IntegratorType::kRk4) return std::make_unique<RungeKutta4>(model.bodies.size());
+  switch (type) {
+    case IntegratorType::kRk4:
+      return std::make_unique<RungeKutta4>(model.bodies.size());
+    case IntegratorType::kDopri5:
+      return makeArkodeDopri5(model);
+    case IntegratorType::kBdf:
+      return makeCvodeBdf(model);
+    case IntegratorType::kSemiImplicitEuler:
+      break;
+  }
   return std::make_unique<SemiImplicitEuler>();
 }
 

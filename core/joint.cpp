@@ -6,8 +6,7 @@ namespace tribo {
 
 namespace {
 using K = ConstraintEquation::Kind;
-const ConstraintEquation kDx{K::kDistance, 0, 0}, kDy{K::kDistance, 1, 0},
-    kDz{K::kDistance, 2, 0};
+const ConstraintEquation kDx{K::kDistance, 0, 0}, kDy{K::kDistance, 1, 0}, kDz{K::kDistance, 2, 0};
 const ConstraintEquation kPxy{K::kPerpendicular, 0, 1}, kPyz{K::kPerpendicular, 1, 2},
     kPzx{K::kPerpendicular, 2, 0}, kPzy{K::kPerpendicular, 2, 1};
 
@@ -17,17 +16,26 @@ struct NamedType {
 };
 const NamedType kNames[] = {{"fixed", JointType::kFixed},
                             {"revolute", JointType::kRevolute},
+                            {"continuous", JointType::kRevolute},
                             {"prismatic", JointType::kPrismatic},
                             {"planar_translation", JointType::kPlanarTranslation},
-                            {"spherical", JointType::kSpherical}};
+                            {"spherical", JointType::kSpherical},
+                            {"universal", JointType::kUniversal},
+                            {"cylindrical", JointType::kCylindrical},
+                            {"planar", JointType::kPlanar},
+                            {"free", JointType::kFree}};
 }  // namespace
 
 const std::vector<ConstraintEquation>& jointEquations(JointType type) {
   static const std::vector<ConstraintEquation> fixed{kDx, kDy, kDz, kPxy, kPyz, kPzx};
   static const std::vector<ConstraintEquation> revolute{kDx, kDy, kDz, kPzx, kPzy};
   static const std::vector<ConstraintEquation> prismatic{kDx, kDy, kPxy, kPyz, kPzx};
-  static const std::vector<ConstraintEquation> planar{kDz, kPxy, kPyz, kPzx};
+  static const std::vector<ConstraintEquation> planar_translation{kDz, kPxy, kPyz, kPzx};
   static const std::vector<ConstraintEquation> spherical{kDx, kDy, kDz};
+  static const std::vector<ConstraintEquation> universal{kDx, kDy, kDz, kPzx};
+  static const std::vector<ConstraintEquation> cylindrical{kDx, kDy, kPzx, kPzy};
+  static const std::vector<ConstraintEquation> planar{kDz, kPzx, kPzy};
+  static const std::vector<ConstraintEquation> none{};
   switch (type) {
     case JointType::kFixed:
       return fixed;
@@ -36,12 +44,34 @@ const std::vector<ConstraintEquation>& jointEquations(JointType type) {
     case JointType::kPrismatic:
       return prismatic;
     case JointType::kPlanarTranslation:
-      return planar;
+      return planar_translation;
     case JointType::kSpherical:
       return spherical;
+    case JointType::kUniversal:
+      return universal;
+    case JointType::kCylindrical:
+      return cylindrical;
+    case JointType::kPlanar:
+      return planar;
+    case JointType::kFree:
+      return none;
   }
-  return fixed;
+  return none;
 }
+
+std::string equationName(const ConstraintEquation& e) {
+  static const char* kAxis[] = {"x", "y", "z"};
+  if (e.kind == ConstraintEquation::Kind::kDistance)
+    return std::string("translation along ") + kAxis[e.parent_axis];
+  return std::string("rotation (parent ") + kAxis[e.parent_axis] + " normal to child " +
+         kAxis[e.child_axis] + ")";
+}
+
+bool hasScalarCoordinate(JointType type) {
+  return type == JointType::kRevolute || type == JointType::kPrismatic;
+}
+
+bool isAngular(JointType type) { return type == JointType::kRevolute; }
 
 JointType jointTypeFromName(const std::string& name) {
   std::string known;
@@ -49,8 +79,7 @@ JointType jointTypeFromName(const std::string& name) {
     if (name == n.name) return n.type;
     known += (known.empty() ? "" : ", ") + std::string(n.name);
   }
-  throw std::invalid_argument("unknown joint type '" + name + "' (expected one of: " + known +
-                              ")");
+  throw std::invalid_argument("unknown joint type '" + name + "' (expected one of: " + known + ")");
 }
 
 std::string jointTypeName(JointType type) {

@@ -4,6 +4,7 @@
 // Not here: anything that changes during a run (core/state.hpp, core/dynamics.hpp).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,13 +15,18 @@
 #include "contact/shape.hpp"
 #include "core/body.hpp"
 #include "core/force_element.hpp"
+#include "core/constraint_options.hpp"
 #include "core/joint.hpp"
 
 namespace tribo {
 
-enum class IntegratorType { kSemiImplicitEuler, kRk4 };
+// Fixed-step explicit (semi_implicit_euler, rk4: hand-written, the fast path) and adaptive
+// with error control from SUNDIALS (dopri5: ARKODE explicit Dormand-Prince 5(4); bdf: CVODE
+// variable-order BDF, implicit, for very stiff contacts). See core/integrator.hpp.
+enum class IntegratorType { kSemiImplicitEuler, kRk4, kDopri5, kBdf };
 
-// Scene names "semi_implicit_euler", "rk4"; throws std::invalid_argument otherwise.
+// Scene names "semi_implicit_euler", "rk4", "dopri5", "bdf"; throws std::invalid_argument
+// otherwise.
 IntegratorType integratorFromName(const std::string& name);
 std::string integratorName(IntegratorType type);
 
@@ -32,7 +38,15 @@ struct SimulationOptions {
   // Baumgarte stabilization: Phi'' + 2 alpha Phi' + beta^2 Phi = 0 [1/s].
   double baumgarte_alpha = 20.0;
   double baumgarte_beta = 20.0;
+  ConstraintOptions constraints;  // projection, redundancy, solver (constraint_options.hpp)
   contact::CollisionOptions collision;
+  // Adaptive integrators (dopri5, bdf) only: time_step is then the communication interval
+  // (outputs and divergence checks) and the integrator picks its internal steps so that the
+  // local error stays below relative_tolerance |y| + absolute_tolerance per component.
+  double relative_tolerance = 1e-6;  // [-]
+  double absolute_tolerance = 1e-9;  // [m, m/s, rad/s, -]
+  double max_internal_step = 0.0;    // [s]; 0: no limit
+  bool event_location = true;        // stop and restart at friction regime changes
 };
 
 struct Geometry {
@@ -40,6 +54,18 @@ struct Geometry {
   BodyIndex body = BodyIndex::world();
   contact::Shape shape;
   Eigen::Isometry3d local_pose = Eigen::Isometry3d::Identity();  // in the body frame
+  // Automatic contacts only: the surface material it is made of (selects the contact
+  // material by surface pair), and collision filtering: geometries g, h may collide when
+  // (g.group & h.mask) != 0 and (h.group & g.mask) != 0.
+  std::string surface;
+  std::uint32_t collision_group = 1;
+  std::uint32_t collision_mask = 0xffffffffu;
+};
+
+// Automatic contacts: the contact material between two surface materials (either order).
+struct SurfacePairMaterial {
+  std::string surface_a, surface_b;
+  int material = -1;
 };
 
 struct ContactPair {
@@ -52,9 +78,13 @@ struct Model {
   std::vector<Body> bodies;
   std::vector<Geometry> geometries;
   std::vector<Joint> joints;
+  std::vector<JointCoupling> couplings;  // mimic constraints between joint coordinates
   std::vector<SpringDamper> springs;
   std::vector<contact::Material> materials;
   std::vector<ContactPair> contact_pairs;
+  // True when the builder made contact_pairs from every pair of geometries that may touch
+  // (the scene listed none): filtered by joints and groups/masks, culled by the broadphase.
+  bool automatic_contacts = false;
   SimulationOptions options;
 
   std::optional<BodyIndex> findBody(const std::string& name) const;

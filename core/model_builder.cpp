@@ -17,30 +17,29 @@ std::string str(double v) {
 
 bool finite(const Vec3& v) { return v.allFinite(); }
 
-// Orthonormal frame whose third column is `axis` (normalized).
-Mat3 frameWithZ(const Vec3& axis) {
-  const Vec3 z = axis.normalized();
-  Vec3 helper = Vec3::UnitX();
-  if (std::abs(z.x()) > 0.9) helper = Vec3::UnitY();
-  const Vec3 x = (helper - helper.dot(z) * z).normalized();
-  Mat3 r;
-  r.col(0) = x;
-  r.col(1) = z.cross(x);
-  r.col(2) = z;
-  return r;
-}
-
 }  // namespace
 
 IntegratorType integratorFromName(const std::string& name) {
   if (name == "semi_implicit_euler") return IntegratorType::kSemiImplicitEuler;
   if (name == "rk4") return IntegratorType::kRk4;
+  if (name == "dopri5") return IntegratorType::kDopri5;
+  if (name == "bdf") return IntegratorType::kBdf;
   throw std::invalid_argument("unknown integrator '" + name +
-                              "' (expected one of: semi_implicit_euler, rk4)");
+                              "' (expected one of: semi_implicit_euler, rk4, dopri5, bdf)");
 }
 
 std::string integratorName(IntegratorType type) {
-  return type == IntegratorType::kRk4 ? "rk4" : "semi_implicit_euler";
+  switch (type) {
+    case IntegratorType::kSemiImplicitEuler:
+      return "semi_implicit_euler";
+    case IntegratorType::kRk4:
+      return "rk4";
+    case IntegratorType::kDopri5:
+      return "dopri5";
+    case IntegratorType::kBdf:
+      return "bdf";
+  }
+  return "unknown";
 }
 
 std::optional<BodyIndex> Model::findBody(const std::string& name) const {
@@ -100,7 +99,17 @@ int ModelBuilder::addGeometry(const std::string& name, BodyIndex body,
   if (shape.type == contact::ShapeType::kBox &&
       (!shape.half_extents.allFinite() || shape.half_extents.minCoeff() <= 0.0))
     throw ModelError(who + ": box half extents must be > 0");
-  model_.geometries.push_back({name, body, shape, local_pose});
+  try {
+    shape.validate();
+  } catch (const std::invalid_argument& e) {
+    throw ModelError(who + ": " + e.what());
+  }
+  Geometry geometry;
+  geometry.name = name;
+  geometry.body = body;
+  geometry.shape = shape;
+  geometry.local_pose = local_pose;
+  model_.geometries.push_back(geometry);
   return static_cast<int>(model_.geometries.size()) - 1;
 }
 
@@ -136,29 +145,79 @@ void ModelBuilder::addContactPair(int a, int b, int material) {
   model_.contact_pairs.push_back({a, b, material});
 }
 
-void ModelBuilder::addJoint(const std::string& name, JointType type, BodyIndex parent,
-                            BodyIndex child, const Vec3& anchor_world, const Vec3& axis_world) {
-  const std::string who = "joint '" + name + "'";
-  const Body p = checkedBody(parent, who + " parent");
-  const Body c = checkedBody(child, who + " child");
-  if (child.isWorld() || c.kind != BodyKind::kDynamic)
-    throw ModelError(who + ": the child must be a dynamic body");
-  if (parent == child) throw ModelError(who + ": parent and child are the same body");
-  if (!finite(anchor_world) || !finite(axis_world) || axis_world.norm() < 1e-12)
-    throw ModelError(who + ": anchor must be finite and axis non-zero");
-  const Mat3 axes_world = frameWithZ(axis_world);
-  Joint j;
-  j.name = name;
-  j.type = type;
-  j.parent = parent;
-  j.child = child;
-  const Mat3 rp = p.orientation.toRotationMatrix();
-  const Mat3 rc = c.orientation.toRotationMatrix();
-  j.anchor_in_parent = rp.transpose() * (anchor_world - p.position);
-  j.axes_in_parent = rp.transpose() * axes_world;
-  j.anchor_in_child = rc.transpose() * (anchor_world - c.position);
-  j.axes_in_child = rc.transpose() * axes_world;
-  model_.joints.push_back(j);
+void ModelBuilder::setGeometrySurface(int geometry, const std::string& surface) {
+  if (geometry < 0 || geometry >= static_cast<int>(model_.geometries.size()))
+    throw ModelError("geometry surface: geometry index out of range");
+  model_.geometries[geometry].surface = surface;
+}
+
+void ModelBuilder::setCollisionFilter(int geometry, std::uint32_t group, std::uint32_t mask) {
+  if (geometry < 0 || geometry >= static_cast<int>(model_.geometries.size()))
+    throw ModelError("collision filter: geometry index out of range");
+  model_.geometries[geometry].collision_group = group;
+  model_.geometries[geometry].collision_mask = mask;
+}
+
+void ModelBuilder::addSurfacePairMaterial(const std::string& surface_a,
+                                          const std::string& surface_b, int material) {
+  const std::string who = "surface pair (" + surface_a + ", " + surface_b + ")";
+  if (material < 0 || material >= static_cast<int>(model_.materials.size()))
+    throw ModelError(who + ": material index out of range");
+  for (const auto& e : surface_materials_)
+    if ((e.surface_a == surface_a && e.surface_b == surface_b) ||
+        (e.surface_a == surface_b && e.surface_b == surface_a))
+      throw ModelError(who + ": a material for this surface pair is already given");
+  surface_materials_.push_back({surface_a, surface_b, material});
+}
+
+void ModelBuilder::setDefaultMaterial(int material) {
+  if (material < 0 || material >= static_cast<int>(model_.materials.size()))
+    throw ModelError("default material: material index out of range");
+  default_material_ = material;
+}
+
+void ModelBuilder::addAutomaticContacts(Model& model) const {
+  const int n = static_cast<int>(model.geometries.size());
+  auto dynamic = [&](BodyIndex i) {
+    return !i.isWorld() && model.bodies[i.value].kind == BodyKind::kDynamic;
+  };
+  auto joined = [&](BodyIndex a, BodyIndex b) {
+    for (const Joint& j : model.joints)
+      if ((j.parent == a && j.child == b) || (j.parent == b && j.child == a)) return true;
+    return false;
+  };
+  auto material = [&](const Geometry& a, const Geometry& b) {
+    for (const auto& e : surface_materials_)
+      if ((e.surface_a == a.surface && e.surface_b == b.surface) ||
+          (e.surface_a == b.surface && e.surface_b == a.surface))
+        return e.material;
+    if (default_material_ < 0)
+      throw ModelError("automatic contact (" + a.name + ", " + b.name +
+                       "): no material for surfaces ('" + a.surface + "', '" + b.surface +
+                       "'): give a default material or one for this surface pair");
+    return default_material_;
+  };
+  const bool joined_collide = model.options.collision.joined_bodies_collide;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const Geometry& gi = model.geometries[i];
+      const Geometry& gj = model.geometries[j];
+      if (gi.body == gj.body || (!dynamic(gi.body) && !dynamic(gj.body))) continue;
+      if (gi.shape.type == contact::ShapeType::kHalfSpace &&
+          gj.shape.type == contact::ShapeType::kHalfSpace)
+        continue;
+      if (!(gi.collision_group & gj.collision_mask) || !(gj.collision_group & gi.collision_mask))
+        continue;
+      if (!joined_collide && joined(gi.body, gj.body)) continue;
+      // Forces are reported on B: B is the dynamic one when only one is, else the later one.
+      const bool swap = !dynamic(gi.body)   ? false
+                        : !dynamic(gj.body) ? true
+                                            : gi.shape.type != contact::ShapeType::kHalfSpace &&
+                                                  gj.shape.type == contact::ShapeType::kHalfSpace;
+      const int a = swap ? j : i, b = swap ? i : j;
+      model.contact_pairs.push_back({a, b, material(gi, gj)});
+    }
+  }
 }
 
 void ModelBuilder::addSpring(const std::string& name, BodyIndex a, const Vec3& pa, BodyIndex b,
@@ -203,9 +262,24 @@ std::shared_ptr<const Model> ModelBuilder::build() const {
   if (!finite(o.gravity)) throw ModelError("options: gravity must be finite");
   if (!(o.baumgarte_alpha >= 0.0) || !(o.baumgarte_beta >= 0.0))
     throw ModelError("options: Baumgarte alpha and beta must be >= 0");
-  if (model_.dynamicBodyCount() == 0) throw ModelError("the model has no dynamic body");
+  if (!std::isfinite(o.relative_tolerance) || o.relative_tolerance <= 0.0 ||
+      o.relative_tolerance >= 1.0)
+    throw ModelError("options: relative tolerance must be in (0, 1) (got " +
+                     str(o.relative_tolerance) + ")");
+  if (!std::isfinite(o.absolute_tolerance) || o.absolute_tolerance <= 0.0)
+    throw ModelError("options: absolute tolerance must be > 0 (got " + str(o.absolute_tolerance) +
+                     ")");
+  if (!std::isfinite(o.max_internal_step) || o.max_internal_step < 0.0)
+    throw ModelError("options: max internal step must be >= 0, 0 for no limit (got " +
+                     str(o.max_internal_step) + ")");
   auto model = std::make_shared<Model>(model_);
   model->options = options_;
+  finishJoints(*model);
+  if (model->contact_pairs.empty() && (default_material_ >= 0 || !surface_materials_.empty())) {
+    addAutomaticContacts(*model);
+    model->automatic_contacts = true;
+    model->options.collision.broadphase = true;
+  }
   return model;
 }
 

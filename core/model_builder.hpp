@@ -25,9 +25,48 @@ class ModelBuilder {
                   const Eigen::Isometry3d& local_pose = Eigen::Isometry3d::Identity());
   int addMaterial(const contact::Material& material);
   void addContactPair(int geometry_a, int geometry_b, int material);
-  // Joint given in the initial configuration: anchor point and axis in world coordinates.
-  void addJoint(const std::string& name, JointType type, BodyIndex parent, BodyIndex child,
-                const Vec3& anchor_world, const Vec3& axis_world);
+  // Automatic contacts (used when no contact pair is added): a geometry's surface material
+  // and collision filter, the contact material of a surface pair, and the default material
+  // for pairs no surface entry covers. build() then pairs every two geometries that may
+  // touch: on different bodies, at least one dynamic, not both half-spaces, not joined by a
+  // joint (unless options().collision.joined_bodies_collide), passing the group/mask test.
+  void setGeometrySurface(int geometry, const std::string& surface);
+  void setCollisionFilter(int geometry, std::uint32_t group, std::uint32_t mask);
+  void addSurfacePairMaterial(const std::string& surface_a, const std::string& surface_b,
+                              int material);
+  void setDefaultMaterial(int material);
+  // Joints (core/model_builder_joints.cpp). Each returns the joint's index.
+  // Joint given in the initial configuration: anchor point and axis in world coordinates;
+  // the joint coordinate is 0 there.
+  int addJoint(const std::string& name, JointType type, BodyIndex parent, BodyIndex child,
+               const Vec3& anchor_world, const Vec3& axis_world);
+  // The same with the joint frame's x axis given (world): the zero-angle reference, and for a
+  // universal joint the child's rotation axis (required, normal to axis_world).
+  int addJoint(const std::string& name, JointType type, BodyIndex parent, BodyIndex child,
+               const Vec3& anchor_world, const Vec3& axis_world, const Vec3& reference_world);
+  // URDF convention: the joint frame's pose in the parent's frame (the world's for the world)
+  // and in the child's frame (for URDF, the inverse of the child's inertial origin: Tribo
+  // bodies have their origin at the centre of mass), and the axis in the joint frame. The
+  // coordinate is 0 where the two frames coincide. URDF revolute and continuous map to
+  // kRevolute, prismatic, fixed and planar to theirs, floating to kFree (or no joint).
+  int addJointInFrames(const std::string& name, JointType type, BodyIndex parent, BodyIndex child,
+                       const Eigen::Isometry3d& joint_in_parent,
+                       const Eigen::Isometry3d& joint_in_child, const Vec3& axis_in_joint);
+  // On a revolute or prismatic joint's coordinate (core/joint_elements.hpp). URDF <limit
+  // lower upper> maps to a JointLimit (gains derived when 0), <dynamics damping> to
+  // setJointDamping, <dynamics friction> to a JointFriction with a coulomb law (mu 1),
+  // load kConstant, normal_force = friction, radius 1.
+  void setJointLimit(int joint, const JointLimit& limit);
+  void setJointSpring(int joint, const JointSpring& spring);
+  void setJointDamping(int joint, double damping);
+  void setJointEffort(int joint, double effort);
+  void setJointFriction(int joint, const JointFriction& friction);
+  void setJointDrive(int joint, const JointDrive& drive);
+  // q_follower = multiplier q_leader + offset (URDF <mimic joint multiplier offset>).
+  int addJointCoupling(const std::string& name, int leader, int follower, double multiplier,
+                       double offset);
+  std::optional<int> findJoint(const std::string& name) const;
+  const std::vector<Joint>& joints() const { return model_.joints; }
   // Spring-damper with attachment points in world coordinates at the initial
   // configuration; a negative rest length means "the initial distance".
   void addSpring(const std::string& name, BodyIndex a, const Vec3& point_a_world, BodyIndex b,
@@ -43,6 +82,13 @@ class ModelBuilder {
 
  private:
   Body checkedBody(BodyIndex index, const std::string& what) const;
+  Joint& checkedJoint(int joint, const std::string& what, bool scalar_coordinate);
+  int pushJoint(Joint joint);
+  // Derived limit gains and the redundancy check on the built model (model_builder_joints.cpp).
+  void finishJoints(Model& model) const;
+  void addAutomaticContacts(Model& model) const;
+  std::vector<SurfacePairMaterial> surface_materials_;
+  int default_material_ = -1;
   Model model_;
   SimulationOptions options_;
 };

@@ -1,30 +1,50 @@
 // The one orchestrator of a run: owns the state, the dynamics and the integrator, and
-// advances time one fixed step at a time. Each step: finite-state check -> integrate ->
-// evaluate at the new state (reused by the next step and by outputs) -> divergence checks.
-// A step returns a status; it never throws and never lets a NaN through: on divergence
-// the state stays at the last good step and the status names the step, time, body and
-// quantity. Not here: output (io/), the stop time (the caller's loop).
+// advances time one model time step at a time (for adaptive integrators that step is the
+// communication interval; they take their own internal steps inside it). Each step:
+// integrate -> evaluate at the new state (reused by the next step and by outputs) ->
+// divergence checks -> advance friction states. The checks, in order:
+//   the integrator's own failure (too much work, error test, non-finite derivative);
+//   non-finite position, orientation, velocity or angular velocity of a body;
+//   a contact penetrating deeper than its geometry's size, or a non-finite contact force;
+//   energy rising without a source (core/energy.hpp).
+// A step returns a status; it never throws and never lets a NaN through: on divergence the
+// state stays at the last good step and the status names the step, time, body and quantity.
+// Not here: output (io/), the stop time (the caller's loop), the a-priori step limit
+// (core/stability.hpp).
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
 #include "core/dynamics.hpp"
+#include "core/energy.hpp"
 #include "core/integrator.hpp"
 
 namespace tribo {
 
 struct StepStatus {
   bool ok = true;
-  std::string message;  // set when !ok
+  std::string message;   // set when !ok: step, time, body and quantity in words
+  double time = 0.0;     // [s] of the state that failed the checks (when !ok)
+  std::string body;      // the body concerned, empty if none is known
+  std::string quantity;  // e.g. "velocity", "penetration", "energy", "integrator"
 };
 
 struct StepStats {
   long steps = 0;
   int contact_count = 0;
-  double max_penetration = 0.0;        // over the run [m]
-  double max_constraint_error = 0.0;   // over the run, max |Phi|
+  double max_penetration = 0.0;            // over the run [m]
+  double max_constraint_error = 0.0;       // over the run, max |Phi|
   double max_constraint_rate_error = 0.0;  // over the run, max |J v|
+  // Integrator work (core/integrator.hpp), and force evaluations in all (the integrator's
+  // plus the simulator's one per step at the new state).
+  long integrator_steps = 0;
+  long rejected_steps = 0;
+  long events = 0;
+  double last_event_time = std::numeric_limits<double>::quiet_NaN();  // [s]
+  long evaluations = 0;
 };
 
 class Simulator {
@@ -43,12 +63,18 @@ class Simulator {
 
  private:
   StepStatus check();
+  EnergyGuard makeEnergyGuard() const;
+  // A failed status at the current state's time (or at `time` for the integrator's).
+  StepStatus failed(const std::string& body, const std::string& quantity, const std::string& what,
+                    double time = NAN) const;
 
   Dynamics dynamics_;
   std::unique_ptr<Integrator> integrator_;
   State state_;
   State last_good_;
   bool evaluated_ = false;
+  EnergyGuard energy_;
+  long own_evaluations_ = 0;
   StepStats stats_;
 };
 

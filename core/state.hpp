@@ -1,11 +1,13 @@
 // The mutable state of a run: what is needed to restart it bit for bit. Cheap to copy.
 //
 // One BodyState per model body (index = BodyIndex::value); kinematic bodies are set from
-// time by the simulator. Memoryless friction laws keep no state, so there is none here yet.
+// time by the simulator. Stateful friction laws keep one StickAnchor per contact point,
+// sorted by its persistent contact key (contact/stick_anchor.hpp); memoryless laws none.
 #pragma once
 
 #include <vector>
 
+#include "contact/stick_anchor.hpp"
 #include "core/math.hpp"
 
 namespace tribo {
@@ -20,6 +22,7 @@ struct BodyState {
 struct State {
   double time = 0.0;  // [s]
   std::vector<BodyState> bodies;
+  std::vector<contact::StickAnchor> stick_anchors;  // stateful friction, sorted by key
 };
 
 }  // namespace tribo

@@ -31,6 +31,7 @@ struct Workspace {
   // Per body, by source (gravity is m g, not stored).
   std::vector<Wrench> contact_wrench;
   std::vector<Wrench> spring_wrench;
+  std::vector<Wrench> joint_wrench;               // joint limits, springs, dampers, friction
   std::vector<Wrench> constraint_wrench;          // J^T lambda
   // Per body, world: the result of the evaluation (zero for kinematic bodies).
   std::vector<Vec3> linear_acceleration;

@@ -7,6 +7,7 @@
 
 #include "friction/adams_law.hpp"
 #include "friction/coulomb_law.hpp"
+#include "friction/elastic_stick_law.hpp"
 #include "friction/recurdyn_law.hpp"
 #include "friction/roh_yoo_law.hpp"
 #include "friction/stribeck_law.hpp"
@@ -79,6 +80,8 @@ constexpr std::string_view kCoulombOptions[] = {"regularization"};
 constexpr std::string_view kStepLawKeys[] = {"mu_s", "mu_k", "v_s", "v_d"};
 constexpr std::string_view kRohYooKeys[] = {"mu_s", "mu_k", "v_s", "a", "beta"};
 constexpr std::string_view kStribeckKeys[] = {"mu_s", "mu_k", "v_st", "delta", "viscous", "v_eps"};
+constexpr std::string_view kElasticStickKeys[] = {"mu_s", "mu_k", "stiffness", "damping",
+                                                  "stick_speed"};
 
 std::unique_ptr<const FrictionLaw> makeCoulomb(const LawSpec& spec) {
   const SpecReader reader(spec, kCoulombKeys, kCoulombOptions);
@@ -142,7 +145,27 @@ std::unique_ptr<const FrictionLaw> makeStribeck(const LawSpec& spec) {
                      .v_eps = reader.optional("v_eps", defaults.v_eps)});
 }
 
+std::unique_ptr<const FrictionLaw> makeElasticStick(const LawSpec& spec) {
+  const SpecReader reader(spec, kElasticStickKeys);
+  const ElasticStickParams defaults;
+  return std::make_unique<ElasticStickLaw>(
+      ElasticStickParams{.mu_s = reader.required("mu_s"),
+                         .mu_k = reader.required("mu_k"),
+                         .stiffness = reader.required("stiffness"),
+                         .damping = reader.optional("damping", defaults.damping),
+                         .stick_speed = reader.optional("stick_speed", defaults.stick_speed)});
+}
+
 }  // namespace
+
+Eigen::Vector3d FrictionLaw::stickForce(const Eigen::Vector3d& slip, double fn, const StickView&,
+                                        double* mu_out) const {
+  return tangentialForce(*this, slip, fn, mu_out);
+}
+
+StickUpdate FrictionLaw::advance(const Eigen::Vector3d&, double, const StickView&) const {
+  return {};
+}
 
 std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec) {
   if (spec.name == "coulomb") return makeCoulomb(spec);
@@ -150,8 +173,10 @@ std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec) {
   if (spec.name == "adams") return makeAdams(spec);
   if (spec.name == "roh_yoo") return makeRohYoo(spec);
   if (spec.name == "stribeck") return makeStribeck(spec);
+  if (spec.name == "elastic_stick") return makeElasticStick(spec);
   std::string known;
   for (const std::string& name : knownFrictionLaws()) known += (known.empty() ? "" : ", ") + name;
+  for (const std::string& name : knownStatefulFrictionLaws()) known += ", " + name;
   throw FrictionParameterError("unknown friction law '" + spec.name + "' (known laws: " + known +
                                ")");
 }
@@ -159,6 +184,11 @@ std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec) {
 const std::vector<std::string>& knownFrictionLaws() {
   static const std::vector<std::string> names = {"coulomb", "recurdyn", "adams", "roh_yoo",
                                                  "stribeck"};
+  return names;
+}
+
+const std::vector<std::string>& knownStatefulFrictionLaws() {
+  static const std::vector<std::string> names = {"elastic_stick"};
   return names;
 }
 

@@ -3,8 +3,12 @@
 //
 //   F_t = -mu(|s|) * F_n * s / |s|      (s: slip velocity of body B relative to A, F_n >= 0)
 //
-// What it is not: a contact model. A law never sees geometry, bodies or time; stateful laws
-// (bristle/LuGre, elastic stick anchors) will extend this interface with per-contact state.
+// Stateful laws (stateful() == true, e.g. elastic_stick_law.hpp) also see a view of their
+// contact's state: the elongation of a tangential spring anchored where the contact stuck,
+// and whether it was sliding. The contact stage keeps that state between steps (keyed by a
+// persistent contact key) and calls advance() once after each step; memoryless laws ignore
+// both and pay nothing for them.
+// What it is not: a contact model. A law never sees geometry, bodies or time.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,6 +25,22 @@ namespace tribo::friction {
 class FrictionParameterError : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
+};
+
+// A stateful law's view of one contact's state during a force evaluation.
+struct StickView {
+  bool anchored = false;  // false for a contact first seen in this step (no anchor yet)
+  bool sliding = false;   // the contact's mode at the start of the step
+  // Elongation u of the tangential spring between the two anchored material points, in the
+  // tangent plane, world frame [m]; F = -k u - c s while stuck.
+  Eigen::Vector3d elongation = Eigen::Vector3d::Zero();
+};
+
+// A stateful law's decision after a step: the new mode, and the elongation the anchor is
+// re-set to hold (the contact stage moves the anchored points accordingly).
+struct StickUpdate {
+  bool sliding = false;
+  Eigen::Vector3d elongation = Eigen::Vector3d::Zero();
 };
 
 class FrictionLaw {
@@ -40,6 +60,15 @@ class FrictionLaw {
   virtual std::vector<double> breakpoints() const = 0;
   // Scene name of the law, e.g. "roh_yoo".
   virtual std::string_view name() const = 0;
+
+  // Stateful laws only (the defaults are the memoryless behaviour). Tangential force on B
+  // at slip s and load fn given the contact's state view; optionally the effective
+  // coefficient |F_t| / fn.
+  virtual bool stateful() const { return false; }
+  virtual Eigen::Vector3d stickForce(const Eigen::Vector3d& slip, double fn, const StickView& view,
+                                     double* mu_out) const;
+  // The state after a step, from the slip, load and view at the step's end.
+  virtual StickUpdate advance(const Eigen::Vector3d& slip, double fn, const StickView& view) const;
 };
 
 // The parameters of one law as read from a scene: numbers by key plus string options
@@ -54,8 +83,10 @@ struct LawSpec {
 // or missing key, or a value out of range ("roh_yoo: a must be > 1 (got 0.9)").
 std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec);
 
-// Names accepted by makeFrictionLaw, in a stable order.
+// Names of the memoryless laws accepted by makeFrictionLaw, in a stable order.
 const std::vector<std::string>& knownFrictionLaws();
+// Names of the stateful laws accepted by makeFrictionLaw ("elastic_stick").
+const std::vector<std::string>& knownStatefulFrictionLaws();
 
 // Tangential force on body B (slip s = velocity of B's material point relative to A's, in
 // the tangent plane) for normal force fn >= 0. Zero at zero slip. Optionally returns mu.

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/constraint_solver.hpp"
+
 namespace tribo::io {
 
 namespace {
@@ -54,9 +56,15 @@ void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
   const SimulationOptions& o = model.options;
   nlohmann::json j;
   j["status"] = result.complete ? "complete" : "diverged";
-  if (!result.complete) j["error"] = result.message;
+  if (!result.complete) {
+    j["error"] = result.message;
+    // Where the run stopped: the trajectory ends at the last good state before this time.
+    j["stopped_at"] = {
+        {"time", result.stop.time}, {"body", result.stop.body}, {"quantity", result.stop.quantity}};
+  }
   j["warnings"] = result.warnings;
   j["scene"] = scene.path;
+  j["notes"] = scene.notes;
   nlohmann::json params = nlohmann::json::object();
   for (const auto& [name, value] : scene.parameters) params[name] = value;
   j["parameters"] = params;
@@ -75,6 +83,23 @@ void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
          {"damping", m.normal.damping},
          {"friction_law", std::string(m.friction->name())}});
   j["settings"]["materials"] = materials;
+  if (isAdaptive(o.integrator)) {
+    j["settings"]["relative_tolerance"] = o.relative_tolerance;
+    j["settings"]["absolute_tolerance"] = o.absolute_tolerance;
+    j["settings"]["max_internal_step"] = o.max_internal_step;
+    j["settings"]["event_location"] = o.event_location;
+  }
+  {
+    const ConstraintOptions& c = o.constraints;
+    const int equations = static_cast<int>(constraintRows(model).size());
+    j["settings"]["constraints"] = {
+        {"equations", equations},
+        {"factorization", useSparseFactorization(c, equations) ? "sparse" : "dense"},
+        {"projection", c.projection},
+        {"projection_tolerance", c.projection_tolerance},
+        {"projection_iterations", c.projection_iterations},
+        {"redundant", c.redundant == RedundancyPolicy::kRemove ? "remove" : "error"}};
+  }
   j["stability"] = {{"estimated_max_step", number(result.stability.limit.max_step)},
                     {"limiting_element", result.stability.limit.element},
                     {"notes", result.stability.notes}};
@@ -98,7 +123,11 @@ void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
       {"simulated_seconds_per_wall_second", number(result.simulated_seconds / result.wall_seconds)},
       {"max_penetration", result.stats.max_penetration},
       {"max_constraint_error", result.stats.max_constraint_error},
-      {"max_constraint_rate_error", result.stats.max_constraint_rate_error}};
+      {"max_constraint_rate_error", result.stats.max_constraint_rate_error},
+      {"integrator_steps", result.stats.integrator_steps},
+      {"rejected_steps", result.stats.rejected_steps},
+      {"force_evaluations", result.stats.evaluations},
+      {"events", result.stats.events}};
   const auto tmp = temporaryFor(file);
   {
     std::ofstream out(tmp);

@@ -1,24 +1,48 @@
 // Scene format (see scenes/belt.yaml for a commented example). Keys in [] are optional;
 // defaults are those of the structs they fill (core/model.hpp, core/body.hpp, ...).
 //   [parameters]: {NAME: number or string}                 "$NAME" below is replaced
-//   [simulation]: [duration] [time_step] [integrator: rk4|semi_implicit_euler] [gravity]
-//                 [baumgarte: {[alpha], [beta]}]
-//                 [collision: {[broadphase], [closed_form_box_halfspace], [max_points_per_pair]}]
+//   [simulation]: [duration] [time_step] [integrator: rk4|semi_implicit_euler|dopri5|bdf]
+//                 [gravity] [baumgarte: {[alpha], [beta]}]
+//                 [rtol] [atol] [max_step] [event_location]   (dopri5, bdf only)
+//                 [collision: {[broadphase], [closed_form_box_halfspace],
+//                  [closed_form_primitives], [max_points_per_pair], [joined_bodies_collide],
+//                  [match_radius]}]
 //   bodies: - name [kind: dynamic|kinematic] mass (dynamic) [inertia: 3 or 6 values]
 //             [position] [orientation: w x y z | rpy: roll pitch yaw] [velocity]
 //             [angular_velocity] [surface_velocity] [geometry: - name shape [size]
+//             [radius] [length] [file] [scale] [surface] [collision_group] [collision_mask]
 //             [position] [orientation | rpy]]
-//   [joints]: - name type parent child [anchor] [axis]
+//           shape: box (size: 3 edges) | sphere (radius) | cylinder | capsule | cone (radius,
+//           length along z) | halfspace | convex_mesh | mesh (file: STL/OBJ/DAE, relative
+//           to the scene file; [scale: number or 3 numbers])
+//   [joints]: - name type parent child [anchor] [axis] [axis2]
+//               [limit: {lower, upper, [stiffness], [damping]}] [spring: {stiffness, [reference]}]
+//               [damping] [effort] [friction: {law, [load: reaction|constant], [normal_force],
+//               [radius]}] [drive: {[mode: position|velocity], [constant], [slope], [amplitude],
+//               [frequency], [phase]}] [mimic: {joint, [multiplier], [offset]}]
+//             type: fixed|revolute|continuous|prismatic|planar_translation|spherical|universal|
+//             cylindrical|planar|free (core/joint.hpp); anchor, axis and axis2 in world
+//             coordinates at t = 0 (axis2: the zero-angle reference x; universal: the child's
+//             axis). Limits, springs, damping, effort, friction, drive and mimic act on revolute
+//             and prismatic coordinates (core/joint_elements.hpp); friction's law names an
+//             entry of friction_laws.
+//   [simulation.constraints]: {[projection], [tolerance], [iterations], [project_initial],
+//             [redundant: error|remove], [solver: auto|dense|sparse], [sparse_threshold]}
 //   [springs]: - name a point_a b point_b stiffness [damping] [rest_length]
 //   [friction_laws]: {LAW: {key: value}}     LAW is a name known to makeFrictionLaw
-//   [materials]: - name [normal: {[law], [stiffness], [damping], [exponent]}] friction
+//   [materials]: - name [normal: {[law: linear|hertz|hunt_crossley|recurdyn], [stiffness],
+//                  [damping], [exponent], [max_depth], [restitution, impact_speed]}] friction
+//                  [surfaces: [[s1, s2], ...]] [default: true|false]
 //   [contacts]: - a b material                 (geometry names; forces reported on b)
+//                 No contacts: automatic contacts between every two geometries that may touch
+//                 (core/model_builder.hpp), material by surface pair, else the default one.
 //   [output]: [interval] [summary: {body, [coordinate: x|y|z], [stick_speed], [last_cycles]}]
 // rpy is R = Rz(yaw) Ry(pitch) Rx(roll) (fixed axes x, then y, then z, as in URDF). 6-value
 // inertia is [ixx, iyy, izz, ixy, ixz, iyz], the entries of the symmetric matrix. Without
 // inertia a dynamic body takes the solid-box inertia of its first box geometry (edges = size,
 // rotated by that geometry's orientation; an offset is not shifted: the body origin is the
-// centre of mass).
+// centre of mass). Without a box, the first other solid geometry's uniform-density inertia
+// about its centroid (contact/shape_inertia.hpp) is used the same way.
 #include "io/scene_loader.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -31,6 +55,8 @@
 #include <sstream>
 
 #include "core/model_builder.hpp"
+#include "contact/mesh_loader.hpp"
+#include "contact/shape_inertia.hpp"
 #include "friction/friction_law.hpp"
 
 namespace tribo::io {
@@ -220,6 +246,9 @@ struct GeometrySpec {
   std::string name;
   contact::Shape shape;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  std::string surface = {};
+  std::uint32_t group = 1;
+  std::uint32_t mask = 0xffffffffu;
 };
 
 struct LawEntry {
@@ -245,6 +274,7 @@ class Loader {
     if (auto s = m.get("springs"))
       for (const Value& v : s->items("springs", true)) readSpring(v);
     if (auto f = m.get("friction_laws")) readFrictionLaws(*f);
+    readJointReferences();
     if (auto mat = m.get("materials"))
       for (const Value& v : mat->items("materials", true)) readMaterial(v);
     if (auto c = m.get("contacts"))
@@ -272,24 +302,38 @@ class Loader {
   }
 
   void readSimulation(const Value& v) {
-    const Map m(v, {"duration", "time_step", "integrator", "gravity", "baumgarte", "collision"});
+    const Map m(v, {"duration", "time_step", "integrator", "gravity", "baumgarte", "collision",
+                    "rtol", "atol", "max_step", "event_location", "constraints"});
     SimulationOptions& o = builder_.options();
     if (auto x = m.get("duration")) o.duration = x->positive();
     if (auto x = m.get("time_step")) o.time_step = x->positive();
     if (auto x = m.get("integrator"))
       o.integrator = guarded(*x, [&] { return integratorFromName(x->text()); });
+    if (auto x = m.get("rtol")) {
+      o.relative_tolerance = x->positive();
+      if (!(o.relative_tolerance < 1.0))
+        x->fail("expected a number in (0, 1), found " + x->found());
+    }
+    if (auto x = m.get("atol")) o.absolute_tolerance = x->positive();
+    if (auto x = m.get("max_step")) o.max_internal_step = x->nonNegative();
+    if (auto x = m.get("event_location")) o.event_location = x->flag();
     o.gravity = m.vec3("gravity", o.gravity);
     if (auto x = m.get("baumgarte")) {
       const Map b(*x, {"alpha", "beta"});
       if (auto a = b.get("alpha")) o.baumgarte_alpha = a->nonNegative();
       if (auto a = b.get("beta")) o.baumgarte_beta = a->nonNegative();
     }
+    if (auto x = m.get("constraints")) readConstraintOptions(*x, o.constraints);
     if (auto x = m.get("collision")) {
-      const Map c(*x, {"broadphase", "closed_form_box_halfspace", "max_points_per_pair"});
+      const Map c(*x, {"broadphase", "closed_form_box_halfspace", "closed_form_primitives",
+                       "max_points_per_pair", "joined_bodies_collide", "match_radius"});
       if (auto a = c.get("broadphase")) o.collision.broadphase = a->flag();
       if (auto a = c.get("closed_form_box_halfspace"))
         o.collision.closed_form_box_halfspace = a->flag();
       if (auto a = c.get("max_points_per_pair")) o.collision.max_points_per_pair = a->integer(1);
+      if (auto a = c.get("closed_form_primitives")) o.collision.closed_form_primitives = a->flag();
+      if (auto a = c.get("joined_bodies_collide")) o.collision.joined_bodies_collide = a->flag();
+      if (auto a = c.get("match_radius")) o.collision.match_radius = a->positive();
     }
   }
 
@@ -324,38 +368,101 @@ class Loader {
         body.inertia(1, 2) = body.inertia(2, 1) = i[5];
       }
     } else if (dynamic) {
-      const auto box = std::find_if(geometries.begin(), geometries.end(), [](const auto& g) {
+      auto box = std::find_if(geometries.begin(), geometries.end(), [](const auto& g) {
         return g.shape.type == contact::ShapeType::kBox;
       });
       if (box == geometries.end())
-        v.fail("missing key 'inertia' (needed by a dynamic body without box geometry)");
-      const Vec3 e2 = (2.0 * box->shape.half_extents).cwiseAbs2();  // squared edge lengths
-      const Mat3 local =
-          (body.mass / 12.0 * Vec3(e2.y() + e2.z(), e2.x() + e2.z(), e2.x() + e2.y())).asDiagonal();
+        box = std::find_if(geometries.begin(), geometries.end(), [](const auto& g) {
+          return g.shape.type != contact::ShapeType::kHalfSpace &&
+                 g.shape.type != contact::ShapeType::kTriangleMesh;
+        });
+      if (box == geometries.end())
+        v.fail("missing key 'inertia' (needed by a dynamic body without solid geometry)");
+      const Mat3 local = guarded(box->at, [&] {
+        return Mat3(contact::solidMassProperties(box->shape, body.mass).inertia);
+      });
       const Mat3 r = box->pose.linear();
       body.inertia = r * local * r.transpose();
     }
     const BodyIndex index = guarded(v, [&] { return builder_.addBody(body); });
     for (const auto& g : geometries) {
-      guarded(g.at, [&] { return builder_.addGeometry(g.name, index, g.shape, g.pose); });
+      const int id =
+          guarded(g.at, [&] { return builder_.addGeometry(g.name, index, g.shape, g.pose); });
+      builder_.setGeometrySurface(id, g.surface);
+      builder_.setCollisionFilter(id, g.group, g.mask);
       geometry_names_.push_back(g.name);
     }
   }
 
   GeometrySpec readGeometry(const Value& v) {
-    const Map m(v, {"name", "shape", "size", "position", "orientation", "rpy"});
+    const Map m(v, {"name", "shape", "size", "radius", "length", "file", "scale", "surface",
+                    "collision_group", "collision_mask", "position", "orientation", "rpy"});
     GeometrySpec g{v, m.required("name").text(), {}, Eigen::Isometry3d::Identity()};
     const Value shape = m.required("shape");
-    if (shape.choice({"box", "halfspace"}) == 0) {
+    const Keys shapes{"box",  "sphere",    "cylinder",    "capsule",
+                      "cone", "halfspace", "convex_mesh", "mesh"};
+    const std::string kind = shapes[shape.choice(shapes)];
+    // Keys each shape takes; any other dimension key is an error at that key.
+    const std::map<std::string, Keys> takes{{"box", {"size"}},
+                                            {"sphere", {"radius"}},
+                                            {"cylinder", {"radius", "length"}},
+                                            {"capsule", {"radius", "length"}},
+                                            {"cone", {"radius", "length"}},
+                                            {"halfspace", {}},
+                                            {"convex_mesh", {"file", "scale"}},
+                                            {"mesh", {"file", "scale"}}};
+    for (const char* key : {"size", "radius", "length", "file", "scale"}) {
+      const Keys& ok = takes.at(kind);
+      if (auto x = m.get(key); x && std::find(ok.begin(), ok.end(), key) == ok.end())
+        x->fail("a " + kind + " takes no " + key +
+                (ok.empty() ? std::string() : " (it takes: " + joined(ok) + ")"));
+    }
+    if (kind == "box") {
       const Value size = m.required("size");
       const Vec3 edges = size.vec3("3 edge lengths [x, y, z] [m]");
       if (!(edges.minCoeff() > 0.0))
         size.fail("expected 3 edge lengths > 0, found " + size.found());
       g.shape = contact::Shape::box(edges / 2.0);
-    } else {
-      if (auto size = m.get("size")) size->fail("a halfspace takes no size");
+    } else if (kind == "sphere") {
+      g.shape = contact::Shape::sphere(m.required("radius").positive());
+    } else if (kind == "cylinder" || kind == "capsule" || kind == "cone") {
+      const double r = m.required("radius").positive();
+      const double h = 0.5 * m.required("length").positive();
+      g.shape = kind == "cylinder"  ? contact::Shape::cylinder(r, h)
+                : kind == "capsule" ? contact::Shape::capsule(r, h)
+                                    : contact::Shape::cone(r, h);
+    } else if (kind == "halfspace") {
       g.shape = contact::Shape::halfSpace();
+    } else {
+      const Value file = m.required("file");
+      Vec3 scale = Vec3::Ones();
+      if (auto x = m.get("scale")) {
+        if (x->node().IsScalar()) {
+          scale = Vec3::Constant(x->positive());
+        } else {
+          scale = x->vec3("a number or 3 numbers [sx, sy, sz]");
+          if (!(scale.minCoeff() > 0.0)) x->fail("expected scales > 0, found " + x->found());
+        }
+      }
+      std::filesystem::path path(file.text());
+      if (path.is_relative()) path = std::filesystem::path(file_).parent_path() / path;
+      try {
+        const auto mesh = contact::loadMesh(path.string(), scale);
+        g.shape = kind == "mesh" ? contact::Shape::triangleMesh(mesh)
+                                 : contact::Shape::convexMesh(contact::makeConvex(*mesh));
+      } catch (const contact::MeshError& e) {
+        file.fail(e.what());
+      }
     }
+    if (auto x = m.get("surface")) g.surface = x->text();
+    auto bits = [](const Value& x) {
+      const double b = x.number();
+      if (b != std::floor(b) || b < 0 || b > 4294967295.0)
+        x.fail("expected a whole number in [0, 4294967295] (a bit set), found " + x.found());
+      return static_cast<std::uint32_t>(b);
+    };
+    if (auto x = m.get("collision_group")) g.group = bits(*x);
+    if (auto x = m.get("collision_mask")) g.mask = bits(*x);
     g.pose.translation() = m.vec3("position", Vec3::Zero());
     g.pose.linear() = orientation(m).toRotationMatrix();
     return g;
@@ -369,8 +476,24 @@ class Loader {
     v.fail("unknown body '" + name + "' (known bodies: " + joined(known) + ")");
   }
 
+  void readConstraintOptions(const Value& v, ConstraintOptions& c) {
+    const Map m(v, {"projection", "tolerance", "iterations", "project_initial", "redundant",
+                    "solver", "sparse_threshold"});
+    if (auto x = m.get("projection")) c.projection = x->flag();
+    if (auto x = m.get("tolerance")) c.projection_tolerance = x->positive();
+    if (auto x = m.get("iterations")) c.projection_iterations = x->integer(1);
+    if (auto x = m.get("project_initial")) c.project_initial = x->flag();
+    if (auto x = m.get("redundant"))
+      c.redundant = x->choice({"error", "remove"}) == 0 ? RedundancyPolicy::kError
+                                                        : RedundancyPolicy::kRemove;
+    if (auto x = m.get("solver"))
+      c.solver = guarded(*x, [&] { return constraintSolverFromName(x->text()); });
+    if (auto x = m.get("sparse_threshold")) c.sparse_threshold = x->integer(1);
+  }
+
   void readJoint(const Value& v) {
-    const Map m(v, {"name", "type", "parent", "child", "anchor", "axis"});
+    const Map m(v, {"name", "type", "parent", "child", "anchor", "axis", "axis2", "limit", "spring",
+                    "damping", "effort", "friction", "drive", "mimic"});
     const std::string name = m.required("name").text();
     const Value type_value = m.required("type");
     const JointType type =
@@ -382,7 +505,100 @@ class Loader {
         child.isWorld() ? Vec3::Zero() : builder_.bodies()[child.value].position;
     const Vec3 anchor = m.vec3("anchor", child_position);
     const Vec3 axis = m.vec3("axis", Vec3::UnitZ());
-    guarded(v, [&] { builder_.addJoint(name, type, parent, child, anchor, axis); });
+    const Vec3 axis2 = m.vec3("axis2", Vec3::Zero());
+    const int joint = guarded(
+        v, [&] { return builder_.addJoint(name, type, parent, child, anchor, axis, axis2); });
+    if (auto x = m.get("limit")) {
+      const Map l(*x, {"lower", "upper", "stiffness", "damping"});
+      JointLimit limit{l.required("lower").number(), l.required("upper").number(), 0.0, 0.0};
+      if (auto k = l.get("stiffness")) limit.stiffness = k->nonNegative();
+      if (auto c = l.get("damping")) limit.damping = c->nonNegative();
+      guarded(*x, [&] { builder_.setJointLimit(joint, limit); });
+    }
+    if (auto x = m.get("spring")) {
+      const Map sp(*x, {"stiffness", "reference"});
+      const auto reference = sp.get("reference");
+      const JointSpring spring{sp.required("stiffness").number(),
+                               reference ? reference->number() : 0.0};
+      guarded(*x, [&] { builder_.setJointSpring(joint, spring); });
+    }
+    if (auto x = m.get("damping"))
+      guarded(*x, [&] { builder_.setJointDamping(joint, x->number()); });
+    if (auto x = m.get("effort")) guarded(*x, [&] { builder_.setJointEffort(joint, x->number()); });
+    if (auto x = m.get("drive")) {
+      const Map d(*x, {"mode", "constant", "slope", "amplitude", "frequency", "phase"});
+      JointDrive drive;
+      if (auto mode = d.get("mode"))
+        drive.mode = mode->choice({"position", "velocity"}) == 0 ? DriveMode::kPosition
+                                                                 : DriveMode::kVelocity;
+      auto number = [&](const char* key) {
+        const auto n = d.get(key);
+        return n ? n->number() : 0.0;
+      };
+      drive.function = {number("constant"), number("slope"), number("amplitude"),
+                        number("frequency"), number("phase")};
+      guarded(*x, [&] { builder_.setJointDrive(joint, drive); });
+    }
+    // Friction names a law and mimic a joint, possibly defined later: resolved once all
+    // joints and laws are read (readJointReferences).
+    if (auto x = m.get("friction")) pending_friction_.emplace_back(joint, *x);
+    if (auto x = m.get("mimic")) pending_mimic_.emplace_back(joint, *x);
+  }
+
+  void readJointReferences() {
+    for (const auto& [joint, v] : pending_friction_) {
+      const Map f(v, {"law", "load", "normal_force", "radius"});
+      JointFriction friction;
+      friction.law = frictionLaw(f.required("law"));
+      if (auto x = f.get("load"))
+        friction.load = x->choice({"reaction", "constant"}) == 0 ? JointFrictionLoad::kReaction
+                                                                 : JointFrictionLoad::kConstant;
+      if (auto x = f.get("normal_force")) {
+        if (friction.load != JointFrictionLoad::kConstant)
+          x->fail("normal_force applies to load: constant only");
+        friction.normal_force = x->nonNegative();
+      } else if (friction.load == JointFrictionLoad::kConstant) {
+        v.fail("missing required key 'normal_force' (needed by load: constant)");
+      }
+      if (auto x = f.get("radius")) friction.radius = x->positive();
+      guarded(v, [&] { builder_.setJointFriction(joint, friction); });
+    }
+    for (const auto& [joint, v] : pending_mimic_) {
+      const Map mm(v, {"joint", "multiplier", "offset"});
+      const Value leader_value = mm.required("joint");
+      const auto leader = builder_.findJoint(leader_value.text());
+      if (!leader) {
+        Keys known;
+        for (const Joint& j : builder_.joints()) known.push_back(j.name);
+        leader_value.fail("unknown joint '" + leader_value.text() +
+                          "' (known joints: " + joined(known) + ")");
+      }
+      const auto multiplier = mm.get("multiplier");
+      const auto offset = mm.get("offset");
+      const std::string name = builder_.joints()[joint].name + " mimics " + leader_value.text();
+      guarded(v, [&] {
+        return builder_.addJointCoupling(name, *leader, joint,
+                                         multiplier ? multiplier->number() : 1.0,
+                                         offset ? offset->number() : 0.0);
+      });
+    }
+  }
+
+  // The friction law an entry of friction_laws names, built on first use.
+  std::shared_ptr<const friction::FrictionLaw> frictionLaw(const Value& name) {
+    const auto it = laws_.find(name.text());
+    if (it == laws_.end())
+      name.fail("friction law '" + name.text() +
+                "' is not defined in friction_laws (defined: " + joined(law_names_) + ")");
+    LawEntry& law = it->second;
+    if (!law.law) {
+      try {
+        law.law = friction::makeFrictionLaw(law.spec);
+      } catch (const friction::FrictionParameterError& e) {
+        law.at.fail(std::string(e.what()) + " (selected by " + name.path() + ")");
+      }
+    }
+    return law.law;
   }
 
   void readSpring(const Value& v) {
@@ -405,7 +621,8 @@ class Loader {
   // that is not used are no error: e.g. `--set a=0.5` while the materials use recurdyn.
   // Key names are checked by makeFrictionLaw, and so also only for the laws in use.
   void readFrictionLaws(const Value& v) {
-    const Keys& known = friction::knownFrictionLaws();
+    Keys known = friction::knownFrictionLaws();
+    for (const auto& name : friction::knownStatefulFrictionLaws()) known.push_back(name);
     const Map laws(v, {});
     for (const auto& [law, entry] : laws.entries()) {
       if (std::find(known.begin(), known.end(), law) == known.end())
@@ -427,7 +644,7 @@ class Loader {
   }
 
   void readMaterial(const Value& v) {
-    const Map m(v, {"name", "normal", "friction"});
+    const Map m(v, {"name", "normal", "friction", "surfaces", "default"});
     const Value name_value = m.required("name");
     const std::string name = name_value.text();
     if (materials_.count(name)) name_value.fail("material '" + name + "' defined twice");
@@ -447,20 +664,57 @@ class Loader {
       }
     }
     material.friction = law.law;
-    materials_[name] = guarded(v, [&] { return builder_.addMaterial(material); });
+    const int index = guarded(v, [&] { return builder_.addMaterial(material); });
+    materials_[name] = index;
+    if (auto d = m.get("default"); d && d->flag()) {
+      if (!default_material_.empty())
+        d->fail("material '" + default_material_ + "' is already the default");
+      default_material_ = name;
+      builder_.setDefaultMaterial(index);
+    }
+    if (auto list = m.get("surfaces")) {
+      for (const Value& item : list->items("surface pairs [a, b]")) {
+        if (!item.node().IsSequence() || item.node().size() != 2)
+          item.fail("expected a surface pair [a, b], found " + item.found());
+        const auto both = item.items("surface names");
+        const std::string a = both[0].text(), b = both[1].text();
+        guarded(item, [&] { builder_.addSurfacePairMaterial(a, b, index); });
+      }
+    }
   }
 
   contact::NormalLaw readNormalLaw(const Value& v) {
-    const Map m(v, {"law", "stiffness", "damping", "exponent"});
+    const Map m(v, {"law", "stiffness", "damping", "exponent", "max_depth", "restitution",
+                    "impact_speed"});
     contact::NormalLaw law;
     if (auto x = m.get("law"))
       law.type = guarded(*x, [&] { return contact::normalLawFromName(x->text()); });
+    const std::string name = contact::normalLawName(law.type);
+    auto only = [&](const char* key, std::initializer_list<contact::NormalLawType> types,
+                    const std::string& which) {
+      const auto x = m.get(key);
+      if (x && std::find(types.begin(), types.end(), law.type) == types.end())
+        x->fail(std::string(key) + " applies to law " + which + " only (this law is " + name +
+                ")");
+      return x;
+    };
+    using T = contact::NormalLawType;
     if (auto x = m.get("stiffness")) law.stiffness = x->number();
-    if (auto x = m.get("damping")) law.damping = x->number();
-    if (auto x = m.get("exponent")) {
-      if (law.type != contact::NormalLawType::kHuntCrossley)
-        x->fail("exponent applies to law hunt_crossley only");
+    if (auto x = only("damping", {T::kLinear, T::kHuntCrossley, T::kRecurDyn},
+                      "linear, hunt_crossley or recurdyn"))
+      law.damping = x->number();
+    if (auto x = only("exponent", {T::kHuntCrossley, T::kRecurDyn}, "hunt_crossley or recurdyn"))
       law.exponent = x->number();
+    if (auto x = only("max_depth", {T::kRecurDyn}, "recurdyn")) law.max_depth = x->number();
+    const auto e = only("restitution", {T::kHuntCrossley}, "hunt_crossley");
+    const auto speed = only("impact_speed", {T::kHuntCrossley}, "hunt_crossley");
+    if (e || speed) {
+      // alpha from the exact Hunt-Crossley restitution relation (contact/normal_law.hpp).
+      if (!e || !speed) v.fail("restitution and impact_speed go together");
+      if (m.get("damping")) v.fail("give damping or restitution, not both");
+      law.damping = guarded(*e, [&] {
+        return contact::huntCrossleyDamping(e->number(), speed->positive());
+      });
     }
     guarded(v, [&] { law.validate(); });
     return law;
@@ -511,6 +765,9 @@ class Loader {
   Keys law_names_;  // in file order, for messages
   std::map<std::string, LawEntry> laws_;
   std::map<std::string, int> materials_;
+  std::vector<std::pair<int, Value>> pending_friction_;  // joint index, its friction block
+  std::vector<std::pair<int, Value>> pending_mimic_;     // joint index, its mimic block
+  std::string default_material_;  // name of the material marked default, if any
 };
 
 }  // namespace

@@ -41,6 +41,9 @@ struct Scene {
   // Resolved parameter name -> value text (after overrides), in file order, for the run
   // summary.
   std::vector<std::pair<std::string, std::string>> parameters;
+  // What the loader changed or assumed to make the input simulable (e.g. a massless URDF
+  // link given a stand-in mass); reported with the results.
+  std::vector<std::string> notes;
 };
 
 // Loads a scene file. `overrides` are NAME=VALUE strings (the command line's --set), applied

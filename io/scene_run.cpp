@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "core/constraint_rank.hpp"
+
 namespace tribo::io {
 
 OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& model,
@@ -29,7 +31,7 @@ OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& 
   return summarizeOscillation(trajectory.column(0), x, slip, options);
 }
 
-RunResult runScene(const Scene& scene) {
+RunResult runScene(const Scene& scene, const RunMonitor& monitor) {
   const Model& model = *scene.model;
   const double dt = model.options.time_step;
   const long steps = std::lround(model.options.duration / dt);
@@ -43,9 +45,11 @@ RunResult runScene(const Scene& scene) {
       TrajectoryRecorder(model, static_cast<std::size_t>(model.options.duration / interval + 2)),
       {},
       {},
+      {},
       {}};
   result.stability = estimateStableStep(model);
-  if (dt > result.stability.limit.max_step) {
+  // Adaptive integrators choose their own steps (dt is the communication interval).
+  if (!isAdaptive(model.options.integrator) && dt > result.stability.limit.max_step) {
     std::ostringstream w;
     w << "time step " << dt << " s exceeds the estimated stability limit "
       << result.stability.limit.max_step << " s of " << integratorName(model.options.integrator)
@@ -53,21 +57,28 @@ RunResult runScene(const Scene& scene) {
       << "); results may be wrong even if the run completes";
     result.warnings.push_back(w.str());
   }
+  for (const std::string& note : droppedEquationNotes(model)) result.warnings.push_back(note);
   Simulator sim(scene.model);
   const auto start = std::chrono::steady_clock::now();
   result.trajectory.record(sim.state(), sim.current());
   double next_output = interval;
+  double next_check = monitor.interval;
   result.complete = true;
   for (long i = 0; i < steps; ++i) {
     const StepStatus status = sim.step();
     if (!status.ok) {
       result.complete = false;
       result.message = status.message;
+      result.stop = status;
       break;
     }
     if (sim.state().time >= next_output - 0.5 * dt) {
       result.trajectory.record(sim.state(), sim.current());
       next_output += interval;
+    }
+    if (monitor.stop && sim.state().time >= next_check - 0.5 * dt) {
+      next_check += monitor.interval;
+      if (monitor.stop(result.trajectory)) break;
     }
   }
   result.wall_seconds =

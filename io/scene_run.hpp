@@ -7,6 +7,7 @@
 // Not here: writing files (io/result_writer.hpp), argument parsing (apps/).
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "core/simulator.hpp"
@@ -27,9 +28,18 @@ struct RunResult {
   OscillationSummary summary;  // of output.summary's body and coordinate
   StabilityReport stability;   // a-priori step limit of the model
   std::vector<std::string> warnings;  // e.g. the step exceeds the stability limit
+  StepStatus stop;  // when !complete: the failed step's time, body and quantity
 };
 
-RunResult runScene(const Scene& scene);
+// An optional watch over a run: every `interval` simulated seconds (> 0) `stop` sees the
+// recording so far; returning true ends the run there, complete (e.g. a sweep point whose
+// oscillation has settled, io/sweep_settle.hpp). Empty `stop`: the run lasts its duration.
+struct RunMonitor {
+  double interval = 0.0;  // [s]
+  std::function<bool(const TrajectoryRecorder&)> stop;
+};
+
+RunResult runScene(const Scene& scene, const RunMonitor& monitor = {});
 
 // The oscillation summary of a recorded trajectory for a summary spec.
 OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& model,

@@ -8,7 +8,9 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(build-essential cmake pkg-config
           libeigen3-dev libfcl-dev libccd-dev liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
-          libgtest-dev libgmock-dev libbenchmark-dev)
+          libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
+          libsundials-dev gnuplot-nox
+          openmpi-bin libopenmpi-dev)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

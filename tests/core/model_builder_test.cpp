@@ -77,8 +77,9 @@ TEST(ModelBuilder, RejectsBadJointsSpringsAndPairs) {
 }
 
 TEST(ModelBuilder, RejectsBadOptionsAndEmptyModels) {
+  // A model where nothing moves (a static URDF such as a ground plane) is valid.
   ModelBuilder empty;
-  EXPECT_NE(errorOf([&] { empty.build(); }).find("no dynamic body"), std::string::npos);
+  EXPECT_EQ(empty.build()->dynamicBodyCount(), 0);
   ModelBuilder b;
   b.addBody(dynamicBody("a"));
   b.options().time_step = 0.0;

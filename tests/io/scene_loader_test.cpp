@@ -251,7 +251,7 @@ TEST(SceneLoader, ModelErrorsComeBackWithFileAndKeyPath) {
   // A bad normal law, located at the normal block.
   EXPECT_TRUE(Has(errorOfScene(replaced(kBase, "{stiffness: 1e5}", "{stiffness: 0}")),
                   "materials[0].normal: normal law: stiffness must be > 0"));
-  EXPECT_TRUE(Has(errorOfScene(replaced(kBase, "planar_translation", "planar")),
+  EXPECT_TRUE(Has(errorOfScene(replaced(kBase, "planar_translation", "sliding")),
                   "joints[0].type: unknown joint type"));
 }
 

@@ -1,0 +1,165 @@
+#include "core/energy.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tribo {
+
+namespace {
+
+constexpr double kFloor = 1e-9;  // [J] below this a rise is rounding noise
+
+double contactPotential(const contact::NormalLaw& law, double depth) {
+  if (depth <= 0.0) return 0.0;
+  if (law.type == contact::NormalLawType::kLinear) return 0.5 * law.stiffness * depth * depth;
+  return law.stiffness * std::pow(depth, law.exponent + 1.0) / (law.exponent + 1.0);
+}
+
+}  // namespace
+
+EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
+                            std::vector<double>* body_energy) {
+  EnergyAccount a;
+  const Vec3& g = model.options.gravity;
+  if (body_energy) body_energy->assign(model.bodies.size(), 0.0);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    const BodyState& s = state.bodies[b];
+    if (body.kind == BodyKind::kKinematic) {
+      const Wrench& c = ws.contact_wrench[b];
+      const Wrench& k = ws.spring_wrench[b];
+      a.input_power -=
+          (c.force + k.force).dot(s.velocity) + (c.torque + k.torque).dot(s.angular_velocity);
+      continue;
+    }
+    const Mat3& r = ws.rotation[b];
+    const Vec3 w_body = r.transpose() * s.angular_velocity;
+    const double kinetic =
+        0.5 * body.mass * s.velocity.squaredNorm() + 0.5 * w_body.dot(body.inertia * w_body);
+    const double gravity = -body.mass * g.dot(s.position);
+    a.kinetic += kinetic;
+    a.gravity += gravity;
+    if (body_energy) (*body_energy)[b] = kinetic + gravity;
+    // Joint constraint forces and joint elements (limits, springs, dampers, friction,
+    // drives) count as sources: their work enters or leaves through the joints.
+    for (const Wrench* j : {&ws.constraint_wrench[b], &ws.joint_wrench[b]})
+      a.input_power += j->force.dot(s.velocity) + j->torque.dot(s.angular_velocity);
+    // Joint springs, limits, dampers, efforts and friction (core/joint_forces.hpp): sources.
+    const Wrench& q = ws.joint_wrench[b];
+    a.input_power += q.force.dot(s.velocity) + q.torque.dot(s.angular_velocity);
+  }
+  for (const SpringDamper& sp : model.springs) {
+    auto end = [&](BodyIndex b, const Vec3& local) {
+      return b.isWorld() ? local
+                         : Vec3(state.bodies[b.value].position + ws.rotation[b.value] * local);
+    };
+    const double stretch =
+        (end(sp.body_b, sp.point_b) - end(sp.body_a, sp.point_a)).norm() - sp.rest_length;
+    a.elastic += 0.5 * sp.stiffness * stretch * stretch;
+  }
+  for (const auto& c : ws.contacts) {
+    const ContactPair& pair = model.contact_pairs[c.point.pair];
+    a.elastic += contactPotential(model.materials[pair.material].normal, c.point.depth);
+    const Vec3 f = c.force();  // on B; A gets -f
+    const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};
+    for (const auto& [geometry, sign] : sides) {
+      const BodyIndex b = model.geometries[geometry].body;
+      if (b.isWorld()) continue;
+      const Vec3& surface = model.bodies[b.value].surface_velocity;
+      if (surface.squaredNorm() == 0.0) continue;
+      a.input_power -= sign * f.dot(ws.rotation[b.value] * surface);
+    }
+  }
+  return a;
+}
+
+EnergyGuard::EnergyGuard(const Model& model, double modified_step)
+    : model_(&model), floor_(kFloor), modified_step_(modified_step) {
+  double speed = 0.0;
+  for (const Body& b : model.bodies)
+    if (b.kind == BodyKind::kKinematic)
+      speed = std::max({speed, b.velocity.norm(), b.surface_velocity.norm()});
+    else
+      speed = std::max(speed, b.surface_velocity.norm());
+  std::vector<double> size(model.bodies.size(), 0.0);
+  for (const Geometry& g : model.geometries) {
+    const double half = g.shape.size();
+    if (g.body.isWorld() || !std::isfinite(half)) continue;
+    double& s = size[g.body.value];
+    s = s > 0.0 ? std::min(s, half) : half;
+  }
+  const double g = model.options.gravity.norm();
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].kind == BodyKind::kDynamic)
+      floor_ += model.bodies[b].mass * (g * size[b] + 0.5 * speed * speed);
+}
+
+void EnergyGuard::markMinimum(double t, double net, const EnergyAccount& a) {
+  min_time_ = t;
+  min_net_ = net;
+  min_kinetic_elastic_ = a.kinetic + a.elastic;
+  min_gravity_ = a.gravity;
+  lowest_gravity_ = a.gravity;
+  min_abs_work_ = abs_work_;
+  min_body_energy_ = body_energy_;
+}
+
+double EnergyGuard::modification(const State& state, const Workspace& ws) const {
+  if (modified_step_ <= 0.0) return 0.0;
+  double rate = 0.0;  // d(kinetic energy)/dt at the state
+  for (std::size_t b = 0; b < model_->bodies.size(); ++b) {
+    const Body& body = model_->bodies[b];
+    if (body.kind != BodyKind::kDynamic) continue;
+    const BodyState& s = state.bodies[b];
+    const Mat3& r = ws.rotation[b];
+    const Vec3 w_body = r.transpose() * s.angular_velocity;
+    const Vec3 alpha_body = r.transpose() * ws.angular_acceleration[b];
+    rate += body.mass * ws.linear_acceleration[b].dot(s.velocity) +
+            w_body.dot(body.inertia * alpha_body);
+  }
+  return 0.5 * modified_step_ * rate;
+}
+
+void EnergyGuard::reset(const State& state, const Workspace& ws) {
+  EnergyAccount a = measureEnergy(*model_, state, ws, &body_energy_);
+  a.kinetic += modification(state, ws);
+  started_ = true;
+  t_ = state.time;
+  power_ = a.input_power;
+  work_ = abs_work_ = 0.0;
+  markMinimum(state.time, a.total(), a);
+}
+
+EnergyVerdict EnergyGuard::update(const State& state, const Workspace& ws) {
+  EnergyAccount a = measureEnergy(*model_, state, ws, &body_energy_);
+  a.kinetic += modification(state, ws);
+  const double dt = state.time - t_;
+  work_ += 0.5 * (power_ + a.input_power) * dt;
+  abs_work_ += 0.5 * (std::abs(power_) + std::abs(a.input_power)) * dt;
+  t_ = state.time;
+  power_ = a.input_power;
+  const double net = a.total() - work_;
+  lowest_gravity_ = std::min(lowest_gravity_, a.gravity);
+  if (net < min_net_) {
+    markMinimum(state.time, net, a);
+    return {};
+  }
+  EnergyVerdict v;
+  v.rise = net - min_net_;
+  v.available = min_kinetic_elastic_ + (min_gravity_ - lowest_gravity_) +
+                (abs_work_ - min_abs_work_) + floor_;
+  v.since = min_time_;
+  if (v.rise <= v.available) return v;
+  v.ok = false;
+  double largest = -1.0;
+  for (std::size_t b = 0; b < body_energy_.size(); ++b) {
+    const double gain = body_energy_[b] - min_body_energy_[b];
+    if (model_->bodies[b].kind == BodyKind::kDynamic && gain > largest) {
+      largest = gain;
+      v.body = model_->bodies[b].name;
+    }
+  }
+  return v;
+}
+
+}  // namespace tribo

@@ -1,0 +1,117 @@
+// What acts on the scalar coordinate q of a revolute (angle [rad]) or prismatic (slide [m])
+// joint, as a generalized force tau along the joint axis (torque [N m] or force [N]):
+//   limit:    tau = -max(0, k (q - upper) + c q')  above upper, +max(0, k (lower - q) - c q')
+//             below lower: a penalty that only pushes back into the range, like a contact
+//   spring:   tau = -k (q - reference)
+//   damping:  tau = -c q'
+//   effort:   tau = constant (a motor torque or force)
+//   friction: tau = -mu(v) N r s/|s| through the (memoryless) friction-law strategy, with the
+//             slip speed v = r q' (revolute, r = pin radius) or v = q' (prismatic, r = 1), and
+//             the normal load N either the joint's reaction force (revolute: its magnitude;
+//             prismatic: its part normal to the axis) or a constant
+//   drive:    a rheonomic constraint q = f(t) (position) or q' = f(t) (velocity), with
+//             f(t) = c0 + c1 t + A sin(w t + phi)
+// and couplings (URDF mimic): q_follower = multiplier q_leader + offset, a constraint.
+// q = 0 where the joint frames coincide (the initial configuration for scene joints);
+// angles are wrapped to (-pi, pi], so limits and springs see |q| <= pi.
+// Not here: evaluating any of it (core/joint_forces.hpp, core/constraint_rows.hpp).
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "friction/friction_law.hpp"
+
+namespace tribo {
+
+struct JointLimit {
+  double lower = 0.0;      // [rad or m]
+  double upper = 0.0;      // [rad or m]
+  double stiffness = 0.0;  // [N m/rad or N/m]; 0: derived by ModelBuilder::build
+  double damping = 0.0;    // [N m s/rad or N s/m]; used with a derived stiffness when 0
+};
+
+struct JointSpring {
+  double stiffness = 0.0;  // [N m/rad or N/m]
+  double reference = 0.0;  // q where the spring is relaxed [rad or m]
+};
+
+enum class JointFrictionLoad { kReaction, kConstant };
+
+struct JointFriction {
+  std::shared_ptr<const friction::FrictionLaw> law;
+  JointFrictionLoad load = JointFrictionLoad::kReaction;
+  double normal_force = 0.0;  // constant load [N] (kConstant)
+  double radius = 1.0;        // revolute: pin radius [m]; prismatic: unused
+};
+
+// f(t) = c0 + c1 t + A sin(w t + phi), and its first two derivatives.
+struct DriveFunction {
+  double constant = 0.0;   // c0
+  double slope = 0.0;      // c1 [1/s]
+  double amplitude = 0.0;  // A
+  double frequency = 0.0;  // w [rad/s]
+  double phase = 0.0;      // phi [rad]
+
+  double value(double t) const {
+    return constant + slope * t + amplitude * std::sin(frequency * t + phase);
+  }
+  double rate(double t) const {
+    return slope + amplitude * frequency * std::cos(frequency * t + phase);
+  }
+  double acceleration(double t) const {
+    return -amplitude * frequency * frequency * std::sin(frequency * t + phase);
+  }
+  // Integral over [0, t].
+  double integral(double t) const {
+    const double periodic =
+        frequency != 0.0
+            ? amplitude * (std::cos(phase) - std::cos(frequency * t + phase)) / frequency
+            : amplitude * std::sin(phase) * t;
+    return constant * t + 0.5 * slope * t * t + periodic;
+  }
+};
+
+enum class DriveMode { kPosition, kVelocity };
+
+struct JointDrive {
+  DriveMode mode = DriveMode::kPosition;
+  DriveFunction function;
+
+  // Prescribed q(t), q'(t), q''(t); in velocity mode q(0) = 0.
+  double position(double t) const {
+    return mode == DriveMode::kPosition ? function.value(t) : function.integral(t);
+  }
+  double velocity(double t) const {
+    return mode == DriveMode::kPosition ? function.rate(t) : function.value(t);
+  }
+  double acceleration(double t) const {
+    return mode == DriveMode::kPosition ? function.acceleration(t) : function.rate(t);
+  }
+};
+
+struct JointElements {
+  std::optional<JointLimit> limit;
+  std::optional<JointSpring> spring;
+  double damping = 0.0;  // [N m s/rad or N s/m]
+  double effort = 0.0;   // [N m or N]
+  std::optional<JointFriction> friction;
+  std::optional<JointDrive> drive;
+
+  // True when a force (not a constraint) acts on the coordinate.
+  bool hasForces() const { return limit || spring || damping != 0.0 || effort != 0.0 || friction; }
+};
+
+// q_follower = multiplier * q_leader + offset between the coordinates of two revolute or
+// prismatic joints (multiplier in units of q_follower per unit of q_leader).
+struct JointCoupling {
+  std::string name;
+  int leader = -1;    // joint index
+  int follower = -1;  // joint index
+  double multiplier = 1.0;
+  double offset = 0.0;
+};
+
+}  // namespace tribo

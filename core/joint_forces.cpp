@@ -1,0 +1,103 @@
+#include "core/joint_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tribo {
+
+namespace {
+constexpr int kMaxFrictionIterations = 20;
+constexpr double kFrictionTolerance = 1e-12;
+}  // namespace
+
+JointForces::JointForces(const Model& model) : model_(model) {
+  for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
+    const Joint& joint = model.joints[j];
+    if (!hasScalarCoordinate(joint.type) || !joint.elements.hasForces()) continue;
+    Entry e;
+    e.joint = j;
+    e.coordinate = jointCoordinate(joint);
+    e.elements = &joint.elements;
+    entries_.push_back(e);
+    const auto& f = joint.elements.friction;
+    if (f && f->load == JointFrictionLoad::kReaction)
+      reaction_.push_back(static_cast<int>(entries_.size()) - 1);
+  }
+  delta_.assign(model.bodies.size(), {});
+}
+
+void JointForces::addGeneralized(const Entry& e, double tau, std::vector<Wrench>& out) const {
+  const BodyIndex p = e.coordinate.parent, c = e.coordinate.child;
+  if (!p.isWorld()) {
+    out[p.value].force += tau * e.value.j_parent.head<3>().transpose();
+    out[p.value].torque += tau * e.value.j_parent.tail<3>().transpose();
+  }
+  out[c.value].force += tau * e.value.j_child.head<3>().transpose();
+  out[c.value].torque += tau * e.value.j_child.tail<3>().transpose();
+}
+
+double JointForces::frictionTorque(const Entry& e, double load) const {
+  const JointFriction& f = *e.elements->friction;
+  const double r = e.coordinate.angular ? f.radius : 1.0;
+  const Vec3 slip(r * e.value.rate, 0.0, 0.0);
+  return r * friction::tangentialForce(*f.law, slip, load).x();
+}
+
+void JointForces::accumulate(const State& state, Workspace& ws) {
+  if (entries_.empty()) return;  // ws.joint_wrench stays as Dynamics made it: zero
+  for (auto& w : ws.joint_wrench) w.setZero();
+  const MotionView motion(state, ws.rotation);
+  for (Entry& e : entries_) {
+    const BodyMotion p = motion(e.coordinate.parent);
+    evaluateCoordinate(e.coordinate, p, motion(e.coordinate.child), e.value);
+    e.axis = p.rotation * e.coordinate.z_parent;
+    e.reaction_torque = 0.0;
+    const JointElements& el = *e.elements;
+    const double q = e.value.q, rate = e.value.rate;
+    double tau = el.effort - el.damping * rate;
+    if (el.spring) {
+      const double stretch = q - el.spring->reference;
+      tau -= el.spring->stiffness * (e.coordinate.angular ? wrapAngle(stretch) : stretch);
+    }
+    if (el.limit) {
+      const JointLimit& l = *el.limit;
+      if (q > l.upper) tau -= std::max(0.0, l.stiffness * (q - l.upper) + l.damping * rate);
+      if (q < l.lower) tau += std::max(0.0, l.stiffness * (l.lower - q) - l.damping * rate);
+    }
+    if (el.friction && el.friction->load == JointFrictionLoad::kConstant)
+      tau += frictionTorque(e, el.friction->normal_force);
+    addGeneralized(e, tau, ws.joint_wrench);
+  }
+}
+
+int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) {
+  if (reaction_.empty()) return 0;
+  int iterations = 0;
+  for (; iterations < kMaxFrictionIterations; ++iterations) {
+    for (auto& w : delta_) w.setZero();
+    double change = 0.0, largest = 0.0;
+    for (int index : reaction_) {
+      Entry& e = entries_[index];
+      const Vec3 f = solver.reactionForce(e.joint);
+      const double load = e.coordinate.angular ? f.norm() : (f - f.dot(e.axis) * e.axis).norm();
+      const double tau = frictionTorque(e, load);
+      const double d = tau - e.reaction_torque;
+      e.reaction_torque = tau;
+      change = std::max(change, std::abs(d));
+      largest = std::max(largest, std::abs(tau));
+      if (d != 0.0) {
+        addGeneralized(e, d, delta_);
+        addGeneralized(e, d, ws.joint_wrench);
+      }
+    }
+    if (change == 0.0) break;
+    solver.addForcesAndResolve(delta_, ws);
+    if (change <= kFrictionTolerance * (1.0 + largest)) {
+      ++iterations;
+      break;
+    }
+  }
+  return iterations;
+}
+
+}  // namespace tribo
