@@ -1,5 +1,7 @@
 #include "core/constraint_jacobian.hpp"
 
+#include <stdexcept>
+
 namespace tribo {
 
 void ConstraintJacobian::init(const std::vector<ConstraintRow>& rows, int body_count) {
@@ -41,9 +43,13 @@ void ConstraintJacobian::bindSlots(const MultiplierMatrix& matrix) {
   for (BodyRows& br : bodies_) {
     const int n = static_cast<int>(br.rows.size());
     br.slots.assign(n * (n + 1) / 2, -1);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j <= i; ++j)
-        br.slots[i * (i + 1) / 2 + j] = matrix.slot(br.rows[i], br.rows[j]);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j <= i; ++j) {
+        const int slot = matrix.slot(br.rows[i], br.rows[j]);
+        if (slot < 0) throw std::logic_error("ConstraintJacobian: an entry outside the pattern");
+        br.slots[i * (i + 1) / 2 + j] = slot;
+      }
+    }
   }
 }
 

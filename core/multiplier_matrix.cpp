@@ -15,7 +15,6 @@ void MultiplierMatrix::init(int n, const std::vector<std::pair<int, int>>& entri
       values_ = small_.data();
     } else {
       dense_.setZero(n, n);
-      dense_llt_ = Eigen::LLT<Eigen::MatrixXd>(n);
       values_ = dense_.data();
     }
     value_count_ = n * n;

@@ -9,7 +9,8 @@
 //   sparse:                 blocks of each joint's equations, block Cholesky in an
 //                           approximate-minimum-degree order (core/block_cholesky.hpp):
 //                           linear in the number of joints for chains and trees.
-// Nothing allocates after init(). Bench: bench/core/chain_bench.cpp (dense vs sparse).
+// Nothing allocates after the first factorization. Bench: bench/core/chain_bench.cpp (dense vs
+// sparse).
 // Not here: what the entries are (core/constraint_jacobian.hpp), redundancy.
 #pragma once
 
