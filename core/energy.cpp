@@ -44,9 +44,6 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
     // drives) count as sources: their work enters or leaves through the joints.
     for (const Wrench* j : {&ws.constraint_wrench[b], &ws.joint_wrench[b]})
       a.input_power += j->force.dot(s.velocity) + j->torque.dot(s.angular_velocity);
-    // Joint springs, limits, dampers, efforts and friction (core/joint_forces.hpp): sources.
-    const Wrench& q = ws.joint_wrench[b];
-    a.input_power += q.force.dot(s.velocity) + q.torque.dot(s.angular_velocity);
   }
   for (const SpringDamper& sp : model.springs) {
     auto end = [&](BodyIndex b, const Vec3& local) {
