@@ -11,8 +11,7 @@ contact::CollisionDetector makeDetector(const Model& model) {
   for (const auto& g : model.geometries) shapes.push_back(g.shape);
   std::vector<std::pair<int, int>> pairs;
   for (const auto& p : model.contact_pairs) pairs.emplace_back(p.geometry_a, p.geometry_b);
-  return contact::CollisionDetector(std::move(shapes), std::move(pairs),
-                                    model.options.collision);
+  return contact::CollisionDetector(std::move(shapes), std::move(pairs), model.options.collision);
 }
 
 contact::GeometryMotion motionOf(const Model& model, const State& state, const Workspace& ws,
@@ -150,10 +149,10 @@ void Dynamics::accumulateContacts(const State& state) {
     }
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
     const Vec3 f = rec.force();
-    if (!b.isWorld()) applyAt(ws_.contact_wrench[b.value], state.bodies[b.value].position,
-                              cp.position, f);
-    if (!a.isWorld()) applyAt(ws_.contact_wrench[a.value], state.bodies[a.value].position,
-                              cp.position, -f);
+    if (!b.isWorld())
+      applyAt(ws_.contact_wrench[b.value], state.bodies[b.value].position, cp.position, f);
+    if (!a.isWorld())
+      applyAt(ws_.contact_wrench[a.value], state.bodies[a.value].position, cp.position, -f);
   }
 }
 
@@ -219,7 +218,8 @@ const Workspace& Dynamics::evaluate(const State& state) {
     const Vec3 torque =
         ws_.contact_wrench[b].torque + ws_.spring_wrench[b].torque + ws_.joint_wrench[b].torque;
     const Mat3& r = ws_.rotation[b];
-    const Vec3 gyro = s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));
+    const Vec3 gyro =
+        s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));
     ws_.linear_acceleration[b] = force / body.mass + m.options.gravity;
     ws_.angular_acceleration[b] = ws_.inv_inertia_world[b] * (torque - gyro);
   }

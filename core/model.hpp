@@ -14,8 +14,8 @@
 #include "contact/contact_force.hpp"
 #include "contact/shape.hpp"
 #include "core/body.hpp"
-#include "core/force_element.hpp"
 #include "core/constraint_options.hpp"
+#include "core/force_element.hpp"
 #include "core/joint.hpp"
 
 namespace tribo {
@@ -33,8 +33,8 @@ std::string integratorName(IntegratorType type);
 struct SimulationOptions {
   Vec3 gravity{0.0, 0.0, -9.81};  // [m/s^2]
   IntegratorType integrator = IntegratorType::kRk4;
-  double time_step = 1e-3;   // [s]; see README for the measured speed/accuracy trade
-  double duration = 10.0;    // [s]
+  double time_step = 1e-3;  // [s]; see README for the measured speed/accuracy trade
+  double duration = 10.0;   // [s]
   // Baumgarte stabilization: Phi'' + 2 alpha Phi' + beta^2 Phi = 0 [1/s].
   double baumgarte_alpha = 20.0;
   double baumgarte_beta = 20.0;

@@ -63,8 +63,8 @@ BodyIndex ModelBuilder::addBody(const Body& body) {
   if (body.kind == BodyKind::kDynamic) {
     if (!std::isfinite(body.mass) || body.mass <= 0.0)
       throw ModelError(who + ": mass must be > 0 (got " + str(body.mass) + ")");
-    if (!body.inertia.allFinite() || (body.inertia - body.inertia.transpose()).norm() >
-                                         1e-9 * body.inertia.norm())
+    if (!body.inertia.allFinite() ||
+        (body.inertia - body.inertia.transpose()).norm() > 1e-9 * body.inertia.norm())
       throw ModelError(who + ": inertia must be a finite symmetric matrix");
     Eigen::SelfAdjointEigenSolver<Mat3> eig(body.inertia);
     const Vec3 p = eig.eigenvalues();
@@ -91,8 +91,8 @@ Body ModelBuilder::checkedBody(BodyIndex index, const std::string& what) const {
   return model_.bodies[index.value];
 }
 
-int ModelBuilder::addGeometry(const std::string& name, BodyIndex body,
-                              const contact::Shape& shape, const Eigen::Isometry3d& local_pose) {
+int ModelBuilder::addGeometry(const std::string& name, BodyIndex body, const contact::Shape& shape,
+                              const Eigen::Isometry3d& local_pose) {
   const std::string who = "geometry '" + name + "'";
   checkedBody(body, who);
   if (findGeometry(name)) throw ModelError(who + ": a geometry of that name already exists");

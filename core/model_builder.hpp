@@ -70,8 +70,7 @@ class ModelBuilder {
   // Spring-damper with attachment points in world coordinates at the initial
   // configuration; a negative rest length means "the initial distance".
   void addSpring(const std::string& name, BodyIndex a, const Vec3& point_a_world, BodyIndex b,
-                 const Vec3& point_b_world, double stiffness, double damping,
-                 double rest_length);
+                 const Vec3& point_b_world, double stiffness, double damping, double rest_length);
 
   SimulationOptions& options() { return options_; }
   std::optional<BodyIndex> findBody(const std::string& name) const;

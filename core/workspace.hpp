@@ -27,19 +27,19 @@ struct Workspace {
   std::vector<Mat3> inv_inertia_world;
   std::vector<Eigen::Isometry3d> geometry_poses;  // world
   std::vector<contact::ContactPoint> contact_points;
-  std::vector<contact::ContactRecord> contacts;   // one per contact point
+  std::vector<contact::ContactRecord> contacts;  // one per contact point
   // Per body, by source (gravity is m g, not stored).
   std::vector<Wrench> contact_wrench;
   std::vector<Wrench> spring_wrench;
-  std::vector<Wrench> joint_wrench;               // joint limits, springs, dampers, friction
-  std::vector<Wrench> constraint_wrench;          // J^T lambda
+  std::vector<Wrench> joint_wrench;       // joint limits, springs, dampers, friction
+  std::vector<Wrench> constraint_wrench;  // J^T lambda
   // Per body, world: the result of the evaluation (zero for kinematic bodies).
   std::vector<Vec3> linear_acceleration;
   std::vector<Vec3> angular_acceleration;
   // Constraint measures at the evaluated state.
-  double max_constraint_error = 0.0;      // max |Phi| [m or -]
-  double max_constraint_rate_error = 0.0; // max |J v|
-  double max_penetration = 0.0;           // [m]
+  double max_constraint_error = 0.0;       // max |Phi| [m or -]
+  double max_constraint_rate_error = 0.0;  // max |J v|
+  double max_penetration = 0.0;            // [m]
 };
 
 }  // namespace tribo

@@ -54,9 +54,9 @@
 #include <optional>
 #include <sstream>
 
-#include "core/model_builder.hpp"
 #include "contact/mesh_loader.hpp"
 #include "contact/shape_inertia.hpp"
+#include "core/model_builder.hpp"
 #include "friction/friction_law.hpp"
 
 namespace tribo::io {
@@ -684,8 +684,8 @@ class Loader {
   }
 
   contact::NormalLaw readNormalLaw(const Value& v) {
-    const Map m(v, {"law", "stiffness", "damping", "exponent", "max_depth", "restitution",
-                    "impact_speed"});
+    const Map m(
+        v, {"law", "stiffness", "damping", "exponent", "max_depth", "restitution", "impact_speed"});
     contact::NormalLaw law;
     if (auto x = m.get("law"))
       law.type = guarded(*x, [&] { return contact::normalLawFromName(x->text()); });
@@ -694,8 +694,7 @@ class Loader {
                     const std::string& which) {
       const auto x = m.get(key);
       if (x && std::find(types.begin(), types.end(), law.type) == types.end())
-        x->fail(std::string(key) + " applies to law " + which + " only (this law is " + name +
-                ")");
+        x->fail(std::string(key) + " applies to law " + which + " only (this law is " + name + ")");
       return x;
     };
     using T = contact::NormalLawType;
@@ -712,9 +711,8 @@ class Loader {
       // alpha from the exact Hunt-Crossley restitution relation (contact/normal_law.hpp).
       if (!e || !speed) v.fail("restitution and impact_speed go together");
       if (m.get("damping")) v.fail("give damping or restitution, not both");
-      law.damping = guarded(*e, [&] {
-        return contact::huntCrossleyDamping(e->number(), speed->positive());
-      });
+      law.damping =
+          guarded(*e, [&] { return contact::huntCrossleyDamping(e->number(), speed->positive()); });
     }
     guarded(v, [&] { law.validate(); });
     return law;

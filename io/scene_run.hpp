@@ -1,10 +1,10 @@
 // Runs a loaded scene from t = 0 to its duration, recording at the output interval, and
 // analyses the observed coordinate (limit-cycle amplitude, period, time to 98% of the
 // amplitude, stuck fraction). Before the run, the step is checked against the a-priori
-// stability limit (core/stability.hpp); exceeding it is a warning carried in the result. The loop does no I/O. A diverged run stops at the failing
-// step and is returned with complete = false and the simulator's message; what was
-// recorded up to the last good step is kept.
-// Not here: writing files (io/result_writer.hpp), argument parsing (apps/).
+// stability limit (core/stability.hpp); exceeding it is a warning carried in the result. The loop
+// does no I/O. A diverged run stops at the failing step and is returned with complete = false and
+// the simulator's message; what was recorded up to the last good step is kept. Not here: writing
+// files (io/result_writer.hpp), argument parsing (apps/).
 #pragma once
 
 #include <functional>
@@ -25,10 +25,10 @@ struct RunResult {
   double wall_seconds = 0.0;  // time spent stepping (analysis excluded)
   double simulated_seconds = 0.0;
   TrajectoryRecorder trajectory;
-  OscillationSummary summary;  // of output.summary's body and coordinate
-  StabilityReport stability;   // a-priori step limit of the model
+  OscillationSummary summary;         // of output.summary's body and coordinate
+  StabilityReport stability;          // a-priori step limit of the model
   std::vector<std::string> warnings;  // e.g. the step exceeds the stability limit
-  StepStatus stop;  // when !complete: the failed step's time, body and quantity
+  StepStatus stop;                    // when !complete: the failed step's time, body and quantity
 };
 
 // An optional watch over a run: every `interval` simulated seconds (> 0) `stop` sees the

@@ -31,9 +31,8 @@ void BM_BeltScene(benchmark::State& st, const std::string& integrator) {
     }
     benchmark::DoNotOptimize(sim.state().bodies.back().position.x());
   }
-  st.counters["sim_s_per_wall_s"] =
-      benchmark::Counter(kSimulated * static_cast<double>(st.iterations()),
-                         benchmark::Counter::kIsRate);
+  st.counters["sim_s_per_wall_s"] = benchmark::Counter(
+      kSimulated * static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
   st.counters["steps_per_s"] =
       benchmark::Counter(static_cast<double>(steps) * static_cast<double>(st.iterations()),
                          benchmark::Counter::kIsRate);
@@ -42,7 +41,9 @@ void BM_BeltScene(benchmark::State& st, const std::string& integrator) {
 void BM_Baseline_OneDofRk4(benchmark::State& st) {
   const double dt = static_cast<double>(st.range(0)) * 1e-6;
   const auto law = tribo::friction::makeFrictionLaw(
-      {"roh_yoo", {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3}}, {}});
+      {"roh_yoo",
+       {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3}},
+       {}});
   const tribo::test::OneDofBelt belt{10.0, 300.0, 1.5, 9.81, law.get()};
   const long steps = std::lround(kSimulated / dt);
   for (auto _ : st) {
@@ -50,21 +51,34 @@ void BM_Baseline_OneDofRk4(benchmark::State& st) {
     belt.run(x, v, dt, steps, [](double, double, double) {});
     benchmark::DoNotOptimize(x);
   }
-  st.counters["sim_s_per_wall_s"] =
-      benchmark::Counter(kSimulated * static_cast<double>(st.iterations()),
-                         benchmark::Counter::kIsRate);
+  st.counters["sim_s_per_wall_s"] = benchmark::Counter(
+      kSimulated * static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
   st.counters["steps_per_s"] =
       benchmark::Counter(static_cast<double>(steps) * static_cast<double>(st.iterations()),
                          benchmark::Counter::kIsRate);
 }
 
-BENCHMARK(BM_Baseline_OneDofRk4)->Name("BM_Baseline_OneDofRk4")->Arg(1000)->Arg(250)
+BENCHMARK(BM_Baseline_OneDofRk4)
+    ->Name("BM_Baseline_OneDofRk4")
+    ->Arg(1000)
+    ->Arg(250)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_BeltScene, rk4, std::string("rk4"))
-    ->Name("BM_BeltScene/rk4")->Arg(8000)->Arg(4000)->Arg(2000)->Arg(1000)->Arg(500)->Arg(250)
+    ->Name("BM_BeltScene/rk4")
+    ->Arg(8000)
+    ->Arg(4000)
+    ->Arg(2000)
+    ->Arg(1000)
+    ->Arg(500)
+    ->Arg(250)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_BeltScene, semi_implicit_euler, std::string("semi_implicit_euler"))
-    ->Name("BM_BeltScene/semi_implicit_euler")->Arg(2000)->Arg(1000)->Arg(500)->Arg(250)->Arg(100)
+    ->Name("BM_BeltScene/semi_implicit_euler")
+    ->Arg(2000)
+    ->Arg(1000)
+    ->Arg(500)
+    ->Arg(250)
+    ->Arg(100)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

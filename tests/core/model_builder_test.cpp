@@ -1,8 +1,9 @@
 // ModelBuilder rejects what would make a simulation meaningless, with a message that names
 // the element and what was expected.
+#include "core/model_builder.hpp"
+
 #include <gtest/gtest.h>
 
-#include "core/model_builder.hpp"
 #include "test_models.hpp"
 
 namespace tribo {
@@ -67,13 +68,13 @@ TEST(ModelBuilder, RejectsBadJointsSpringsAndPairs) {
   const int mat = b.addMaterial(test::coulombMaterial(0.3, 1e5, 0.0));
   EXPECT_NE(errorOf([&] { b.addContactPair(g1, g2, mat); }).find("(ground, ceiling)"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { b.addGeometry("bad", a, contact::Shape::box(Vec3(0.1, 0, 0.1))); })
-                .find("geometry 'bad': box half extents must be > 0"),
+  EXPECT_NE(errorOf([&] {
+              b.addGeometry("bad", a, contact::Shape::box(Vec3(0.1, 0, 0.1)));
+            }).find("geometry 'bad': box half extents must be > 0"),
             std::string::npos);
   contact::Material soft = test::coulombMaterial(0.3, 1e5, 0.0);
   soft.normal.stiffness = 0.0;
-  EXPECT_NE(errorOf([&] { b.addMaterial(soft); }).find("stiffness must be > 0"),
-            std::string::npos);
+  EXPECT_NE(errorOf([&] { b.addMaterial(soft); }).find("stiffness must be > 0"), std::string::npos);
 }
 
 TEST(ModelBuilder, RejectsBadOptionsAndEmptyModels) {
@@ -92,8 +93,7 @@ TEST(ModelBuilder, JointFramesCoincideInTheInitialConfiguration) {
   body.position = Vec3(1, 2, 3);
   body.orientation = Quat(Eigen::AngleAxisd(0.7, Vec3(1, 1, 0).normalized()));
   const BodyIndex a = b.addBody(body);
-  b.addJoint("j", JointType::kRevolute, BodyIndex::world(), a, Vec3(0.5, 0.5, 0.5),
-             Vec3(0, 0, 2));
+  b.addJoint("j", JointType::kRevolute, BodyIndex::world(), a, Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 2));
   const auto model = b.build();
   const Joint& j = model->joints[0];
   const Mat3 r = body.orientation.toRotationMatrix();

@@ -1,11 +1,12 @@
 // The a-priori step limit against the integrators' known stability boundaries, and against
 // what actually happens when the model is stepped just below and just above it.
+#include "core/stability.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/simulator.hpp"
-#include "core/stability.hpp"
 #include "test_models.hpp"
 
 namespace tribo {
@@ -19,7 +20,8 @@ TEST(StableStep, MatchesKnownBoundariesOfTheUndampedOscillator) {
 }
 
 TEST(StableStep, PureDecayMatchesTheRealAxisBoundary) {
-  // v' = -r v: explicit Euler h r <= 2; RK4 h r <= 2.785293563 (root of 1+z+z^2/2+z^3/6+z^4/24 = 1).
+  // v' = -r v: explicit Euler h r <= 2; RK4 h r <= 2.785293563 (root of 1+z+z^2/2+z^3/6+z^4/24 =
+  // 1).
   const double r = 1e4;
   EXPECT_NEAR(stableStep(IntegratorType::kSemiImplicitEuler, 0.0, r) * r, 2.0, 1e-6);
   EXPECT_NEAR(stableStep(IntegratorType::kRk4, 0.0, r) * r, 2.785293563, 1e-6);
@@ -27,8 +29,8 @@ TEST(StableStep, PureDecayMatchesTheRealAxisBoundary) {
 
 TEST(StabilityEstimate, NamesTheStiffestElementAndPredictsTheContactLimit) {
   const double m = 1.0, k = 1e6;
-  ModelBuilder b = test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.3, k, 0.0,
-                                     IntegratorType::kRk4, 1e-3, -0.05);
+  ModelBuilder b = test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.3, k, 0.0, IntegratorType::kRk4,
+                                     1e-3, -0.05);
   const auto model = b.build();
   const StabilityReport report = estimateStableStep(*model);
   EXPECT_NE(report.limit.element.find("contact pair (ground, box_shape)"), std::string::npos)
@@ -44,8 +46,8 @@ TEST(StabilityEstimate, UndampedContactBouncesStablyBelowAndBlowsUpAboveTheLimit
   // the bounce height must stay bounded below the limit and grow above it.
   const double m = 1.0, k = 1e6;
   auto run = [&](double h) {
-    ModelBuilder b = test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.0, k, 0.0,
-                                       IntegratorType::kRk4, h, -0.5);
+    ModelBuilder b =
+        test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.0, k, 0.0, IntegratorType::kRk4, h, -0.5);
     Simulator sim(b.build());
     double vmax = 0;
     for (int i = 0; i < std::lround(0.5 / h); ++i) {
@@ -54,8 +56,8 @@ TEST(StabilityEstimate, UndampedContactBouncesStablyBelowAndBlowsUpAboveTheLimit
     }
     return vmax;
   };
-  ModelBuilder probe = test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.0, k, 0.0,
-                                         IntegratorType::kRk4, 1e-3);
+  ModelBuilder probe =
+      test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.0, k, 0.0, IntegratorType::kRk4, 1e-3);
   const double limit = estimateStableStep(*probe.build()).limit.max_step;
   EXPECT_NEAR(limit * std::sqrt(4 * k / m), 2 * std::sqrt(2.0), 1e-6);
   EXPECT_LT(run(0.5 * limit), 0.51);  // never faster than the impact speed (plus gravity)
