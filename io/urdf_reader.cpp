@@ -167,7 +167,44 @@ class Reader {
           throw UrdfError(at(p->Row()) + who + ": " + role + " link '" + link + "' is not defined");
       }
     }
+    checkTree(index);
     return index;
+  }
+
+  // A URDF is a tree: every link is the child of at most one joint, and following parents
+  // from any link ends at a root. Checked here, with lines, rather than left to urdfdom,
+  // whose parser also leaks the link objects of a cyclic file (they own each other).
+  void checkTree(const XmlIndex& index) const {
+    std::map<std::string, const TiXmlElement*> parent_joint;  // child link -> its joint
+    for (const auto& [name, e] : index.joints) {
+      const std::string child = e->FirstChildElement("child")->Attribute("link");
+      const auto [it, fresh] = parent_joint.emplace(child, e);
+      if (!fresh)
+        throw UrdfError(at(e->Row()) + "joint '" + name + "': link '" + child +
+                        "' is already the child of joint '" + it->second->Attribute("name") +
+                        "' (line " + std::to_string(it->second->Row()) +
+                        "); a URDF is a tree, each link has one parent");
+    }
+    for (const auto& [start, link_element] : index.links) {
+      std::vector<std::string> path{start};
+      std::set<std::string> seen{start};
+      for (auto it = parent_joint.find(start); it != parent_joint.end();
+           it = parent_joint.find(path.back())) {
+        const std::string parent = it->second->FirstChildElement("parent")->Attribute("link");
+        if (seen.count(parent)) {
+          std::string loop = parent;
+          for (auto p = path.rbegin(); p != path.rend(); ++p) {
+            loop += " -> " + *p;
+            if (*p == parent) break;
+          }
+          throw UrdfError(at(it->second->Row()) + "no root link: joint '" +
+                          it->second->Attribute("name") + "' closes the kinematic loop " + loop +
+                          " (a URDF is a tree; close loops in a scene file instead)");
+        }
+        path.push_back(parent);
+        seen.insert(parent);
+      }
+    }
   }
 
   void addLink(UrdfRobot& r, const urdf::LinkConstSharedPtr& link, const XmlIndex& index) {

@@ -117,13 +117,31 @@ TEST_F(UrdfReader, MissingParentLinkIsNamed) {
       << e;
 }
 
-TEST_F(UrdfReader, CyclicTreeIsRefusedWithUrdfdomsReason) {
+TEST_F(UrdfReader, CyclicTreeIsRefusedNamingTheJointThatClosesTheLoop) {
   const std::string e = errorOf(write("loop.urdf", R"(<robot name="loop">
-  <link name="a"/><link name="b"/>
+  <link name="a"/><link name="b"/><link name="c"/>
   <joint name="ab" type="fixed"><parent link="a"/><child link="b"/></joint>
-  <joint name="ba" type="fixed"><parent link="b"/><child link="a"/></joint>
+  <joint name="bc" type="fixed"><parent link="b"/><child link="c"/></joint>
+  <joint name="ca" type="fixed"><parent link="c"/><child link="a"/></joint>
 </robot>)"));
-  EXPECT_NE(e.find("No root link found"), std::string::npos) << e;
+  EXPECT_NE(e.find("loop.urdf:"), std::string::npos) << e;
+  EXPECT_NE(e.find("no root link"), std::string::npos) << e;
+  // Following parents from 'a' (the first link by name) comes back to it through 'ab'.
+  EXPECT_NE(
+      e.find("loop.urdf:3: no root link: joint 'ab' closes the kinematic loop a -> b -> c -> a"),
+      std::string::npos)
+      << e;
+}
+
+TEST_F(UrdfReader, LinkWithTwoParentJointsIsRefused) {
+  const std::string e = errorOf(write("two.urdf", R"(<robot name="two">
+  <link name="a"/><link name="b"/><link name="c"/>
+  <joint name="ac" type="fixed"><parent link="a"/><child link="c"/></joint>
+  <joint name="bc" type="fixed"><parent link="b"/><child link="c"/></joint>
+</robot>)"));
+  EXPECT_NE(e.find("two.urdf:4: joint 'bc': link 'c' is already the child of joint 'ac' (line 3)"),
+            std::string::npos)
+      << e;
 }
 
 TEST_F(UrdfReader, NegativeMassAndDubiousInertiasAreFound) {
