@@ -18,7 +18,7 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tribo run SCENE.yaml --out DIR [--set NAME=VALUE ...]\n"
+    "usage: tribo run SCENE.yaml --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "       tribo info FILE.urdf [--package-path DIR ...]\n"
     "       tribo sweep SCENE.yaml --out DIR --grid NAME=START:STOP:COUNT | --list NAME=V1,... "
@@ -91,7 +91,7 @@ int run(const std::vector<std::string>& args) {
   try {
     const bool urdf = scene_path.size() > 5 && scene_path.substr(scene_path.size() - 5) == ".urdf";
     scene = urdf ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides)
-                 : tribo::io::loadScene(scene_path, overrides);
+                 : tribo::io::loadScene(scene_path, overrides, package_paths);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;

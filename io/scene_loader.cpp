@@ -15,6 +15,17 @@
 //           shape: box (size: 3 edges) | sphere (radius) | cylinder | capsule | cone (radius,
 //           length along z) | halfspace | convex_mesh | mesh (file: STL/OBJ/DAE, relative
 //           to the scene file; [scale: number or 3 numbers])
+//   [robots]: - file [prefix] [position] [orientation | rpy] [base: auto|fixed|floating]
+//               [joint_positions: {JOINT: value}] [joint_velocities: {JOINT: value}]
+//               [package_paths: [DIR, ...]] [collision_group]
+//             file: a URDF, relative to the scene file (package:// meshes through
+//             package_paths, relative to the scene file, then --package-path, then
+//             ROS_PACKAGE_PATH); position/orientation place its root link; bodies, joints and
+//             geometries are named prefix + the URDF name (a body after the first link of a
+//             group welded by fixed joints), each link's geometry has surface prefix + link
+//             name. A link's Gazebo tags (mu1 -> Coulomb mu, kp, kd -> a linear normal law)
+//             apply against the surfaces of the bodies: section where the scene gives no
+//             material for that surface pair (derived from the default material).
 //   [joints]: - name type parent child [anchor] [axis] [axis2]
 //               [limit: {lower, upper, [stiffness], [damping]}] [spring: {stiffness, [reference]}]
 //               [damping] [effort] [friction: {law, [load: reaction|constant], [normal_force],
@@ -48,16 +59,21 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "contact/mesh_loader.hpp"
 #include "contact/shape_inertia.hpp"
 #include "core/model_builder.hpp"
 #include "friction/friction_law.hpp"
+#include "io/urdf_model.hpp"
+#include "io/urdf_reader.hpp"
 
 namespace tribo::io {
 namespace {
@@ -251,6 +267,20 @@ struct GeometrySpec {
   std::uint32_t mask = 0xffffffffu;
 };
 
+// A collision filter bit set.
+std::uint32_t bitSet(const Value& x) {
+  const double b = x.number();
+  if (b != std::floor(b) || b < 0 || b > 4294967295.0)
+    x.fail("expected a whole number in [0, 4294967295] (a bit set), found " + x.found());
+  return static_cast<std::uint32_t>(b);
+}
+
+// A robot link surface whose Gazebo tags still need their materials (after materials:).
+struct GazeboSurface {
+  Value at;
+  UrdfModelResult::Surface surface;
+};
+
 struct LawEntry {
   Value at;
   friction::LawSpec spec;
@@ -259,16 +289,21 @@ struct LawEntry {
 
 class Loader {
  public:
-  Loader(std::string file, const YAML::Node& root) : file_(std::move(file)), root_(root) {}
+  Loader(std::string file, const YAML::Node& root, std::vector<std::string> package_paths)
+      : file_(std::move(file)), root_(root), package_paths_(std::move(package_paths)) {}
 
   Scene load(const std::vector<std::string>& overrides) {
     const Value root(file_, params_, root_, "");
-    const Map m(root, {"parameters", "simulation", "bodies", "joints", "springs", "friction_laws",
-                       "materials", "contacts", "output"});
+    const Map m(root, {"parameters", "simulation", "bodies", "robots", "joints", "springs",
+                       "friction_laws", "materials", "contacts", "output"});
     if (auto p = m.get("parameters")) readParameters(*p);
     params_.applyOverrides(overrides, file_);
     if (auto s = m.get("simulation")) readSimulation(*s);
-    for (const Value& b : m.required("bodies").items("bodies")) readBody(b);
+    const auto robots = m.get("robots");
+    if (auto b = robots ? m.get("bodies") : m.required("bodies"))
+      for (const Value& v : b->items("bodies", robots.has_value())) readBody(v);
+    if (robots)
+      for (const Value& v : robots->items("robots")) readRobot(v);
     if (auto j = m.get("joints"))
       for (const Value& v : j->items("joints", true)) readJoint(v);
     if (auto s = m.get("springs"))
@@ -277,6 +312,7 @@ class Loader {
     readJointReferences();
     if (auto mat = m.get("materials"))
       for (const Value& v : mat->items("materials", true)) readMaterial(v);
+    applyGazeboTags();
     if (auto c = m.get("contacts"))
       for (const Value& v : c->items("contacts", true)) readContact(v);
     Scene scene;
@@ -288,6 +324,7 @@ class Loader {
       throw SceneError({file_}, "", e.what());
     }
     scene.parameters = params_.values();
+    scene.notes = notes_;
     return scene;
   }
 
@@ -389,6 +426,7 @@ class Loader {
       const int id =
           guarded(g.at, [&] { return builder_.addGeometry(g.name, index, g.shape, g.pose); });
       builder_.setGeometrySurface(id, g.surface);
+      body_surfaces_.insert(g.surface);
       builder_.setCollisionFilter(id, g.group, g.mask);
       geometry_names_.push_back(g.name);
     }
@@ -455,17 +493,90 @@ class Loader {
       }
     }
     if (auto x = m.get("surface")) g.surface = x->text();
-    auto bits = [](const Value& x) {
-      const double b = x.number();
-      if (b != std::floor(b) || b < 0 || b > 4294967295.0)
-        x.fail("expected a whole number in [0, 4294967295] (a bit set), found " + x.found());
-      return static_cast<std::uint32_t>(b);
-    };
-    if (auto x = m.get("collision_group")) g.group = bits(*x);
-    if (auto x = m.get("collision_mask")) g.mask = bits(*x);
+    if (auto x = m.get("collision_group")) g.group = bitSet(*x);
+    if (auto x = m.get("collision_mask")) g.mask = bitSet(*x);
     g.pose.translation() = m.vec3("position", Vec3::Zero());
     g.pose.linear() = orientation(m).toRotationMatrix();
     return g;
+  }
+
+  void readRobot(const Value& v) {
+    const Map m(v, {"file", "prefix", "position", "orientation", "rpy", "base", "joint_positions",
+                    "joint_velocities", "package_paths", "collision_group"});
+    const Value file = m.required("file");
+    const std::filesystem::path folder = std::filesystem::path(file_).parent_path();
+    std::filesystem::path path(file.text());
+    if (path.is_relative()) path = folder / path;
+    std::vector<std::string> packages;
+    if (auto p = m.get("package_paths"))
+      for (const Value& item : p->items("package folders")) {
+        const std::filesystem::path dir(item.text());
+        packages.push_back((dir.is_relative() ? folder / dir : dir).string());
+      }
+    packages.insert(packages.end(), package_paths_.begin(), package_paths_.end());
+    UrdfRobot robot;
+    try {
+      robot = readUrdf(path.string(), PackagePaths::withEnvironment(packages));
+    } catch (const UrdfError& e) {
+      file.fail(e.what());
+    }
+    UrdfPlacement placement;
+    if (auto x = m.get("prefix")) placement.prefix = x->text();
+    placement.base.translation() = m.vec3("position", Vec3::Zero());
+    placement.base.linear() = orientation(m).toRotationMatrix();
+    if (auto x = m.get("base"))
+      placement.base_mode =
+          std::array{UrdfPlacement::Base::kAuto, UrdfPlacement::Base::kFixed,
+                     UrdfPlacement::Base::kFloating}[x->choice({"auto", "fixed", "floating"})];
+    auto joint_values = [&](const char* key, std::map<std::string, double>& out) {
+      if (auto x = m.get(key)) {
+        const Map values(*x, {});
+        for (const auto& [name, value] : values.entries()) out[name] = value.number();
+      }
+    };
+    joint_values("joint_positions", placement.joint_positions);
+    joint_values("joint_velocities", placement.joint_velocities);
+    if (auto x = m.get("collision_group")) placement.collision_group = bitSet(*x);
+    const UrdfModelResult added =
+        guarded(v, [&] { return addUrdfRobot(builder_, robot, placement); });
+    for (const auto& note : added.notes)
+      notes_.push_back(v.path() + " (" + file.text() +
+                       (placement.prefix.empty() ? "" : ", prefix " + placement.prefix) +
+                       "): " + note);
+    for (const auto& s : added.surfaces)
+      if (s.contact.mu1 || s.contact.kp || s.contact.kd) gazebo_surfaces_.push_back({v, s});
+  }
+
+  // Gives each robot link with Gazebo contact tags its own material against every surface of
+  // the bodies: section, unless the scene names a material for that pair: the default
+  // material with the friction law replaced by Coulomb at mu1 (tanh-regularized at 0.01 m/s,
+  // as for `tribo run ROBOT.urdf`) and the normal law by a linear one of stiffness kp and
+  // damping kd (default: critical for the link's body on 4 points).
+  void applyGazeboTags() {
+    if (default_material_.empty()) return;  // nothing to derive from; pairs need materials
+    const contact::Material& base = material_values_.at(default_material_);
+    for (const auto& [at, s] : gazebo_surfaces_) {
+      contact::Material material = base;
+      if (s.contact.mu1)
+        material.friction = guarded(at, [&] {
+          return friction::makeFrictionLaw(
+              {"coulomb", {{"mu", *s.contact.mu1}, {"v_eps", 1e-2}}, {{"regularization", "tanh"}}});
+        });
+      if (s.contact.kp || s.contact.kd) {
+        const double k = s.contact.kp.value_or(base.normal.stiffness);
+        const double c =
+            s.contact.kd.value_or(2.0 * std::sqrt(k * std::max(s.body_mass, 1e-3) / 4.0));
+        material.normal = contact::NormalLaw{};
+        material.normal.type = contact::NormalLawType::kLinear;
+        material.normal.stiffness = k;
+        material.normal.damping = c;
+        guarded(at, [&] { material.normal.validate(); });
+      }
+      const int index = guarded(at, [&] { return builder_.addMaterial(material); });
+      for (const std::string& other : body_surfaces_)
+        if (!surface_pairs_.count({std::min(s.name, other), std::max(s.name, other)}))
+          guarded(at, [&] { builder_.addSurfacePairMaterial(s.name, other, index); });
+    }
   }
 
   BodyIndex body(const Value& v) const {
@@ -666,6 +777,7 @@ class Loader {
     material.friction = law.law;
     const int index = guarded(v, [&] { return builder_.addMaterial(material); });
     materials_[name] = index;
+    material_values_[name] = material;
     if (auto d = m.get("default"); d && d->flag()) {
       if (!default_material_.empty())
         d->fail("material '" + default_material_ + "' is already the default");
@@ -679,6 +791,7 @@ class Loader {
         const auto both = item.items("surface names");
         const std::string a = both[0].text(), b = both[1].text();
         guarded(item, [&] { builder_.addSurfacePairMaterial(a, b, index); });
+        surface_pairs_.insert({std::min(a, b), std::max(a, b)});
       }
     }
   }
@@ -766,15 +879,22 @@ class Loader {
   std::vector<std::pair<int, Value>> pending_friction_;  // joint index, its friction block
   std::vector<std::pair<int, Value>> pending_mimic_;     // joint index, its mimic block
   std::string default_material_;  // name of the material marked default, if any
+  std::map<std::string, contact::Material> material_values_;     // by name
+  std::set<std::pair<std::string, std::string>> surface_pairs_;  // given a material, sorted
+  std::set<std::string> body_surfaces_;  // surfaces of the bodies: section's geometry
+  std::vector<GazeboSurface> gazebo_surfaces_;
+  std::vector<std::string> package_paths_;  // --package-path folders
+  std::vector<std::string> notes_;
 };
 
 }  // namespace
 
 Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
-                          const std::vector<std::string>& overrides) {
+                          const std::vector<std::string>& overrides,
+                          const std::vector<std::string>& package_paths) {
   try {
     const YAML::Node root = YAML::Load(yaml);
-    return Loader(name_for_errors, root).load(overrides);
+    return Loader(name_for_errors, root, package_paths).load(overrides);
   } catch (const YAML::Exception& e) {  // syntax errors, and any the reader did not foresee
     const int line = e.mark.line < 0 ? 0 : e.mark.line + 1;
     const int column = e.mark.column < 0 ? 0 : e.mark.column + 1;
@@ -782,14 +902,15 @@ Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_e
   }
 }
 
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
+                const std::vector<std::string>& package_paths) {
   std::error_code ec;
   std::ifstream in(path);
   if (!std::filesystem::is_regular_file(path, ec) || !in)
     throw SceneError("cannot open scene file '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
-  return loadSceneFromString(text.str(), path, overrides);
+  return loadSceneFromString(text.str(), path, overrides, package_paths);
 }
 
 }  // namespace tribo::io

@@ -2,13 +2,15 @@
 // materials, contact pairs and output, turned into a validated, immutable Model through
 // ModelBuilder. The format is documented on scenes/belt.yaml and in io/scene_loader.cpp;
 // in short, the top-level keys are
-//   parameters, simulation, bodies, joints, springs, friction_laws, materials, contacts, output
+//   parameters, simulation, bodies, robots (URDF files), joints, springs, friction_laws,
+//   materials, contacts, output
 // and a scalar "$name" anywhere stands for parameter `name` (io/scene_parameters.hpp).
 // The loader is strict: unknown keys, wrong types and dangling names are SceneErrors that
 // give file:line:col, the key path (e.g. "bodies[1].mass") and what was expected vs found;
 // errors of ModelBuilder, the friction-law factory and the normal laws come back the same
 // way, located at the element that caused them.
-// Not here: running the scene or writing results; URDF; writing scene files.
+// Not here: running the scene or writing results; reading URDF (io/urdf_reader.hpp, placed
+// by io/urdf_model.hpp); writing scene files.
 #pragma once
 
 #include <memory>
@@ -47,12 +49,15 @@ struct Scene {
 };
 
 // Loads a scene file. `overrides` are NAME=VALUE strings (the command line's --set), applied
-// to the parameters: section before any "$name" is resolved. Throws SceneError.
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+// to the parameters: section before any "$name" is resolved; `package_paths` are the
+// command line's --package-path folders for the robots' package:// meshes. Throws SceneError.
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
+                const std::vector<std::string>& package_paths = {});
 
 // The same from YAML text; `name_for_errors` stands for the file name in messages and in
 // Scene::path.
 Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
-                          const std::vector<std::string>& overrides = {});
+                          const std::vector<std::string>& overrides = {},
+                          const std::vector<std::string>& package_paths = {});
 
 }  // namespace tribo::io
