@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/flush_denormals.hpp"
+
 namespace tribo {
 
 Simulator::Simulator(std::shared_ptr<const Model> model)
@@ -29,6 +31,7 @@ const Workspace& Simulator::current() {
 }
 
 StepStatus Simulator::step() {
+  const ScopedFlushDenormals flush;  // core/flush_denormals.hpp: why
   if (!energy_.started()) energy_.reset(state_, current());
   last_good_ = state_;
   const IntegratorStatus integrated =

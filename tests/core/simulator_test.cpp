@@ -1,12 +1,14 @@
 // Core dynamics against closed-form answers: free fall, a spring-mass oscillator on a
 // prismatic joint, a compound pendulum on a revolute joint, a box resting on the ground and
 // a box sliding to rest under Coulomb friction; plus the divergence guard.
+#include "core/simulator.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "core/simulator.hpp"
+#include "core/flush_denormals.hpp"
 #include "test_models.hpp"
 
 namespace tribo {
@@ -48,8 +50,8 @@ TEST(Simulator, SemiImplicitEulerFreeFallErrorIsFirstOrder) {
     Simulator sim(freeBody(IntegratorType::kSemiImplicitEuler, h));
     runFor(sim, 1.0);
     const double t = sim.state().time;
-    EXPECT_NEAR(sim.state().bodies[0].position.z(), 10 + 3 * t - 0.5 * kG * t * t - 0.5 * kG * h * t,
-                1e-9);
+    EXPECT_NEAR(sim.state().bodies[0].position.z(),
+                10 + 3 * t - 0.5 * kG * t * t - 0.5 * kG * h * t, 1e-9);
   }
 }
 
@@ -92,8 +94,9 @@ TEST(Simulator, PendulumOnRevoluteJointHasCompoundPeriodAndConservesEnergy) {
   auto energy = [&](const State& s) {
     const BodyState& bs = s.bodies[0];
     return 0.5 * m * bs.velocity.squaredNorm() +
-           0.5 * bs.angular_velocity.dot(bs.orientation * (bob.inertia * (bs.orientation.conjugate() *
-                                                                          bs.angular_velocity))) +
+           0.5 * bs.angular_velocity.dot(
+                     bs.orientation *
+                     (bob.inertia * (bs.orientation.conjugate() * bs.angular_velocity))) +
            m * kG * bs.position.z();
   };
   const double e0 = energy(sim.state());
@@ -119,8 +122,8 @@ TEST(Simulator, PendulumOnRevoluteJointHasCompoundPeriodAndConservesEnergy) {
 
 TEST(Simulator, BoxRestsOnGroundWithWeightSharedByFourCorners) {
   const double m = 10.0, k = 2.5e5, c = 1.5e3;
-  ModelBuilder b = test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.3, k, c,
-                                     IntegratorType::kRk4, 1e-3);
+  ModelBuilder b =
+      test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), 0.0, 0.3, k, c, IntegratorType::kRk4, 1e-3);
   b.options().gravity = Vec3(0, 0, -kG);
   Simulator sim(b.build());
   runFor(sim, 0.5);
@@ -140,8 +143,8 @@ TEST(Simulator, BoxRestsOnGroundWithWeightSharedByFourCorners) {
 TEST(Simulator, SlidingBoxStopsAtCoulombDistance) {
   const double m = 5.0, mu = 0.4, v0 = 2.0;
   for (IntegratorType integrator : {IntegratorType::kRk4, IntegratorType::kSemiImplicitEuler}) {
-    ModelBuilder b = test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), v0, mu, 2.5e5, 1.5e3, integrator,
-                                       2e-4);
+    ModelBuilder b =
+        test::boxOnGround(m, Vec3(0.2, 0.2, 0.1), v0, mu, 2.5e5, 1.5e3, integrator, 2e-4);
     Simulator sim(b.build());
     runFor(sim, 0.8);
     const double expected = v0 * v0 / (2 * mu * kG);
@@ -160,8 +163,7 @@ std::shared_ptr<const Model> slider(double k, double dt) {
   body.inertia = Mat3::Identity() * 0.01;
   body.position = Vec3(0.1, 0, 0);
   const BodyIndex ib = b.addBody(body);
-  b.addJoint("rail", JointType::kPrismatic, BodyIndex::world(), ib, Vec3(0.1, 0, 0),
-             Vec3::UnitX());
+  b.addJoint("rail", JointType::kPrismatic, BodyIndex::world(), ib, Vec3(0.1, 0, 0), Vec3::UnitX());
   b.addSpring("spring", BodyIndex::world(), Vec3(-1, 0, 0), ib, Vec3(0.1, 0, 0), k, 0.0, 1.0);
   return b.build();
 }
@@ -196,6 +198,28 @@ TEST(Simulator, PenetrationDeeperThanTheBodyStopsTheRun) {
   ASSERT_FALSE(status.ok);
   EXPECT_NE(status.message.find("penetration"), std::string::npos) << status.message;
   EXPECT_NE(status.message.find("'box_shape'"), std::string::npos) << status.message;
+}
+
+// core/flush_denormals.hpp: subnormal numbers read as zero inside the guard (they cost ~100
+// cycles an operation), and the caller's floating-point mode is back after it.
+TEST(FlushDenormals, SubnormalsAreZeroInsideTheGuardOnlyAndStepRestoresTheMode) {
+  volatile double tiny = 1e-310;  // subnormal: below 2.2e-308
+  volatile double one = 1.0;
+  ASSERT_GT(tiny * one, 0.0);
+#if defined(__SSE__) || defined(_M_X64)
+  {
+    const ScopedFlushDenormals flush;
+    EXPECT_EQ(tiny * one, 0.0);
+  }
+  EXPECT_GT(tiny * one, 0.0);
+  const unsigned before = _mm_getcsr();
+  Simulator sim(freeBody(IntegratorType::kRk4, 1e-3));
+  ASSERT_TRUE(sim.step().ok);
+  EXPECT_EQ(_mm_getcsr(), before);
+#else
+  GTEST_SKIP() << "no SSE control register on this processor";
+#endif
+  EXPECT_GT(tiny * one, 0.0);
 }
 
 }  // namespace
