@@ -16,7 +16,7 @@ TRIBO=${TRIBO:-build/apps/tribo}
 OUT=${OUT:-out/figures}
 FIGURES=${FIGURES:-docs/figures}
 LAUNCH=${LAUNCH:-}
-SCENE=scenes/belt_far_wall.yaml
+SCENE=scenes/belt.yaml
 command -v gnuplot >/dev/null || { echo "figures: gnuplot not found (Debian: gnuplot-nox)" >&2; exit 1; }
 [ -x "$TRIBO" ] || { echo "figures: no tribo at $TRIBO (build it, or set TRIBO)" >&2; exit 1; }
 mkdir -p "$OUT" "$FIGURES"

@@ -23,7 +23,7 @@ using test::Row;
 using test::TempDir;
 
 // The belt scene with its wall far away: amplitudes of metres keep the spring linear.
-const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt_far_wall.yaml";
+const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
 constexpr double kVb = 1.5, kVs = 0.01, kM = 10.0;
 
 std::vector<Row> sweep(std::vector<SweepAxis> axes) {
