@@ -12,8 +12,7 @@ const ElasticStickParams& validated(const ElasticStickParams& p) {
                 {"stiffness", p.stiffness},
                 {"damping", p.damping},
                 {"stick_speed", p.stick_speed}});
-  check.require(p.mu_k >= 0.0, "mu_k must be >= 0", p.mu_k);
-  check.require(p.mu_s >= p.mu_k, "mu_s must be >= mu_k", "mu_s", p.mu_s, "mu_k", p.mu_k);
+  check.staticAtLeastKinetic(p.mu_s, p.mu_k);
   check.require(p.stiffness > 0.0, "stiffness must be > 0", p.stiffness);
   check.require(p.damping >= 0.0, "damping must be >= 0", p.damping);
   check.require(p.stick_speed > 0.0, "stick_speed must be > 0", p.stick_speed);

@@ -33,6 +33,11 @@ class ParameterCheck {
     if (!ok)
       fail(rule + " (got " + a_name + " = " + number(a) + ", " + b_name + " = " + number(b) + ")");
   }
+  // The usual pair: mu_k >= 0 and mu_s >= mu_k.
+  void staticAtLeastKinetic(double mu_s, double mu_k) const {
+    require(mu_k >= 0.0, "mu_k must be >= 0", mu_k);
+    require(mu_s >= mu_k, "mu_s must be >= mu_k", "mu_s", mu_s, "mu_k", mu_k);
+  }
   [[noreturn]] void fail(const std::string& what) const {
     throw FrictionParameterError(law_ + ": " + what);
   }

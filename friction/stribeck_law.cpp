@@ -19,8 +19,7 @@ const StribeckParams& validated(const StribeckParams& p) {
                 {"delta", p.delta},
                 {"viscous", p.viscous},
                 {"v_eps", p.v_eps}});
-  check.require(p.mu_k >= 0.0, "mu_k must be >= 0", p.mu_k);
-  check.require(p.mu_s >= p.mu_k, "mu_s must be >= mu_k", "mu_s", p.mu_s, "mu_k", p.mu_k);
+  check.staticAtLeastKinetic(p.mu_s, p.mu_k);
   check.require(p.v_st > 0.0, "v_st must be > 0", p.v_st);
   check.require(p.delta > 0.0, "delta must be > 0", p.delta);
   check.require(p.viscous >= 0.0, "viscous must be >= 0", p.viscous);

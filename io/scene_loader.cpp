@@ -761,20 +761,7 @@ class Loader {
     if (materials_.count(name)) name_value.fail("material '" + name + "' defined twice");
     contact::Material material;
     if (auto n = m.get("normal")) material.normal = readNormalLaw(*n);
-    const Value f = m.required("friction");
-    const auto it = laws_.find(f.text());
-    if (it == laws_.end())
-      f.fail("friction law '" + f.text() +
-             "' is not defined in friction_laws (defined: " + joined(law_names_) + ")");
-    LawEntry& law = it->second;
-    if (!law.law) {
-      try {
-        law.law = friction::makeFrictionLaw(law.spec);
-      } catch (const friction::FrictionParameterError& e) {
-        law.at.fail(std::string(e.what()) + " (selected by " + f.path() + ")");
-      }
-    }
-    material.friction = law.law;
+    material.friction = frictionLaw(m.required("friction"));
     const int index = guarded(v, [&] { return builder_.addMaterial(material); });
     materials_[name] = index;
     material_values_[name] = material;

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "support/scene_text.hpp"
+
 namespace tribo::io {
 namespace {
 
@@ -54,12 +56,7 @@ contacts:
   - {a: ground, b: block, material: steel}
 )";
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using test::replaced;
 
 // 1-based line of the first line of `text` containing `needle`.
 int lineOf(const std::string& text, const std::string& needle) {

@@ -9,15 +9,26 @@
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tribo {
 namespace {
 
 namespace fs = std::filesystem;
 
+// A folder of the running test's own: CTest runs this binary's tests in parallel processes.
+fs::path testFolder() {
+  const fs::path dir =
+      fs::temp_directory_path() /
+      ("tribo_shapes_" +
+       std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  fs::create_directories(dir);
+  return dir;
+}
+
 // A unit-cube OBJ next to the scene (meshes resolve relative to the scene file).
 fs::path writeCube(const std::string& name, double a) {
-  const fs::path path = fs::temp_directory_path() / name;
+  const fs::path path = testFolder() / name;
   std::ofstream out(path);
   for (int k = 0; k < 8; ++k)
     out << "v " << ((k & 1) ? a : -a) << " " << ((k & 2) ? a : -a) << " " << ((k & 4) ? a : -a)
@@ -58,7 +69,7 @@ materials:
 
 io::Scene loadShapes(const std::string& text = kShapes) {
   const fs::path mesh = writeCube("cube_for_scene_test.obj", 0.1);
-  return io::loadSceneFromString(text, (fs::temp_directory_path() / "shapes.yaml").string());
+  return io::loadSceneFromString(text, (testFolder() / "shapes.yaml").string());
 }
 
 TEST(ContactScenes, EveryShapeLoadsPairsAutomaticallyAndComesToRestOnTheGround) {
@@ -119,12 +130,7 @@ std::string errorOf(const std::string& text) {
   return "";
 }
 
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
+using test::replaced;
 
 TEST(ContactScenes, BadShapesAndMaterialsAreNamedWithTheirKeys) {
   EXPECT_NE(

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "io/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tribo {
 namespace {
@@ -49,21 +50,9 @@ friction_laws:
   roh_yoo: {mu_s: 0.35, mu_k: 0.3, v_s: 0.01, a: 1.5, beta: 0.5}
 )";
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using test::replaced;
 
-std::string errorOf(const std::string& yaml) {
-  try {
-    io::loadSceneFromString(yaml, "joints.yaml");
-  } catch (const io::SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string errorOf(const std::string& yaml) { return test::sceneErrorOf(yaml, "joints.yaml"); }
 
 #define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
 

@@ -13,6 +13,7 @@
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tribo {
 namespace {
@@ -30,14 +31,10 @@ std::string sceneText() {
   return s.str();
 }
 
-// The scene's text with `from` replaced by `to` (which must be there), loaded as if it were
-// the scene file itself (robot paths resolve against scenes/).
-io::Scene variant(const std::string& from, const std::string& to) {
-  std::string text = sceneText();
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return io::loadSceneFromString(text, kScene.string());
+// The scene's text with `from` replaced by `to`, loaded as if it were the scene file itself
+// (robot paths resolve against scenes/).
+io::Scene variant(const std::string& text, const std::string& from, const std::string& to) {
+  return io::loadSceneFromString(test::replaced(text, from, to), kScene.string());
 }
 
 struct Track {
@@ -126,16 +123,15 @@ TEST(SceneRobots, GazeboMu1SetsTheBlocksFrictionAgainstTheSlope) {
 
 TEST(SceneRobots, AMaterialForTheSurfacePairOverridesTheGazeboTags) {
   const std::string laws = "  coulomb: {mu: 0.8, regularization: tanh, v_eps: 0.01}\n";
-  std::string text = sceneText();
-  text.replace(text.find(laws), laws.size(),
-               laws + "  stribeck: {mu_s: 0.45, mu_k: 0.4, v_st: 0.001, v_eps: 0.001}\n");
+  const std::string with_law = test::replaced(
+      sceneText(), laws, laws + "  stribeck: {mu_s: 0.45, mu_k: 0.4, v_st: 0.001, v_eps: 0.001}\n");
   const std::string tail = "    default: true\n";
-  text.replace(text.find(tail), tail.size(), tail + R"(  - name: block_on_slope
+  const Track t = simulate(variant(with_law, tail, tail + R"(  - name: block_on_slope
     normal: {law: linear, stiffness: 1.0e5, damping: 100}
     friction: stribeck
     surfaces: [[block, slope]]
-)");
-  const Track t = simulate(io::loadSceneFromString(text, kScene.string()), 1000);
+)"),
+                           1000);
   // Sliding at over 0.5 m/s, far above v_st: mu = mu_k = 0.4.
   const double expected = kG * (std::sin(kTheta) - 0.4 * std::cos(kTheta));
   EXPECT_NEAR(slidingAcceleration(t), expected, 1e-3 * expected);
@@ -144,10 +140,9 @@ TEST(SceneRobots, AMaterialForTheSurfacePairOverridesTheGazeboTags) {
 TEST(SceneRobots, GazeboKpSetsTheBlocksContactStiffness) {
   // The default material is ten times stiffer than the block's kp = 1e5 N/m per corner: the
   // block must sink to m g cos(theta) / (4 kp) all the same.
-  std::string text = sceneText();
-  const std::string k = "stiffness: 1.0e5, damping: 100}\n    friction: coulomb";
-  text.replace(text.find(k), k.size(), "stiffness: 1.0e6, damping: 300}\n    friction: coulomb");
-  const Track t = simulate(io::loadSceneFromString(text, kScene.string()), 1000);
+  const Track t = simulate(variant(sceneText(), "stiffness: 1.0e5, damping: 100}\n    friction",
+                                   "stiffness: 1.0e6, damping: 300}\n    friction"),
+                           1000);
   double mean = 0.0;
   for (int i = 500; i <= 1000; ++i) mean += normalHeight(t.block[i]) / 501.0;
   const double depth = 1.0 * kG * std::cos(kTheta) / (4.0 * 1e5);
@@ -155,12 +150,7 @@ TEST(SceneRobots, GazeboKpSetsTheBlocksContactStiffness) {
 }
 
 std::string errorOf(const std::string& from, const std::string& to) {
-  try {
-    variant(from, to);
-  } catch (const io::SceneError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::sceneErrorOf(test::replaced(sceneText(), from, to), kScene.string());
 }
 
 TEST(SceneRobots, MistakesAreErrorsAtTheirKey) {
