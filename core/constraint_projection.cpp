@@ -28,6 +28,15 @@ ConstraintProjection::ConstraintProjection(const Model& model)
   mu_.setZero(m);
 }
 
+void ConstraintProjection::leastChange(double RowValue::*residual) {
+  for (std::size_t r = 0; r < values_.size(); ++r)
+    mu_(static_cast<int>(r)) = -(values_[r].*residual);
+  matrix_.solveInPlace(mu_);
+  std::fill(delta_linear_.begin(), delta_linear_.end(), Vec3::Zero());
+  std::fill(delta_angular_.begin(), delta_angular_.end(), Vec3::Zero());
+  jacobian_.applyMultipliers(mu_, delta_linear_, delta_angular_, nullptr);
+}
+
 double ConstraintProjection::evaluate(const State& state) {
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     rotation_[b] = state.bodies[b].orientation.toRotationMatrix();
@@ -57,11 +66,7 @@ ProjectionReport ConstraintProjection::project(State& state, double tolerance, i
   report.max_phi_before = max_phi;
   while (max_phi > tolerance && report.position_iterations < iterations) {
     if (!factorize()) break;
-    for (int r = 0; r < m; ++r) mu_(r) = -values_[r].phi;
-    matrix_.solveInPlace(mu_);
-    std::fill(delta_linear_.begin(), delta_linear_.end(), Vec3::Zero());
-    std::fill(delta_angular_.begin(), delta_angular_.end(), Vec3::Zero());
-    jacobian_.applyMultipliers(mu_, delta_linear_, delta_angular_, nullptr);
+    leastChange(&RowValue::phi);
     for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
       if (model_.bodies[b].kind != BodyKind::kDynamic) continue;
       BodyState& s = state.bodies[b];
@@ -78,11 +83,7 @@ ProjectionReport ConstraintProjection::project(State& state, double tolerance, i
   for (int r = 0; r < m; ++r) max_rate = std::max(max_rate, std::abs(values_[r].phi_dot));
   if (max_rate <= tolerance) return report;
   if (!factorize()) return report;
-  for (int r = 0; r < m; ++r) mu_(r) = -values_[r].phi_dot;
-  matrix_.solveInPlace(mu_);
-  std::fill(delta_linear_.begin(), delta_linear_.end(), Vec3::Zero());
-  std::fill(delta_angular_.begin(), delta_angular_.end(), Vec3::Zero());
-  jacobian_.applyMultipliers(mu_, delta_linear_, delta_angular_, nullptr);
+  leastChange(&RowValue::phi_dot);
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     if (model_.bodies[b].kind != BodyKind::kDynamic) continue;
     state.bodies[b].velocity += delta_linear_[b];

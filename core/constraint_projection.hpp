@@ -41,6 +41,10 @@ class ConstraintProjection {
   // Rotations, world inverse inertias and all rows at `state`; returns max |Phi|.
   double evaluate(const State& state);
   bool factorize();
+  // delta_linear_, delta_angular_ = M^-1 J^T (J M^-1 J^T)^-1 (-residual): the mass-weighted
+  // least change of the body motions that cancels the rows' residual (phi or phi_dot) to
+  // first order. Needs factorize().
+  void leastChange(double RowValue::*residual);
 
   const Model& model_;
   std::vector<ConstraintRow> rows_;

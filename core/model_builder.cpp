@@ -5,15 +5,11 @@
 #include <set>
 #include <sstream>
 
+#include "core/number_text.hpp"
+
 namespace tribo {
 
 namespace {
-
-std::string str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 bool finite(const Vec3& v) { return v.allFinite(); }
 
@@ -62,7 +58,7 @@ BodyIndex ModelBuilder::addBody(const Body& body) {
   if (findBody(body.name)) throw ModelError(who + ": a body of that name already exists");
   if (body.kind == BodyKind::kDynamic) {
     if (!std::isfinite(body.mass) || body.mass <= 0.0)
-      throw ModelError(who + ": mass must be > 0 (got " + str(body.mass) + ")");
+      throw ModelError(who + ": mass must be > 0 (got " + numberText(body.mass) + ")");
     if (!body.inertia.allFinite() ||
         (body.inertia - body.inertia.transpose()).norm() > 1e-9 * body.inertia.norm())
       throw ModelError(who + ": inertia must be a finite symmetric matrix");
@@ -70,7 +66,7 @@ BodyIndex ModelBuilder::addBody(const Body& body) {
     const Vec3 p = eig.eigenvalues();
     if (p.minCoeff() <= 0.0)
       throw ModelError(who + ": inertia must be positive definite (smallest principal moment " +
-                       str(p.minCoeff()) + ")");
+                       numberText(p.minCoeff()) + ")");
     if (p(0) + p(1) < p(2) * (1 - 1e-12))
       throw ModelError(who + ": principal moments violate the triangle inequality");
   }
@@ -227,9 +223,9 @@ void ModelBuilder::addSpring(const std::string& name, BodyIndex a, const Vec3& p
   const Body bb = checkedBody(b, who + " body B");
   if (a == b) throw ModelError(who + ": both ends on the same body");
   if (!std::isfinite(k) || k < 0.0)
-    throw ModelError(who + ": stiffness must be >= 0 (got " + str(k) + ")");
+    throw ModelError(who + ": stiffness must be >= 0 (got " + numberText(k) + ")");
   if (!std::isfinite(c) || c < 0.0)
-    throw ModelError(who + ": damping must be >= 0 (got " + str(c) + ")");
+    throw ModelError(who + ": damping must be >= 0 (got " + numberText(c) + ")");
   if (!finite(pa) || !finite(pb)) throw ModelError(who + ": attachment points must be finite");
   SpringDamper s;
   s.name = name;
@@ -256,22 +252,22 @@ std::optional<int> ModelBuilder::findGeometry(const std::string& name) const {
 std::shared_ptr<const Model> ModelBuilder::build() const {
   const auto& o = options_;
   if (!std::isfinite(o.time_step) || o.time_step <= 0.0)
-    throw ModelError("options: time step must be > 0 (got " + str(o.time_step) + ")");
+    throw ModelError("options: time step must be > 0 (got " + numberText(o.time_step) + ")");
   if (!std::isfinite(o.duration) || o.duration <= 0.0)
-    throw ModelError("options: duration must be > 0 (got " + str(o.duration) + ")");
+    throw ModelError("options: duration must be > 0 (got " + numberText(o.duration) + ")");
   if (!finite(o.gravity)) throw ModelError("options: gravity must be finite");
   if (!(o.baumgarte_alpha >= 0.0) || !(o.baumgarte_beta >= 0.0))
     throw ModelError("options: Baumgarte alpha and beta must be >= 0");
   if (!std::isfinite(o.relative_tolerance) || o.relative_tolerance <= 0.0 ||
       o.relative_tolerance >= 1.0)
     throw ModelError("options: relative tolerance must be in (0, 1) (got " +
-                     str(o.relative_tolerance) + ")");
+                     numberText(o.relative_tolerance) + ")");
   if (!std::isfinite(o.absolute_tolerance) || o.absolute_tolerance <= 0.0)
-    throw ModelError("options: absolute tolerance must be > 0 (got " + str(o.absolute_tolerance) +
-                     ")");
+    throw ModelError("options: absolute tolerance must be > 0 (got " +
+                     numberText(o.absolute_tolerance) + ")");
   if (!std::isfinite(o.max_internal_step) || o.max_internal_step < 0.0)
     throw ModelError("options: max internal step must be >= 0, 0 for no limit (got " +
-                     str(o.max_internal_step) + ")");
+                     numberText(o.max_internal_step) + ")");
   auto model = std::make_shared<Model>(model_);
   model->options = options_;
   finishJoints(*model);

@@ -6,16 +6,11 @@
 #include "core/constraint_rank.hpp"
 #include "core/constraint_rows.hpp"
 #include "core/model_builder.hpp"
+#include "core/number_text.hpp"
 
 namespace tribo {
 
 namespace {
-
-std::string str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // Orthonormal frame whose third column is `axis` and whose first is `reference` made normal
 // to it (any normal when reference is zero).
@@ -69,7 +64,7 @@ int ModelBuilder::addJoint(const std::string& name, JointType type, BodyIndex pa
     const double cosine = std::abs(axis_world.normalized().dot(reference_world / ref));
     if (cosine > 1e-9)
       throw ModelError(who + ": axis2 must be normal to axis (cosine of the angle between them " +
-                       str(cosine) + ")");
+                       numberText(cosine) + ")");
   } else if (ref > 0.0 && axis_world.normalized().cross(reference_world / ref).norm() < 1e-6) {
     throw ModelError(who + ": axis2 (the zero-angle reference) must not be parallel to axis");
   }
@@ -128,8 +123,8 @@ void ModelBuilder::setJointLimit(int joint, const JointLimit& limit) {
   Joint& j = checkedJoint(joint, "a limit", true);
   const std::string who = jointWho(j.name) + " limit";
   if (!std::isfinite(limit.lower) || !std::isfinite(limit.upper) || limit.lower > limit.upper)
-    throw ModelError(who + ": expected finite lower <= upper (got " + str(limit.lower) + ", " +
-                     str(limit.upper) + ")");
+    throw ModelError(who + ": expected finite lower <= upper (got " + numberText(limit.lower) +
+                     ", " + numberText(limit.upper) + ")");
   if (!std::isfinite(limit.stiffness) || limit.stiffness < 0.0 || !std::isfinite(limit.damping) ||
       limit.damping < 0.0)
     throw ModelError(who + ": stiffness and damping must be >= 0");
@@ -141,21 +136,21 @@ void ModelBuilder::setJointSpring(int joint, const JointSpring& spring) {
   if (!std::isfinite(spring.stiffness) || spring.stiffness < 0.0 ||
       !std::isfinite(spring.reference))
     throw ModelError(jointWho(j.name) + " spring: stiffness must be >= 0 (got " +
-                     str(spring.stiffness) + ") and the reference finite");
+                     numberText(spring.stiffness) + ") and the reference finite");
   j.elements.spring = spring;
 }
 
 void ModelBuilder::setJointDamping(int joint, double damping) {
   Joint& j = checkedJoint(joint, "damping", true);
   if (!std::isfinite(damping) || damping < 0.0)
-    throw ModelError(jointWho(j.name) + ": damping must be >= 0 (got " + str(damping) + ")");
+    throw ModelError(jointWho(j.name) + ": damping must be >= 0 (got " + numberText(damping) + ")");
   j.elements.damping = damping;
 }
 
 void ModelBuilder::setJointEffort(int joint, double effort) {
   Joint& j = checkedJoint(joint, "an effort", true);
   if (!std::isfinite(effort))
-    throw ModelError(jointWho(j.name) + ": effort must be finite (got " + str(effort) + ")");
+    throw ModelError(jointWho(j.name) + ": effort must be finite (got " + numberText(effort) + ")");
   j.elements.effort = effort;
 }
 
@@ -167,10 +162,11 @@ void ModelBuilder::setJointFriction(int joint, const JointFriction& friction) {
     throw ModelError(who + ": law " + std::string(friction.law->name()) +
                      " keeps per-contact state; joint friction takes memoryless laws only");
   if (!std::isfinite(friction.radius) || friction.radius <= 0.0)
-    throw ModelError(who + ": radius must be > 0 (got " + str(friction.radius) + ")");
+    throw ModelError(who + ": radius must be > 0 (got " + numberText(friction.radius) + ")");
   if (friction.load == JointFrictionLoad::kConstant &&
       (!std::isfinite(friction.normal_force) || friction.normal_force < 0.0))
-    throw ModelError(who + ": normal_force must be >= 0 (got " + str(friction.normal_force) + ")");
+    throw ModelError(who + ": normal_force must be >= 0 (got " + numberText(friction.normal_force) +
+                     ")");
   j.elements.friction = friction;
 }
 

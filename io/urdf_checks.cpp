@@ -4,17 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/number_text.hpp"
+
 namespace tribo::io {
-
-namespace {
-
-std::string str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-}  // namespace
 
 void checkUrdfRobot(UrdfRobot& robot) {
   auto issue = [&](UrdfIssue::Severity sev, const std::string& link, const std::string& what) {
@@ -28,7 +20,7 @@ void checkUrdfRobot(UrdfRobot& robot) {
       continue;
     }
     if (!std::isfinite(l.mass) || l.mass < 0.0) {
-      issue(S::kError, l.name, "mass must be >= 0 (got " + str(l.mass) + ")");
+      issue(S::kError, l.name, "mass must be >= 0 (got " + numberText(l.mass) + ")");
       continue;
     }
     if (l.mass == 0.0) {
@@ -41,18 +33,18 @@ void checkUrdfRobot(UrdfRobot& robot) {
       continue;
     }
     if (i.isZero(0.0)) {
-      issue(S::kWarning, l.name, "has mass " + str(l.mass) + " kg but zero inertia");
+      issue(S::kWarning, l.name, "has mass " + numberText(l.mass) + " kg but zero inertia");
       continue;
     }
     const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
     if (p.minCoeff() <= 0.0) {
       issue(S::kWarning, l.name,
-            "inertia is not positive definite (principal moments " + str(p(0)) + ", " + str(p(1)) +
-                ", " + str(p(2)) + ")");
+            "inertia is not positive definite (principal moments " + numberText(p(0)) + ", " +
+                numberText(p(1)) + ", " + numberText(p(2)) + ")");
     } else if (p(0) + p(1) < p(2) * (1.0 - 1e-9)) {
       issue(S::kWarning, l.name,
-            "principal moments " + str(p(0)) + ", " + str(p(1)) + ", " + str(p(2)) +
-                " violate the triangle inequality");
+            "principal moments " + numberText(p(0)) + ", " + numberText(p(1)) + ", " +
+                numberText(p(2)) + " violate the triangle inequality");
     }
   }
 }

@@ -6,18 +6,13 @@
 #include <sstream>
 
 #include "contact/mesh_loader.hpp"
+#include "core/number_text.hpp"
 #include "friction/friction_law.hpp"
 #include "io/urdf_assembly.hpp"
 
 namespace tribo::io {
 
 namespace {
-
-std::string str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // Raises principal moments so the tensor is positive definite and obeys the triangle
 // inequality; returns true if it changed anything.
@@ -76,7 +71,7 @@ UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& robot,
     if (j.type != "revolute" && j.type != "prismatic") continue;
     if (0.0 < j.lower || 0.0 > j.upper) {
       positions[j.name] = 0.0 < j.lower ? j.lower : j.upper;
-      result.notes.push_back("joint '" + j.name + "' starts at " + str(positions[j.name]) +
+      result.notes.push_back("joint '" + j.name + "' starts at " + numberText(positions[j.name]) +
                              ", the end of its range nearest 0");
     }
   }
@@ -160,8 +155,8 @@ UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& robot,
     if (g.mass <= 0.0) {
       b.mass = stand_in_mass;
       b.inertia = Eigen::Matrix3d::Identity() * (0.4 * b.mass * 0.05 * 0.05);
-      result.notes.push_back("link '" + g.name + "' has no mass but moves: given " + str(b.mass) +
-                             " kg and a 5 cm sphere's inertia");
+      result.notes.push_back("link '" + g.name + "' has no mass but moves: given " +
+                             numberText(b.mass) + " kg and a 5 cm sphere's inertia");
     } else if (regularizeInertia(b.mass, b.inertia)) {
       result.notes.push_back("link '" + g.name +
                              "': inertia raised to be positive definite and obey the triangle "
