@@ -12,6 +12,7 @@
 #include "core/simulator.hpp"
 #include "friction/friction_law.hpp"
 #include "joint_test_models.hpp"
+#include "test_models.hpp"
 
 namespace tribo {
 namespace {
@@ -255,16 +256,6 @@ TEST(JointElements, MimicCouplingSharesTheLeadersEffort) {
   EXPECT_NEAR(angleOf(sim.state().bodies[1]), 2 * q_l, 1e-9);
 }
 
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(JointElements, BuilderRejectsWhatCannotWork) {
   ModelBuilder b;
   Body body;
@@ -272,7 +263,7 @@ TEST(JointElements, BuilderRejectsWhatCannotWork) {
   const BodyIndex i = b.addBody(body);
   const int ball = b.addJoint("socket", JointType::kSpherical, BodyIndex::world(), i, Vec3::Zero(),
                               Vec3::UnitZ());
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               b.setJointLimit(ball, {-1, 1, 0, 0});
             })
                 .find("joint 'socket': a limit needs a revolute or prismatic joint (this one is "
@@ -280,22 +271,23 @@ TEST(JointElements, BuilderRejectsWhatCannotWork) {
             std::string::npos);
   ModelBuilder c;
   const int j = disk(c);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               c.setJointLimit(j, {1, -1, 0, 0});
             }).find("expected finite lower <= upper"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               c.setJointFriction(j, {coulomb(0.3), JointFrictionLoad::kReaction, 0.0, 0.0});
             }).find("radius must be > 0"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { c.addJointCoupling("self", j, j, 1, 0); }).find("the same joint"),
-            std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(
+      test::modelErrorOf([&] { c.addJointCoupling("self", j, j, 1, 0); }).find("the same joint"),
+      std::string::npos);
+  EXPECT_NE(test::modelErrorOf([&] {
               c.addJoint("u", JointType::kUniversal, BodyIndex::world(), BodyIndex{0}, Vec3::Zero(),
                          Vec3::UnitZ());
             }).find("needs its second axis"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               c.addJoint("u", JointType::kUniversal, BodyIndex::world(), BodyIndex{0}, Vec3::Zero(),
                          Vec3::UnitZ(), Vec3(1, 0, 1));
             }).find("axis2 must be normal to axis"),
@@ -309,7 +301,7 @@ TEST(JointElements, ADriveOnAMotionAlreadyFixedIsAnError) {
   b.setJointDrive(l, {DriveMode::kVelocity, {1, 0, 0, 0, 0}});
   b.setJointDrive(f, {DriveMode::kVelocity, {2, 0, 0, 0, 0}});
   b.addJointCoupling("gear", l, f, 2.0, 0.0);
-  EXPECT_NE(errorOf([&] { b.build(); })
+  EXPECT_NE(test::modelErrorOf([&] { b.build(); })
                 .find("coupling 'gear': it prescribes a motion the other "
                       "constraints already fix"),
             std::string::npos);

@@ -17,64 +17,57 @@ Body dynamicBody(const std::string& name) {
   return b;
 }
 
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(ModelBuilder, RejectsBadBodies) {
   ModelBuilder b;
   Body neg = dynamicBody("heavy");
   neg.mass = -1.0;
-  EXPECT_NE(errorOf([&] { b.addBody(neg); }).find("body 'heavy': mass must be > 0"),
+  EXPECT_NE(test::modelErrorOf([&] { b.addBody(neg); }).find("body 'heavy': mass must be > 0"),
             std::string::npos);
   Body flat = dynamicBody("flat");
   flat.inertia = Vec3(1.0, 1.0, 0.0).asDiagonal();
-  EXPECT_NE(errorOf([&] { b.addBody(flat); }).find("positive definite"), std::string::npos);
+  EXPECT_NE(test::modelErrorOf([&] { b.addBody(flat); }).find("positive definite"),
+            std::string::npos);
   Body tri = dynamicBody("tri");
   tri.inertia = Vec3(1.0, 1.0, 3.0).asDiagonal();
-  EXPECT_NE(errorOf([&] { b.addBody(tri); }).find("triangle inequality"), std::string::npos);
-  b.addBody(dynamicBody("a"));
-  EXPECT_NE(errorOf([&] { b.addBody(dynamicBody("a")); }).find("already exists"),
+  EXPECT_NE(test::modelErrorOf([&] { b.addBody(tri); }).find("triangle inequality"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { b.addBody(dynamicBody("world")); }).find("not 'world'"),
+  b.addBody(dynamicBody("a"));
+  EXPECT_NE(test::modelErrorOf([&] { b.addBody(dynamicBody("a")); }).find("already exists"),
+            std::string::npos);
+  EXPECT_NE(test::modelErrorOf([&] { b.addBody(dynamicBody("world")); }).find("not 'world'"),
             std::string::npos);
 }
 
 TEST(ModelBuilder, RejectsBadJointsSpringsAndPairs) {
   ModelBuilder b;
   const BodyIndex a = b.addBody(dynamicBody("a"));
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               b.addJoint("j", JointType::kRevolute, a, BodyIndex::world(), Vec3::Zero(),
                          Vec3::UnitZ());
             }).find("joint 'j': the child must be a dynamic body"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               b.addJoint("j", JointType::kRevolute, BodyIndex::world(), a, Vec3::Zero(),
                          Vec3::Zero());
             }).find("axis non-zero"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               b.addSpring("s", BodyIndex::world(), Vec3::Zero(), a, Vec3::UnitX(), -5, 0, -1);
             }).find("spring 's': stiffness must be >= 0"),
             std::string::npos);
   const int g1 = b.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace());
   const int g2 = b.addGeometry("ceiling", BodyIndex::world(), contact::Shape::halfSpace());
   const int mat = b.addMaterial(test::coulombMaterial(0.3, 1e5, 0.0));
-  EXPECT_NE(errorOf([&] { b.addContactPair(g1, g2, mat); }).find("(ground, ceiling)"),
+  EXPECT_NE(test::modelErrorOf([&] { b.addContactPair(g1, g2, mat); }).find("(ground, ceiling)"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::modelErrorOf([&] {
               b.addGeometry("bad", a, contact::Shape::box(Vec3(0.1, 0, 0.1)));
             }).find("geometry 'bad': box half extents must be > 0"),
             std::string::npos);
   contact::Material soft = test::coulombMaterial(0.3, 1e5, 0.0);
   soft.normal.stiffness = 0.0;
-  EXPECT_NE(errorOf([&] { b.addMaterial(soft); }).find("stiffness must be > 0"), std::string::npos);
+  EXPECT_NE(test::modelErrorOf([&] { b.addMaterial(soft); }).find("stiffness must be > 0"),
+            std::string::npos);
 }
 
 TEST(ModelBuilder, RejectsBadOptionsAndEmptyModels) {
@@ -84,7 +77,8 @@ TEST(ModelBuilder, RejectsBadOptionsAndEmptyModels) {
   ModelBuilder b;
   b.addBody(dynamicBody("a"));
   b.options().time_step = 0.0;
-  EXPECT_NE(errorOf([&] { b.build(); }).find("time step must be > 0"), std::string::npos);
+  EXPECT_NE(test::modelErrorOf([&] { b.build(); }).find("time step must be > 0"),
+            std::string::npos);
 }
 
 TEST(ModelBuilder, JointFramesCoincideInTheInitialConfiguration) {

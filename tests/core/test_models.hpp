@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "core/model_builder.hpp"
 #include "friction/friction_law.hpp"
@@ -44,6 +45,17 @@ inline ModelBuilder boxOnGround(double m, const Vec3& size, double vx, double mu
   b.addJoint("slide", JointType::kPlanarTranslation, BodyIndex::world(), ib, box.position,
              Vec3::UnitY());
   return b;
+}
+
+// The ModelError message of f(), "" when it throws none.
+template <typename F>
+std::string modelErrorOf(F&& f) {
+  try {
+    f();
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace tribo::test
