@@ -13,6 +13,7 @@
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/pendulum_scene.hpp"
 #include "support/scene_text.hpp"
 
 namespace tribo {
@@ -71,19 +72,8 @@ TEST(SceneRobots, EachPendulumMovesAsTheSamePendulumWrittenAsBodiesAndJoints) {
 
   // The left copy: hinge at (0, 2, 2) about y, started at 0.3 rad; centre 0.5 m down the arm.
   const double q = 0.3;
-  char body[256];
-  std::snprintf(body, sizeof body, "[%.17g, 2, %.17g]", -0.5 * std::sin(q), 2 - 0.5 * std::cos(q));
-  char quat[256];
-  std::snprintf(quat, sizeof quat, "[%.17g, 0, %.17g, 0]", std::cos(q / 2), std::sin(q / 2));
-  const std::string yaml = std::string(R"(
-simulation: {duration: 1, time_step: 0.001, integrator: rk4, gravity: [0, 0, -9.81]}
-bodies:
-  - {name: arm, mass: 2.0, inertia: [0.2, 0.2, 0.01], position: )") +
-                           body + ", orientation: " + quat + R"(}
-joints:
-  - {name: hinge, type: revolute, parent: world, child: arm, anchor: [0, 2, 2], axis: [0, 1, 0]}
-)";
-  const io::Scene reference = io::loadSceneFromString(yaml, "pendulum.yaml");
+  const io::Scene reference =
+      io::loadSceneFromString(test::pendulumSceneYaml(q, Vec3(0, 2, 2), 1.0), "pendulum.yaml");
   Simulator ref(reference.model);
   double gap = 0.0, mirror_gap = 0.0, swing = 0.0;
   for (std::size_t i = 0; i < t.left.size(); ++i) {

@@ -1,7 +1,7 @@
 // Real URDF robots simulated headless: every file of the shared corpus dropped on the ground
 // for 1 s without NaN and without energy rising (nothing drives them, so kinetic plus
 // gravitational energy can only fall); and a pendulum written as URDF moving exactly as the
-// same pendulum written as a scene file.
+// same pendulum written as a scene file (scenes/robots/pendulum.urdf).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +14,7 @@
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
+#include "support/pendulum_scene.hpp"
 
 namespace tribo {
 namespace {
@@ -83,56 +84,20 @@ INSTANTIATE_TEST_SUITE_P(Corpus, UrdfOnGround, ::testing::ValuesIn(corpusFiles()
                            return name;
                          });
 
-// A compound pendulum: 2 kg, centre of mass 0.5 m below a hinge about y at height 2 m,
-// started 0.3 rad from hanging. As URDF (massless world-welded base) and as a scene file.
-const char* kPendulumUrdf = R"(<?xml version="1.0"?>
-<robot name="pendulum">
-  <link name="base"/>
-  <link name="arm">
-    <inertial>
-      <origin xyz="0 0 -0.5"/>
-      <mass value="2.0"/>
-      <inertia ixx="0.2" ixy="0" ixz="0" iyy="0.2" iyz="0" izz="0.01"/>
-    </inertial>
-  </link>
-  <joint name="hinge" type="continuous">
-    <parent link="base"/><child link="arm"/>
-    <origin xyz="0 0 2"/>
-    <axis xyz="0 1 0"/>
-  </joint>
-</robot>
-)";
-
 TEST(UrdfPendulum, MovesAsTheSamePendulumWrittenAsASceneFile) {
-  const fs::path dir = fs::temp_directory_path() / "tribo_urdf_pendulum";
-  fs::create_directories(dir);
-  std::ofstream(dir / "pendulum.urdf") << kPendulumUrdf;
-  // The scene starts the arm at q = 0.3 rad about +y: centre at 2 m + R_y(0.3) (0, 0, -0.5).
+  // scenes/robots/pendulum.urdf: massless base (welded to the world), hinge about y at 2 m.
+  // Both start the arm at q = 0.3 rad about +y: centre at 2 m + R_y(0.3) (0, 0, -0.5).
   const double q = 0.3;
-  char body[256];
-  std::snprintf(body, sizeof body, "[%.17g, 0, %.17g]", -0.5 * std::sin(q), 2 - 0.5 * std::cos(q));
-  char quat[256];
-  std::snprintf(quat, sizeof quat, "[%.17g, 0, %.17g, 0]", std::cos(q / 2), std::sin(q / 2));
-  const std::string yaml = std::string(R"(
-simulation: {duration: 2, time_step: 0.001, integrator: rk4, gravity: [0, 0, -9.81]}
-bodies:
-  - name: arm
-    mass: 2.0
-    inertia: [0.2, 0.2, 0.01]
-    position: )") + body + R"(
-    orientation: )" + quat +
-                           R"(
-joints:
-  - {name: hinge, type: revolute, parent: world, child: arm, anchor: [0, 0, 2], axis: [0, 1, 0]}
-)";
-  const io::Scene from_yaml = io::loadSceneFromString(yaml, "pendulum.yaml");
+  const io::Scene from_yaml =
+      io::loadSceneFromString(test::pendulumSceneYaml(q, Vec3(0, 0, 2), 2.0), "pendulum.yaml");
   ModelBuilder builder;
   builder.options() = from_yaml.model->options;
   io::UrdfPlacement placement;
   placement.joint_positions["hinge"] = q;
-  io::addUrdfRobot(builder, io::readUrdf((dir / "pendulum.urdf").string()), placement);
+  io::addUrdfRobot(builder,
+                   io::readUrdf(std::string(TRIBO_SOURCE_DIR) + "/scenes/robots/pendulum.urdf"),
+                   placement);
   const auto urdf_model = builder.build();
-  fs::remove_all(dir);
   ASSERT_EQ(urdf_model->dynamicBodyCount(), 1);
 
   Simulator a(from_yaml.model), b(urdf_model);
