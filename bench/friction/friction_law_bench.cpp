@@ -14,6 +14,7 @@
 #include <string>
 
 #include "friction/friction_law.hpp"
+#include "support/table1_laws.hpp"
 
 namespace tribo::friction {
 namespace {
@@ -29,18 +30,7 @@ const std::array<double, kSpeeds>& slipSpeeds() {
   return speeds;
 }
 
-// Table 1 of the seed paper (Roh & Yoo 2007); stribeck with v_st = 0.1 and viscous 0.01.
-LawSpec table1(const std::string& name) {
-  if (name == "coulomb") return {"coulomb", {{"mu", 0.3}}, {}};
-  if (name == "roh_yoo") {
-    return {
-        name, {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}}, {}};
-  }
-  if (name == "stribeck") {
-    return {name, {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_st", 0.1}, {"viscous", 0.01}}, {}};
-  }
-  return {name, {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"v_d", 0.15}}, {}};
-}
+using tribo::test::table1;
 
 void BM_FrictionCoefficient(benchmark::State& state, const std::string& name) {
   const auto law = makeFrictionLaw(table1(name));

@@ -9,21 +9,12 @@
 
 #include "friction/friction_law.hpp"
 #include "friction/roh_yoo_law.hpp"
+#include "support/table1_laws.hpp"
 
 namespace tribo::friction {
 namespace {
 
-LawSpec table1(const std::string& name) {
-  if (name == "coulomb") return {"coulomb", {{"mu", 0.3}}, {}};
-  if (name == "roh_yoo") {
-    return {
-        name, {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}}, {}};
-  }
-  if (name == "stribeck") {
-    return {name, {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_st", 0.1}, {"viscous", 0.01}}, {}};
-  }
-  return {name, {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"v_d", 0.15}}, {}};
-}
+using test::table1;
 
 LawSpec with(const std::string& name, const std::string& key, double value) {
   LawSpec spec = table1(name);
