@@ -82,9 +82,8 @@ SweepReport serve(const MpiSession& mpi, const SweepPlan& plan, const fs::path& 
   report.points = plan.grid.size();
   report.resumed = results.doneCount();
   report.dropped = results.droppedLines();
-  std::deque<std::size_t> pending;
-  for (std::size_t i = 0; i < plan.grid.size(); ++i)
-    if (!results.done()[i]) pending.push_back(i);
+  const std::vector<std::size_t> not_done = results.pendingPoints();
+  std::deque<std::size_t> pending(not_done.begin(), not_done.end());
   std::mutex mutex;  // guards pending, report, results' order, progress
   SweepProgress progress(progress_out, report.points, report.resumed);
   std::string write_error;  // the first failure to append; ends the job

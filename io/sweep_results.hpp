@@ -68,6 +68,13 @@ class SweepResultsFile {
   // Per point: already in the file.
   const std::vector<bool>& done() const { return done_; }
   std::size_t doneCount() const { return done_count_; }
+  // The points not yet in the file, in point order.
+  std::vector<std::size_t> pendingPoints() const {
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < done_.size(); ++i)
+      if (!done_[i]) out.push_back(i);
+    return out;
+  }
   // Lines dropped when resuming (cut off or not a row of this sweep).
   std::size_t droppedLines() const { return dropped_; }
 

@@ -150,9 +150,7 @@ SweepReport runSweepLocally(const SweepPlan& plan, const fs::path& out,
   report.resumed = results.doneCount();
   report.dropped = results.droppedLines();
 
-  std::vector<std::size_t> pending;
-  for (std::size_t i = 0; i < plan.grid.size(); ++i)
-    if (!results.done()[i]) pending.push_back(i);
+  const std::vector<std::size_t> pending = results.pendingPoints();
   std::atomic<std::size_t> cursor{0};
   std::atomic<bool> stop{false};
   std::mutex mutex;  // guards report and the first write error
