@@ -18,6 +18,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "contact/polyhedron_contacts.hpp"
+
 namespace tribo::contact {
 
 namespace {
@@ -29,6 +31,7 @@ enum class PairKind {
   kSphereSphere,
   kBoxSphere,
   kSphereBox,
+  kPolyhedra,  // FCL's EPA point grown into a face manifold (polyhedron_contacts.hpp)
   kFcl
 };
 
@@ -109,7 +112,9 @@ struct CollisionDetector::Impl {
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
   std::vector<int> candidates;
-  std::vector<int> unbounded_pairs;  // pairs with a half-space: never culled
+  std::vector<int> unbounded_pairs;   // pairs with a half-space: never culled
+  std::vector<Polyhedron> polyhedra;  // by geometry, for kPolyhedra pairs (else empty)
+  ClipScratch clip_scratch;
   bool timing = false;
   double fcl_seconds = 0.0;
 
@@ -145,6 +150,7 @@ struct CollisionDetector::Impl {
         for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
         return;
       }
+      case PairKind::kPolyhedra:
       case PairKind::kFcl:
         break;
     }
@@ -163,6 +169,7 @@ struct CollisionDetector::Impl {
       fcl::collide(objects[b].get(), objects[a].get(), request, result);
     else
       fcl::collide(objects[a].get(), objects[b].get(), request, result);
+    const auto first = out.size();
     for (std::size_t i = 0; i < result.numContacts(); ++i) {
       const auto& c = result.getContact(i);
       const double depth = mesh ? std::abs(c.penetration_depth) : c.penetration_depth;
@@ -178,6 +185,16 @@ struct CollisionDetector::Impl {
     if (timing)
       fcl_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (kinds[p] == PairKind::kPolyhedra && out.size() > first) {
+      // EPA's deepest point gives the normal and depth; a face contact becomes its manifold.
+      const ContactPoint epa = *std::max_element(
+          out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+          [](const ContactPoint& x, const ContactPoint& y) { return x.depth < y.depth; });
+      out.resize(first);
+      if (polyhedronContacts(polyhedra[a], poses[a], polyhedra[b], poses[b], epa.normal, epa.depth,
+                             p, max_points, clip_scratch, out) == 0)
+        out.push_back(epa);
+    }
   }
 };
 
@@ -219,14 +236,25 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
       if (ta == ShapeType::kBox && tb == ShapeType::kSphere) kind = PairKind::kBoxSphere;
       if (ta == ShapeType::kSphere && tb == ShapeType::kBox) kind = PairKind::kSphereBox;
     }
+    // Convex meshes with boxes or each other (box/box keeps FCL's own manifold).
+    if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(m.shapes[a]) &&
+        isPolyhedron(m.shapes[b]) && !(ta == ShapeType::kBox && tb == ShapeType::kBox))
+      kind = PairKind::kPolyhedra;
     m.kinds.push_back(kind);
-    m.any_fcl_pair = m.any_fcl_pair || kind == PairKind::kFcl;
+    m.any_fcl_pair = m.any_fcl_pair || kind == PairKind::kFcl || kind == PairKind::kPolyhedra;
     m.pair_index[pairKey(a, b)] = static_cast<int>(p);
   }
   // FCL objects only where FCL is asked something: an FCL pair, or the broadphase.
   std::vector<bool> needed(n, options.broadphase);
-  for (std::size_t p = 0; p < m.pairs.size(); ++p)
-    if (m.kinds[p] == PairKind::kFcl) needed[m.pairs[p].first] = needed[m.pairs[p].second] = true;
+  m.polyhedra.resize(n);
+  for (std::size_t p = 0; p < m.pairs.size(); ++p) {
+    const auto [a, b] = m.pairs[p];
+    if (m.kinds[p] == PairKind::kFcl || m.kinds[p] == PairKind::kPolyhedra)
+      needed[a] = needed[b] = true;
+    if (m.kinds[p] != PairKind::kPolyhedra) continue;
+    for (int g : {a, b})
+      if (m.polyhedra[g].faces.empty()) m.polyhedra[g] = makePolyhedron(m.shapes[g]);
+  }
   for (int g = 0; g < n; ++g) {
     m.objects.push_back(needed[g] ? std::make_unique<TrackedObject>(makeFclGeometry(m.shapes[g]))
                                   : nullptr);

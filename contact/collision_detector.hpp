@@ -6,9 +6,10 @@
 // sphere/box) use it unless switched off; every other pair (box/box, cylinder, capsule,
 // cone, convex and triangle meshes among themselves) goes to FCL's narrowphase (libccd
 // GJK/EPA, FCL's box/box manifold, BVH traversal for meshes), at most
-// `max_points_per_pair` points. With `broadphase` on, FCL's dynamic AABB tree culls the
-// pairs first; half-spaces stay out of the tree (their AABB is infinite) and their pairs are
-// always tested.
+// `max_points_per_pair` points. A convex mesh with a box or a convex mesh grows EPA's single
+// point into the face manifold (contact/polyhedron_contacts.hpp) unless switched off. With
+// `broadphase` on, FCL's dynamic AABB tree culls the pairs first; half-spaces stay out of
+// the tree (their AABB is infinite) and their pairs are always tested.
 // Not here: forces, materials, which pairs exist (the model builder), contact identity
 // between steps (contact/stick_anchor.hpp).
 #pragma once
@@ -29,6 +30,9 @@ struct CollisionOptions {
   bool broadphase = false;                // cull pairs with FCL's dynamic AABB tree
   bool closed_form_box_halfspace = true;  // exact corners instead of FCL's single point
   bool closed_form_primitives = true;     // other closed forms (see primitive_contacts.hpp)
+  // Convex meshes resting on boxes or on each other: the face manifold around FCL's single
+  // GJK/EPA point (contact/polyhedron_contacts.hpp).
+  bool polyhedron_manifold = true;
   int max_points_per_pair = 8;
   // Automatic pairs (a scene that lists no contacts): do bodies joined by a joint collide?
   bool joined_bodies_collide = false;

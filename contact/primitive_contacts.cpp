@@ -57,8 +57,9 @@ int rimContacts(const Plane& plane, const Eigen::Vector3d& c, const Eigen::Vecto
   return added;
 }
 
-// Farthest-point thinning of out[first..] down to max_points, keeping the deepest first.
-void thin(std::vector<ContactPoint>& out, std::size_t first, int max_points) {
+}  // namespace
+
+void thinContacts(std::vector<ContactPoint>& out, std::size_t first, int max_points) {
   const std::size_t n = out.size() - first;
   if (max_points <= 0 || n <= static_cast<std::size_t>(max_points)) return;
   std::vector<ContactPoint> all(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
@@ -81,8 +82,6 @@ void thin(std::vector<ContactPoint>& out, std::size_t first, int max_points) {
     pick = next;
   }
 }
-
-}  // namespace
 
 int boxHalfSpaceContacts(const Eigen::Isometry3d& box_pose, const Eigen::Vector3d& half_extents,
                          const Eigen::Isometry3d& plane_pose, int pair,
@@ -153,7 +152,7 @@ int halfSpaceContacts(const Shape& shape, const Eigen::Isometry3d& pose,
       const auto& vertices = shape.mesh->vertices;
       for (std::size_t v = 0; v < vertices.size(); ++v)
         addIfBelow(plane, pose * vertices[v], pair, static_cast<int>(v), out);
-      thin(out, first, max_points);
+      thinContacts(out, first, max_points);
       return static_cast<int>(out.size() - first);
     }
     case ShapeType::kHalfSpace:

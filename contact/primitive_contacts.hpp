@@ -45,4 +45,8 @@ int boxSphereContact(const Eigen::Isometry3d& box_pose, const Eigen::Vector3d& h
                      const Eigen::Vector3d& centre, double radius, int pair,
                      std::vector<ContactPoint>& out);
 
+// Farthest-point thinning of out[first..] down to max_points (<= 0: no limit): the deepest
+// point first, then each time the point farthest from those kept.
+void thinContacts(std::vector<ContactPoint>& out, std::size_t first, int max_points);
+
 }  // namespace tribo::contact

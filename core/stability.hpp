@@ -2,10 +2,20 @@
 // model, so a run whose step is too large is flagged before it produces a plausible-looking
 // wrong answer.
 //
-// Each element is reduced to the linear test system  x'' + (c/m) x' + (k/m) x = 0:
-//   contact pair:  k = n k_point, c = n c_point, n = 4 points (a box resting on a face),
-//                  m = the dynamic body's mass (reduced mass if both are dynamic);
-//                  Hunt-Crossley is linearized at the static depth under m g;
+// Each element is reduced to the linear test system  x'' + (c/m) x' + (k/m) x = 0, with m
+// the dynamic body's mass (reduced mass if both are dynamic):
+//   contact pair, normal: k = n dF/dd, c = n dF/dd' of the pair's normal law at rest, n = 4
+//                  points (a box resting on a face). Linear: k, c as given. Nonlinear
+//                  (hertz, hunt_crossley, recurdyn): the tangent at the static depth d0
+//                  where the n points share the resting load W (the dynamic body's weight,
+//                  the heavier one's if both are dynamic): k d0^p = W / n, so
+//                    dF/dd = p W / (n d0);  dF/dd' = 0 (hertz), alpha W / n
+//                    (hunt_crossley), havsin(d0, 0, 0, d_max, c) (recurdyn).
+//                  Without gravity there is no static depth: the stated depth 1e-4 m, with
+//                  a note. A deeper contact (an impact, a stack's lower pairs) is stiffer:
+//                  the limit falls as d^-(p-1)/2;
+//   contact pair, stateful friction (elastic_stick): its stick spring-damper, k = n k_t,
+//                  c = n c_t (read off the law's stuck force), tangential;
 //   spring-damper: k, c as given, m as above;
 //   friction:      c/m = g mu'(v) (the sticking slope of the law under the body's weight), at
 //                  the steepest of 16 samples over [0, stick speed]; for a law whose slope is
@@ -15,7 +25,11 @@
 // spectral radius <= 1 (undamped: RK4 h w < 2 sqrt(2), semi-implicit Euler h w < 2; real
 // axis: RK4 2.785, Dormand-Prince 5(4) 3.307). For dopri5 it bounds the internal steps the
 // error control will settle on (a cost estimate, not a warning); bdf has no explicit limit.
-// Not here: nonlinear instability, contact chatter, accuracy (see the README's measurements).
+// Not here: rotational modes (a flat box's pitch on its corners, or its yaw on the stick
+// springs, has up to sqrt(3) times the frequency of its translation), shapes resting on more
+// or fewer than 4 points (linear law: a disc on 8 rim points has sqrt(2) times the
+// frequency, a sphere on one point half), nonlinear instability, contact chatter, accuracy
+// (see the README's measurements).
 #pragma once
 
 #include <string>

@@ -5,7 +5,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
 
+#include "contact/normal_law.hpp"
 #include "core/constraint_solver.hpp"
 
 namespace tribo::io {
@@ -75,13 +77,21 @@ void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
                    {"baumgarte_beta", o.baumgarte_beta},
                    {"output_interval", scene.output.interval}};
   nlohmann::json materials = nlohmann::json::array();
-  for (const auto& m : model.materials)
-    materials.push_back(
-        {{"normal_law",
-          m.normal.type == contact::NormalLawType::kLinear ? "linear" : "hunt_crossley"},
-         {"stiffness", m.normal.stiffness},
-         {"damping", m.normal.damping},
-         {"friction_law", std::string(m.friction->name())}});
+  for (const auto& m : model.materials) {
+    nlohmann::json material = {{"normal_law", contact::normalLawName(m.normal.type)},
+                               {"stiffness", m.normal.stiffness},
+                               {"damping", m.normal.damping},
+                               {"friction_law", std::string(m.friction->name())}};
+    // The depth exponent of the nonlinear laws (hertz: always 3/2), and where recurdyn's
+    // damping is full.
+    if (m.normal.type == contact::NormalLawType::kHertz) material["exponent"] = 1.5;
+    if (m.normal.type == contact::NormalLawType::kHuntCrossley ||
+        m.normal.type == contact::NormalLawType::kRecurDyn)
+      material["exponent"] = m.normal.exponent;
+    if (m.normal.type == contact::NormalLawType::kRecurDyn)
+      material["max_depth"] = m.normal.max_depth;
+    materials.push_back(std::move(material));
+  }
   j["settings"]["materials"] = materials;
   if (isAdaptive(o.integrator)) {
     j["settings"]["relative_tolerance"] = o.relative_tolerance;

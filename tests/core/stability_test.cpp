@@ -5,12 +5,73 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "core/simulator.hpp"
 #include "test_models.hpp"
 
 namespace tribo {
 namespace {
+
+constexpr double kG = 9.81;
+constexpr double kRk4RealAxis = 2.785293563;  // root of |1 + z + z^2/2 + z^3/6 + z^4/24| = 1
+
+// A 1 kg box (0.2 x 0.2 x 0.1 m) on the ground, translating in the x-z plane (no rotation:
+// one mass on the normal and one on the tangential contact spring), `depth` into it.
+ModelBuilder boxWith(const contact::Material& material, IntegratorType integrator, double dt,
+                     double depth, const Vec3& velocity = Vec3::Zero()) {
+  ModelBuilder b;
+  b.options().integrator = integrator;
+  b.options().time_step = dt;
+  Body box;
+  box.name = "box";
+  box.mass = 1.0;
+  box.inertia = test::boxInertia(1.0, Vec3(0.2, 0.2, 0.1));
+  box.position = Vec3(0, 0, 0.05 - depth);
+  box.velocity = velocity;
+  const BodyIndex ib = b.addBody(box);
+  const int ground = b.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace());
+  const int shape = b.addGeometry("box_shape", ib, contact::Shape::box(Vec3(0.1, 0.1, 0.05)));
+  b.addContactPair(ground, shape, b.addMaterial(material));
+  b.addJoint("slide", JointType::kPlanarTranslation, BodyIndex::world(), ib, box.position,
+             Vec3::UnitY());
+  return b;
+}
+
+contact::Material frictionless(const contact::NormalLaw& law) {
+  contact::Material m = test::coulombMaterial(0.0, 1.0, 0.0);
+  m.normal = law;
+  return m;
+}
+
+contact::Material elasticStick(double k_t, double c_t) {
+  contact::Material m;
+  m.normal = {contact::NormalLawType::kLinear, 1e4, 0.0};  // soft: the stick spring limits
+  m.friction = friction::makeFrictionLaw(
+      {"elastic_stick", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"stiffness", k_t}, {"damping", c_t}}, {}});
+  return m;
+}
+
+// Depth where the law carries a quarter of the 1 kg box's weight (bisection on the law).
+double staticDepth(const contact::NormalLaw& law) {
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (law.force(mid, 0.0) < kG / 4 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Closed-form limits of x'' + c x' + k x = 0 (per unit mass). Semi-implicit Euler: the
+// one-step matrix has trace 2 - h c - h^2 k and determinant 1 - h c, inside the unit circle
+// while k h^2 + 2 c h <= 4. RK4: 2 sqrt(2) / w undamped; overdamped (real eigenvalues), the
+// real-axis limit over the fastest rate.
+double semiImplicitLimit(double k, double c) { return 4.0 / (c + std::sqrt(c * c + 4.0 * k)); }
+double rk4UndampedLimit(double k) { return 2.0 * std::sqrt(2.0) / std::sqrt(k); }
+double rk4OverdampedLimit(double k, double c) {
+  EXPECT_GT(c * c, 4.0 * k) << "not overdamped";
+  return kRk4RealAxis / (0.5 * (c + std::sqrt(c * c - 4.0 * k)));
+}
 
 TEST(StableStep, MatchesKnownBoundariesOfTheUndampedOscillator) {
   const double w = 50.0;
@@ -62,6 +123,144 @@ TEST(StabilityEstimate, UndampedContactBouncesStablyBelowAndBlowsUpAboveTheLimit
   EXPECT_NEAR(limit * std::sqrt(4 * k / m), 2 * std::sqrt(2.0), 1e-6);
   EXPECT_LT(run(0.5 * limit), 0.51);  // never faster than the impact speed (plus gravity)
   EXPECT_GT(run(1.2 * limit), 1.0);   // energy grows without a source
+}
+
+TEST(StabilityEstimate, NonlinearNormalLawsUseTheirTangentAtTheStaticDepth) {
+  // Each law's tangent (dF/dd, dF/dd') at the depth where the four corners share the weight,
+  // found here by bisection and central differences on the law itself, against the closed-
+  // form limits: Hertz undamped (RK4 2 sqrt(2)/w), RecurDyn overdamped by its ramped-in
+  // damping (RK4 2.785/rate), all three under semi-implicit Euler.
+  using contact::NormalLawType;
+  const contact::NormalLaw hertz{NormalLawType::kHertz, 1e9, 0.0};
+  const contact::NormalLaw hc{NormalLawType::kHuntCrossley, 1e9, 0.3, 1.5};
+  const contact::NormalLaw recurdyn{NormalLawType::kRecurDyn, 1e7, 2000.0, 1.3, 2e-5};
+  for (const contact::NormalLaw& law : {hertz, hc, recurdyn}) {
+    const std::string name = contact::normalLawName(law.type);
+    const double d0 = staticDepth(law), dd = 1e-6 * d0;
+    const double k = 4 * (law.force(d0 + dd, 0) - law.force(d0 - dd, 0)) / (2 * dd);
+    const double c = 4 * (law.force(d0, 1e-3) - law.force(d0, -1e-3)) / 2e-3;
+    for (IntegratorType integrator : {IntegratorType::kSemiImplicitEuler, IntegratorType::kRk4}) {
+      const StabilityReport r =
+          estimateStableStep(*boxWith(frictionless(law), integrator, 1e-4, d0).build());
+      EXPECT_NE(r.limit.element.find("normal (" + name + " at its static depth"), std::string::npos)
+          << r.limit.element;
+      double expected = semiImplicitLimit(k, c);
+      if (integrator == IntegratorType::kRk4)
+        expected = law.type == NormalLawType::kHertz      ? rk4UndampedLimit(k)
+                   : law.type == NormalLawType::kRecurDyn ? rk4OverdampedLimit(k, c)
+                                                          : stableStep(integrator, k, c);
+      EXPECT_NEAR(r.limit.max_step / expected, 1.0, 1e-6) << name << " " << r.limit.element;
+    }
+  }
+  // The linear law at the same place is independent of depth: 2 sqrt(2) / sqrt(4 k / m).
+  const contact::NormalLaw linear{NormalLawType::kLinear, 1e6, 0.0};
+  EXPECT_NEAR(
+      estimateStableStep(*boxWith(frictionless(linear), IntegratorType::kRk4, 1e-4, 0).build())
+              .limit.max_step /
+          rk4UndampedLimit(4e6),
+      1.0, 1e-6);
+}
+
+TEST(StabilityEstimate, WithoutGravityANonlinearLawIsTakenAtTheStatedDepthWithANote) {
+  const contact::NormalLaw hertz{contact::NormalLawType::kHertz, 1e9, 0.0};
+  ModelBuilder b = boxWith(frictionless(hertz), IntegratorType::kRk4, 1e-4, 0.0);
+  b.options().gravity = Vec3::Zero();
+  const StabilityReport r = estimateStableStep(*b.build());
+  EXPECT_NE(r.limit.element.find("stated depth 0.0001 m"), std::string::npos) << r.limit.element;
+  EXPECT_NEAR(r.limit.max_step / rk4UndampedLimit(4 * 1.5 * 1e9 * std::sqrt(1e-4)), 1.0, 1e-6);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("no gravity"), std::string::npos) << r.notes[0];
+}
+
+TEST(StabilityEstimate, ElasticStickSpringIsATangentialSpringDamperOnTheBody) {
+  // Four corners' stick springs on the 1 kg box: k = 4 k_t, c = 4 c_t per unit mass.
+  struct Case {
+    double k_t, c_t;
+  };
+  for (const Case& s : {Case{1e6, 0.0}, Case{1e6, 2e4}}) {
+    const double k = 4 * s.k_t, c = 4 * s.c_t;
+    for (IntegratorType integrator : {IntegratorType::kSemiImplicitEuler, IntegratorType::kRk4}) {
+      const StabilityReport r = estimateStableStep(
+          *boxWith(elasticStick(s.k_t, s.c_t), integrator, 1e-4, kG / 4e4).build());
+      EXPECT_NE(r.limit.element.find("friction (elastic_stick stick spring)"), std::string::npos)
+          << r.limit.element;
+      const double expected = integrator == IntegratorType::kSemiImplicitEuler
+                                  ? semiImplicitLimit(k, c)
+                                  : (c == 0 ? rk4UndampedLimit(k) : rk4OverdampedLimit(k, c));
+      EXPECT_NEAR(r.limit.max_step / expected, 1.0, 1e-6) << s.c_t << " " << r.limit.element;
+    }
+  }
+}
+
+// Largest speed over `seconds` of the box stepped at h, and whether the run was stopped (a
+// failed step: the energy guard or a non-finite state) or a contact broke loose.
+struct Probe {
+  double vmax = 0.0;
+  bool stopped = false, slid = false;
+};
+
+Probe probe(ModelBuilder b, double seconds) {
+  Simulator sim(b.build());
+  Probe p;
+  const double h = sim.model().options.time_step;
+  for (long i = 0; i < std::lround(seconds / h); ++i) {
+    if (!sim.step().ok) {
+      p.stopped = true;
+      return p;
+    }
+    p.vmax = std::max(p.vmax, sim.state().bodies[0].velocity.norm());
+    for (const auto& a : sim.state().stick_anchors) p.slid = p.slid || a.sliding;
+  }
+  return p;
+}
+
+// Steps the box nudged at v0 from rest at 0.5, 0.99, 1.01 and 1.05 times the estimate. The
+// nudge is small (the linear regime the estimate is for): both modes are undamped, so a
+// stable step keeps the speed at the nudge (semi-implicit Euler's step-end speed swings up to
+// 1/sqrt(1 - (h w / 2)^2) of it: 1.15 at 0.5, 7.1 at 0.99), and past the limit it grows
+// until the contact's nonlinearity (no pull; breakaway at mu_s F_n) caps it or the run is
+// stopped.
+void expectTheEstimateSeparatesStableFromUnstable(
+    const std::function<ModelBuilder(IntegratorType, double, const Vec3&)>& box, const Vec3& nudge,
+    const char* what) {
+  const double v0 = nudge.norm();
+  for (IntegratorType integrator : {IntegratorType::kSemiImplicitEuler, IntegratorType::kRk4}) {
+    const std::string who = std::string(what) + ", " + integratorName(integrator);
+    const double limit =
+        estimateStableStep(*box(integrator, 1e-4, Vec3::Zero()).build()).limit.max_step;
+    const bool euler = integrator == IntegratorType::kSemiImplicitEuler;
+    for (const double f : {0.5, 0.99}) {
+      const Probe p = probe(box(integrator, f * limit, nudge), 0.5);
+      EXPECT_FALSE(p.stopped || p.slid) << who << " at " << f;
+      EXPECT_LT(p.vmax, (euler ? 1.01 / std::sqrt(1.0 - f * f) : 1.01) * v0) << who << " at " << f;
+    }
+    for (const double f : {1.01, 1.05}) {
+      const Probe p = probe(box(integrator, f * limit, nudge), 0.5);
+      EXPECT_TRUE(p.stopped || p.vmax > 30 * v0) << who << " at " << f << ": vmax " << p.vmax;
+    }
+  }
+}
+
+TEST(StabilityEstimate, HertzContactAtRestIsStableBelowAndDivergesJustPastTheEstimate) {
+  // Undamped Hertz box at its static depth (1.8 um), nudged down at 10 um/s (amplitude 0.2%
+  // of the depth).
+  const contact::NormalLaw hertz{contact::NormalLawType::kHertz, 1e9, 0.0};
+  const double d0 = staticDepth(hertz);
+  expectTheEstimateSeparatesStableFromUnstable(
+      [&](IntegratorType integrator, double h, const Vec3& v) {
+        return boxWith(frictionless(hertz), integrator, h, d0, v);
+      },
+      Vec3(0, 0, -1e-5), "hertz");
+}
+
+TEST(StabilityEstimate, StuckElasticStickContactHoldsBelowAndChattersJustPastTheEstimate) {
+  // A box held by four undamped stick springs, nudged sideways at 10 um/s: the elongation
+  // (5e-9 m) is far below what mu_s holds (1.5e-6 m), so a stable step keeps it stuck.
+  expectTheEstimateSeparatesStableFromUnstable(
+      [&](IntegratorType integrator, double h, const Vec3& v) {
+        return boxWith(elasticStick(1e6, 0.0), integrator, h, kG / 4e4, v);
+      },
+      Vec3(1e-5, 0, 0), "elastic_stick");
 }
 
 }  // namespace
