@@ -15,6 +15,7 @@
 #include "core/stability.hpp"
 #include "io/oscillation_summary.hpp"
 #include "io/scene_loader.hpp"
+#include "io/scene_parameters.hpp"
 #include "io/scene_run.hpp"
 
 namespace tribo::app {
@@ -252,7 +253,18 @@ std::vector<IntegratorType> parseIntegrators(const std::string& list) {
   std::vector<IntegratorType> out;
   std::stringstream in(list);
   for (std::string name; std::getline(in, name, ',');) out.push_back(integratorFromName(name));
+  if (out.empty()) throw std::invalid_argument("--integrators: no integrator named");
   return out;
+}
+
+// The value of `option`: a number > 0, and a whole one when `whole`.
+double positiveNumber(const std::string& option, const std::string& text, bool whole) {
+  const auto v = io::parseNumber(text);
+  if (!v || !(*v > 0) || (whole && (*v != std::floor(*v) || *v > 1e6)))
+    throw std::invalid_argument(option + ": expected a " +
+                                (whole ? "whole number from 1 to 1e6" : "positive number") +
+                                ", found '" + text + "'");
+  return *v;
 }
 
 }  // namespace
@@ -279,9 +291,9 @@ int tradeoffCommand(const std::vector<std::string>& args) {
       else if (a == "--out")
         out_dir = args[++i];
       else if (a == "--window")
-        window = std::stod(args[++i]);
+        window = positiveNumber(a, args[++i], false);
       else if (a == "--repeat")
-        repeat = std::max(1, std::stoi(args[++i]));
+        repeat = static_cast<int>(positiveNumber(a, args[++i], true));
       else if (a == "--integrators")
         wanted = parseIntegrators(args[++i]);
       else if (a.rfind("--", 0) == 0)

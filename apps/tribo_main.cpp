@@ -1,6 +1,7 @@
 // The `tribo` command: parse arguments, load the scene (io), run it (core via io), write
 // results, print a short summary. Exit status: 0 success, 1 usage error, 2 bad scene or
 // parameters, 3 the run diverged (partial results written and marked so), 4 output error.
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "apps/info_command.hpp"
 #include "apps/sweep_command.hpp"
 #include "apps/tradeoff_command.hpp"
+#include "core/constraint_rows.hpp"
 #include "io/result_writer.hpp"
 #include "io/scene_loader.hpp"
 #include "io/scene_run.hpp"
@@ -54,8 +56,21 @@ void printSummary(const tribo::io::Scene& scene, const tribo::io::RunResult& r,
   std::printf("time to 98%%      %.6g s\n", s.time_to_98);
   std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
   std::printf("max penetration  %.3g m\n", r.stats.max_penetration);
-  std::printf("stable step     < %.3g s (%s)\n", r.stability.limit.max_step,
-              r.stability.limit.element.c_str());
+  const auto& limit = r.stability.limit;
+  const std::string method = tribo::integratorName(o.integrator);
+  if (o.integrator == tribo::IntegratorType::kBdf)
+    std::printf("stable step      n/a (%s is implicit: no explicit step limit)\n", method.c_str());
+  else if (std::isinf(limit.max_step))
+    std::printf(
+        "stable step      not estimated (no contact, spring or friction slope bounds it)\n");
+  else
+    std::printf("stable step     < %.4g s (%s%s)\n", limit.max_step, limit.element.c_str(),
+                tribo::isAdaptive(o.integrator) ? "; bounds the internal steps" : "");
+  // Joint drift of the Baumgarte-stabilized constraints: position level |Phi| [m or -],
+  // velocity level |J v| [m/s or rad/s], the largest over the run.
+  if (!tribo::constraintRows(*scene.model).empty())
+    std::printf("constraint drift max |Phi| %.2g, max |J v| %.2g\n", r.stats.max_constraint_error,
+                r.stats.max_constraint_rate_error);
   std::printf("speed            %.4g simulated s per wall s (%.3g s wall)\n",
               r.simulated_seconds / r.wall_seconds, r.wall_seconds);
   std::printf("results          %s\n", out.string().c_str());

@@ -7,51 +7,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "cli_support.hpp"
+
 namespace {
 
-namespace fs = std::filesystem;
-const std::string kTribo = TRIBO_BINARY;
-const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
-
-struct Result {
-  int status;
-  std::string output;  // stdout and stderr
-};
-
-Result run(const std::string& command) {
-  FILE* p = popen((command + " 2>&1").c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (p && std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int raw = p ? pclose(p) : -1;
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
-}
-
-Result tribo(const std::string& args) { return run(kTribo + " " + args); }
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-long lines(const fs::path& p) {
-  const std::string s = slurp(p);
-  return std::count(s.begin(), s.end(), '\n');
-}
+using namespace tribo::test;
 
 // Starts `tribo ARGS...` in the background, output to /dev/null.
 pid_t spawn(const std::vector<std::string>& args) {
@@ -67,17 +35,13 @@ pid_t spawn(const std::vector<std::string>& args) {
   return pid;
 }
 
-class SweepCli : public ::testing::Test {
+class SweepCli : public CliTest {
  protected:
+  SweepCli() : CliTest("tribo_sweep_cli_") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tribo_sweep_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
+    CliTest::SetUp();
     fs::create_directories(dir_);
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
 };
 
 // 12 points of some 25 ms of one core each (Release; 2 ms steps over 20 s): slow enough to
@@ -95,7 +59,7 @@ std::string joined(const std::vector<std::string>& args) {
 
 TEST_F(SweepCli, KilledSweepRestartedWritesTheSameFileAsAnUninterruptedOne) {
   const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
-  const Result r = tribo("sweep" + joined(kKillable) + " --out " + whole.string());
+  const Result r = runTribo("sweep" + joined(kKillable) + " --out " + whole.string());
   ASSERT_EQ(r.status, 0) << r.output;
   ASSERT_EQ(lines(whole / "results.csv"), 1 + 12);
 
@@ -115,7 +79,7 @@ TEST_F(SweepCli, KilledSweepRestartedWritesTheSameFileAsAnUninterruptedOne) {
   EXPECT_GE(kept, 3);
   EXPECT_LT(kept, 12);
 
-  const Result resumed = tribo("sweep" + joined(kKillable) + " --out " + killed.string());
+  const Result resumed = runTribo("sweep" + joined(kKillable) + " --out " + killed.string());
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find(std::to_string(kept) + " resumed"), std::string::npos)
       << resumed.output;
@@ -133,7 +97,7 @@ TEST_F(SweepCli, TwoMpiRanksWriteTheSameFileAsOneProcess) {
       " sweep " + kBelt +
       " --grid v_b=1:3:5 --list friction=roh_yoo,recurdyn --set dt=0.008 "
       "--set output_interval=0.008 --set duration=200 --settle 1e-3 --jobs 1 --quiet --out ";
-  const Result local = tribo(sweep + (dir_ / "local").string());
+  const Result local = runTribo(sweep + (dir_ / "local").string());
   ASSERT_EQ(local.status, 0) << local.output;
   // Root may run it (CI does); two ranks on a two-core machine need --oversubscribe only
   // where fewer cores are free.
@@ -143,8 +107,8 @@ TEST_F(SweepCli, TwoMpiRanksWriteTheSameFileAsOneProcess) {
   const char* asan = std::getenv("ASAN_OPTIONS");
   const std::string env =
       "ASAN_OPTIONS='" + std::string(asan ? asan : "") + (asan ? ":" : "") + "detect_leaks=0' ";
-  const Result ranks = run(env + mpirun + " --allow-run-as-root --oversubscribe -n 2 " + kTribo +
-                           sweep + (dir_ / "mpi").string());
+  const Result ranks = runCommand(env + mpirun + " --allow-run-as-root --oversubscribe -n 2 " +
+                                  kTribo + sweep + (dir_ / "mpi").string());
   ASSERT_EQ(ranks.status, 0) << ranks.output;
   EXPECT_NE(ranks.output.find("2 MPI ranks"), std::string::npos) << ranks.output;
   EXPECT_EQ(slurp(dir_ / "mpi" / "results.csv"), slurp(dir_ / "local" / "results.csv"));
@@ -154,7 +118,7 @@ TEST_F(SweepCli, TwoMpiRanksWriteTheSameFileAsOneProcess) {
 
 TEST_F(SweepCli, ExitStatusAndMessages) {
   const std::string out = " --out " + (dir_ / "s").string();
-  EXPECT_EQ(tribo("sweep --help").status, 0);
+  EXPECT_EQ(runTribo("sweep --help").status, 0);
   struct Case {
     std::string args;
     int status;
@@ -170,20 +134,20 @@ TEST_F(SweepCli, ExitStatusAndMessages) {
         Case{"sweep /nonexistent/scene.yaml" + out + " --grid v_b=1:2:2", 2,
              "/nonexistent/scene.yaml"},
         Case{"sweep " + kBelt + out + " --grid v_b=1:2:2 --set k=abc", 2, "expected a number"}}) {
-    const Result r = tribo(c.args);
+    const Result r = runTribo(c.args);
     EXPECT_EQ(r.status, c.status) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
   }
   // A folder that holds another sweep is refused, not mixed.
   const std::string quick = " --set duration=2 --set dt=0.008 --quiet";
-  ASSERT_EQ(tribo("sweep " + kBelt + out + " --list v_b=1,2" + quick).status, 0);
-  const Result other = tribo("sweep " + kBelt + out + " --list v_b=1,3" + quick);
+  ASSERT_EQ(runTribo("sweep " + kBelt + out + " --list v_b=1,2" + quick).status, 0);
+  const Result other = runTribo("sweep " + kBelt + out + " --list v_b=1,3" + quick);
   EXPECT_EQ(other.status, 1);
   EXPECT_NE(other.output.find("holds a different sweep"), std::string::npos) << other.output;
   // Output below a file cannot be written.
   std::ofstream(dir_ / "file") << "x";
-  const Result unwritable = tribo("sweep " + kBelt + " --out " + (dir_ / "file" / "s").string() +
-                                  " --list v_b=1" + quick);
+  const Result unwritable = runTribo("sweep " + kBelt + " --out " + (dir_ / "file" / "s").string() +
+                                     " --list v_b=1" + quick);
   EXPECT_EQ(unwritable.status, 4) << unwritable.output;
 }
 

@@ -2,56 +2,23 @@
 // error text a user sees for bad input.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
+
+#include "cli_support.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
-const std::string kTribo = TRIBO_BINARY;
-const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
+using namespace tribo::test;
 
-struct Result {
-  int status;
-  std::string output;  // stdout and stderr
-};
-
-Result run(const std::string& args) {
-  const std::string cmd = kTribo + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (p && std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int raw = p ? pclose(p) : -1;
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class TriboCli : public ::testing::Test {
+class TriboCli : public CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tribo_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  TriboCli() : CliTest("tribo_cli_") {}
 };
 
 TEST_F(TriboCli, RunWritesTrajectoryAndSummary) {
-  const Result r = run("run " + kBelt + " --out " + dir_.string() + " --set duration=3");
+  const Result r = runTribo("run " + kBelt + " --out " + dir_.string() + " --set duration=3");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("amplitude (p-p)"), std::string::npos) << r.output;
   const std::string csv = slurp(dir_ / "trajectory.csv");
@@ -66,6 +33,83 @@ TEST_F(TriboCli, RunWritesTrajectoryAndSummary) {
   EXPECT_FALSE(fs::exists(dir_ / "trajectory.csv.partial"));
 }
 
+TEST_F(TriboCli, SummaryNamesEveryNormalLawWithItsExponent) {
+  // The ball-drop scene with its Hunt-Crossley material swapped for each other law: the
+  // summary's materials carry the law's own name (not "linear" or "hunt_crossley" for all).
+  const std::string base = slurp(std::string(TRIBO_SOURCE_DIR) + "/scenes/ball_drop.yaml");
+  const std::string hc =
+      "{law: hunt_crossley, stiffness: $k, exponent: 1.5, restitution: $e,\n"
+      "             impact_speed: $v_impact}";
+  ASSERT_NE(base.find(hc), std::string::npos) << "scenes/ball_drop.yaml changed its material";
+  struct Case {
+    std::string law, yaml, expected;
+  };
+  for (const Case& c :
+       {Case{"hertz", "{law: hertz, stiffness: $k}", "\"exponent\": 1.5"},
+        Case{"recurdyn",
+             "{law: recurdyn, stiffness: $k, exponent: 1.3, damping: 50, max_depth: 1e-4}",
+             "\"max_depth\": 0.0001"},
+        Case{"hunt_crossley", hc, "\"exponent\": 1.5"},
+        Case{"linear", "{law: linear, stiffness: 1e5, damping: 100}", "\"damping\": 100.0"}}) {
+    std::string text = base;
+    text.replace(text.find(hc), hc.size(), c.yaml);
+    fs::create_directories(dir_);
+    const fs::path scene = dir_ / (c.law + ".yaml");
+    std::ofstream(scene) << text;
+    const fs::path out = dir_ / c.law;
+    const Result r =
+        runTribo("run " + scene.string() + " --out " + out.string() + " --set duration=0.01");
+    ASSERT_EQ(r.status, 0) << c.law << "\n" << r.output;
+    const std::string summary = slurp(out / "summary.json");
+    EXPECT_NE(summary.find("\"normal_law\": \"" + c.law + "\""), std::string::npos) << c.law << "\n"
+                                                                                    << summary;
+    EXPECT_NE(summary.find(c.expected), std::string::npos) << c.law << "\n" << summary;
+  }
+}
+
+// The summary's stable-step line: the a-priori limit of an explicit method and what sets it
+// (the box's contact, 316 rad/s, not the 5.5 rad/s spring), none for an implicit one; and the
+// joint's drift, which stays at roundoff: the planar joint's box neither leaves its plane nor
+// turns. A scene without joints prints no drift.
+TEST_F(TriboCli, SummaryPrintsTheStepLimitOrItsAbsenceAndTheJointDrift) {
+  const Result rk4 = runTribo("run " + kBelt + " --out " + dir_.string() + " --set duration=3");
+  ASSERT_EQ(rk4.status, 0) << rk4.output;
+  const auto summary = nlohmann::json::parse(slurp(dir_ / "summary.json"));
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      rk4.output, m,
+      std::regex(
+          R"(\nstable step     < (\S+) s \(contact pair \(belt_surface, box_shape\) normal\)\n)")))
+      << rk4.output;
+  const double limit = summary["stability"]["estimated_max_step"].get<double>();
+  EXPECT_NEAR(std::stod(m[1]), limit, 5e-4 * limit);
+  ASSERT_TRUE(std::regex_search(
+      rk4.output, m, std::regex(R"(\nconstraint drift max \|Phi\| (\S+), max \|J v\| (\S+)\n)")))
+      << rk4.output;
+  const double phi = summary["run"]["max_constraint_error"].get<double>();
+  const double rate = summary["run"]["max_constraint_rate_error"].get<double>();
+  EXPECT_NEAR(std::stod(m[1]), phi, 0.05 * phi);
+  EXPECT_NEAR(std::stod(m[2]), rate, 0.05 * rate);
+  EXPECT_LT(phi, 1e-12);
+  EXPECT_LT(rate, 1e-12);
+
+  const Result bdf = runTribo("run " + kBelt + " --out " + (dir_ / "bdf").string() +
+                              " --set duration=1 --set integrator=bdf");
+  ASSERT_EQ(bdf.status, 0) << bdf.output;
+  EXPECT_NE(bdf.output.find("\nstable step      n/a (bdf is implicit: no explicit step limit)\n"),
+            std::string::npos)
+      << bdf.output;
+  EXPECT_EQ(bdf.output.find("< inf"), std::string::npos) << bdf.output;
+  EXPECT_NE(bdf.output.find("\nconstraint drift max |Phi| "), std::string::npos) << bdf.output;
+
+  const Result free_box =
+      runTribo("run " + std::string(TRIBO_SOURCE_DIR) +
+               "/scenes/belt_free_box.yaml --set duration=0.5 --out " + (dir_ / "free").string());
+  ASSERT_EQ(free_box.status, 0) << free_box.output;
+  EXPECT_NE(free_box.output.find("\nstable step     < "), std::string::npos) << free_box.output;
+  EXPECT_EQ(free_box.output.find("constraint drift"), std::string::npos) << free_box.output;
+}
+
 TEST_F(TriboCli, BadParametersFailWithFileAndKeyAndWriteNothing) {
   struct Case {
     std::string set;
@@ -75,7 +119,7 @@ TEST_F(TriboCli, BadParametersFailWithFileAndKeyAndWriteNothing) {
        {Case{"--set nope=1", "nope"}, Case{"--set friction=magic", "magic"},
         Case{"--set a=0.9", "a must be > 1"}, Case{"--set mu_k=0.4", "mu_s must exceed mu_k"},
         Case{"--set k=abc", "expected a number"}}) {
-    const Result r = run("run " + kBelt + " --out " + dir_.string() + " " + c.set);
+    const Result r = runTribo("run " + kBelt + " --out " + dir_.string() + " " + c.set);
     EXPECT_EQ(r.status, 2) << c.set << "\n" << r.output;
     EXPECT_NE(r.output.find("belt.yaml"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << r.output;
@@ -85,7 +129,7 @@ TEST_F(TriboCli, BadParametersFailWithFileAndKeyAndWriteNothing) {
 
 TEST_F(TriboCli, DivergedRunExitsNonZeroAndMarksTheSummary) {
   const Result r =
-      run("run " + kBelt + " --out " + dir_.string() + " --set dt=0.02 --set duration=5");
+      runTribo("run " + kBelt + " --out " + dir_.string() + " --set dt=0.02 --set duration=5");
   EXPECT_EQ(r.status, 3) << r.output;
   EXPECT_NE(r.output.find("warning: time step 0.02 s exceeds"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("diverged at step"), std::string::npos) << r.output;
@@ -95,19 +139,19 @@ TEST_F(TriboCli, DivergedRunExitsNonZeroAndMarksTheSummary) {
 }
 
 TEST_F(TriboCli, UsageErrors) {
-  EXPECT_EQ(run("").status, 1);
-  EXPECT_EQ(run("fly").status, 1);
-  EXPECT_EQ(run("run " + kBelt).status, 1);  // no --out
-  const Result missing = run("run /nonexistent/scene.yaml --out " + dir_.string());
+  EXPECT_EQ(runTribo("").status, 1);
+  EXPECT_EQ(runTribo("fly").status, 1);
+  EXPECT_EQ(runTribo("run " + kBelt).status, 1);  // no --out
+  const Result missing = runTribo("run /nonexistent/scene.yaml --out " + dir_.string());
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.output.find("/nonexistent/scene.yaml"), std::string::npos);
-  EXPECT_EQ(run("--help").status, 0);
+  EXPECT_EQ(runTribo("--help").status, 0);
 }
 
 TEST_F(TriboCli, InfoPrintsTheUrdfTreeAndRefusesAnInvalidOne) {
   const fs::path corpus = fs::path(TRIBO_SOURCE_DIR) / ".." / "shared" / "urdf";
   if (!fs::exists(corpus / "bullet3" / "r2d2.urdf")) GTEST_SKIP() << "no URDF corpus at " << corpus;
-  const Result ok = run("info " + (corpus / "bullet3" / "r2d2.urdf").string());
+  const Result ok = runTribo("info " + (corpus / "bullet3" / "r2d2.urdf").string());
   EXPECT_EQ(ok.status, 0) << ok.output;
   EXPECT_NE(ok.output.find("links 16, joints 15 (5 continuous, 7 fixed, 1 prismatic, 2 revolute), "
                            "total mass 65.25 kg"),
@@ -115,7 +159,7 @@ TEST_F(TriboCli, InfoPrintsTheUrdfTreeAndRefusesAnInvalidOne) {
       << ok.output;
   EXPECT_NE(ok.output.find("left_gripper  [revolute 'left_gripper_joint']"), std::string::npos);
   const Result loop =
-      run("info " + (corpus / "ros_urdf/urdf/test/fail_pr2_desc_loop.urdf").string());
+      runTribo("info " + (corpus / "ros_urdf/urdf/test/fail_pr2_desc_loop.urdf").string());
   EXPECT_EQ(loop.status, 2) << loop.output;
   EXPECT_NE(loop.output.find("no root link: joint"), std::string::npos) << loop.output;
 }

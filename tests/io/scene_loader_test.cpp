@@ -105,7 +105,9 @@ TEST(SceneLoader, BeltSceneBuildsThePapersModel) {
   EXPECT_EQ(box.name, "box");
   EXPECT_EQ(box.kind, BodyKind::kDynamic);
   EXPECT_DOUBLE_EQ(box.mass, 10.0);
-  EXPECT_EQ(box.position, Vec3(0, 0, 0.05));
+  // Centre at half its height less the static contact depth m g / (4 k_c).
+  EXPECT_NEAR(box.position.z(), 0.05 - 10.0 * 9.81 / (4 * 2.5e5), 1e-12);
+  EXPECT_EQ(box.position.x(), 0.0);
   // Solid box 0.2 x 0.2 x 0.1 m of 10 kg: I = m/12 (b^2 + c^2), ...
   EXPECT_NEAR(box.inertia(0, 0), 10.0 / 12 * (0.04 + 0.01), 1e-12);
   EXPECT_NEAR(box.inertia(1, 1), 10.0 / 12 * (0.04 + 0.01), 1e-12);
