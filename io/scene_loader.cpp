@@ -5,8 +5,8 @@
 //                 [gravity] [baumgarte: {[alpha], [beta]}]
 //                 [rtol] [atol] [max_step] [event_location]   (dopri5, bdf only)
 //                 [collision: {[broadphase], [closed_form_box_halfspace],
-//                  [closed_form_primitives], [max_points_per_pair], [joined_bodies_collide],
-//                  [match_radius]}]
+//                  [closed_form_primitives], [polyhedron_manifold], [max_points_per_pair],
+//                  [joined_bodies_collide], [match_radius]}]
 //   bodies: - name [kind: dynamic|kinematic] mass (dynamic) [inertia: 3 or 6 values]
 //             [position] [orientation: w x y z | rpy: roll pitch yaw] [velocity]
 //             [angular_velocity] [surface_velocity] [geometry: - name shape [size]
@@ -363,12 +363,14 @@ class Loader {
     if (auto x = m.get("constraints")) readConstraintOptions(*x, o.constraints);
     if (auto x = m.get("collision")) {
       const Map c(*x, {"broadphase", "closed_form_box_halfspace", "closed_form_primitives",
-                       "max_points_per_pair", "joined_bodies_collide", "match_radius"});
+                       "polyhedron_manifold", "max_points_per_pair", "joined_bodies_collide",
+                       "match_radius"});
       if (auto a = c.get("broadphase")) o.collision.broadphase = a->flag();
       if (auto a = c.get("closed_form_box_halfspace"))
         o.collision.closed_form_box_halfspace = a->flag();
       if (auto a = c.get("max_points_per_pair")) o.collision.max_points_per_pair = a->integer(1);
       if (auto a = c.get("closed_form_primitives")) o.collision.closed_form_primitives = a->flag();
+      if (auto a = c.get("polyhedron_manifold")) o.collision.polyhedron_manifold = a->flag();
       if (auto a = c.get("joined_bodies_collide")) o.collision.joined_bodies_collide = a->flag();
       if (auto a = c.get("match_radius")) o.collision.match_radius = a->positive();
     }

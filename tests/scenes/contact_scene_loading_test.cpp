@@ -121,6 +121,33 @@ materials: [{name: any, friction: coulomb, default: true}]
   EXPECT_EQ(io::loadSceneFromString(joined, "filters.yaml").model->contact_pairs.size(), 2u);
 }
 
+TEST(ContactScenes, EveryCollisionOptionKeyReachesTheModel) {
+  const std::string text = R"(
+simulation:
+  collision: {broadphase: true, closed_form_box_halfspace: false, closed_form_primitives: false,
+              polyhedron_manifold: false, max_points_per_pair: 3, joined_bodies_collide: true,
+              match_radius: 0.002}
+bodies:
+  - {name: a, mass: 1, geometry: [{name: ga, shape: sphere, radius: 0.1}]}
+)";
+  const contact::CollisionOptions& c =
+      io::loadSceneFromString(text, "options.yaml").model->options.collision;
+  const contact::CollisionOptions defaults;
+  EXPECT_NE(c.broadphase, defaults.broadphase);
+  EXPECT_TRUE(c.broadphase);
+  EXPECT_FALSE(c.closed_form_box_halfspace);
+  EXPECT_FALSE(c.closed_form_primitives);
+  EXPECT_FALSE(c.polyhedron_manifold);
+  EXPECT_TRUE(defaults.polyhedron_manifold);
+  EXPECT_EQ(c.max_points_per_pair, 3);
+  EXPECT_TRUE(c.joined_bodies_collide);
+  EXPECT_EQ(c.match_radius, 0.002);
+  EXPECT_NE(test::sceneErrorOf(
+                test::replaced(text, "polyhedron_manifold: false", "polyhedron_manifold: 2"))
+                .find("simulation.collision.polyhedron_manifold: expected true or false"),
+            std::string::npos);
+}
+
 std::string errorOf(const std::string& text) {
   try {
     loadShapes(text);
