@@ -48,13 +48,18 @@ void printSummary(const tribo::io::Scene& scene, const tribo::io::RunResult& r,
   std::printf("status           %s\n",
               r.complete ? "complete" : ("DIVERGED: " + r.message).c_str());
   static const char* kAxis[] = {"x", "y", "z"};
-  std::printf("observed         %s.%s\n", scene.output.summary.body.c_str(),
-              kAxis[scene.output.summary.coordinate]);
-  std::printf("oscillating      %s (%zu cycles)\n", s.oscillating ? "yes" : "no", s.cycles.size());
-  std::printf("amplitude (p-p)  %.6g m\n", s.amplitude_pp);
-  std::printf("period           %.6g s\n", s.period);
-  std::printf("time to 98%%      %.6g s\n", s.time_to_98);
-  std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
+  if (scene.output.summary.body.empty()) {
+    std::printf("observed         nothing (the scene's output.summary names no body)\n");
+  } else {
+    std::printf("observed         %s.%s\n", scene.output.summary.body.c_str(),
+                kAxis[scene.output.summary.coordinate]);
+    std::printf("oscillating      %s (%zu cycles)\n", s.oscillating ? "yes" : "no",
+                s.cycles.size());
+    std::printf("amplitude (p-p)  %.6g m\n", s.amplitude_pp);
+    std::printf("period           %.6g s\n", s.period);
+    std::printf("time to 98%%      %.6g s\n", s.time_to_98);
+    std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
+  }
   std::printf("max penetration  %.3g m\n", r.stats.max_penetration);
   const auto& limit = r.stability.limit;
   const std::string method = tribo::integratorName(o.integrator);

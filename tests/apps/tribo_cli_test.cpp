@@ -2,6 +2,7 @@
 // error text a user sees for bad input.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -108,6 +109,20 @@ TEST_F(TriboCli, SummaryPrintsTheStepLimitOrItsAbsenceAndTheJointDrift) {
   ASSERT_EQ(free_box.status, 0) << free_box.output;
   EXPECT_NE(free_box.output.find("\nstable step     < "), std::string::npos) << free_box.output;
   EXPECT_EQ(free_box.output.find("constraint drift"), std::string::npos) << free_box.output;
+}
+
+TEST_F(TriboCli, SceneWithoutASummaryBodySaysSoInsteadOfFigures) {
+  fs::create_directories(dir_);
+  const fs::path scene = dir_ / "fall.yaml";
+  std::ofstream(scene) << "simulation: {duration: 0.1}\n"
+                          "bodies: [{name: ball, mass: 1, inertia: [1, 1, 1]}]\n";
+  const Result r = runTribo("run " + scene.string() + " --out " + (dir_ / "out").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(
+      r.output.find("\nobserved         nothing (the scene's output.summary names no body)\n"),
+      std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("amplitude (p-p)"), std::string::npos) << r.output;
 }
 
 TEST_F(TriboCli, BadParametersFailWithFileAndKeyAndWriteNothing) {
