@@ -71,6 +71,7 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
 }
 
 int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) {
+  ws.joint_friction_converged = true;
   if (reaction_.empty()) return 0;
   int iterations = 0;
   for (; iterations < kMaxFrictionIterations; ++iterations) {
@@ -94,9 +95,10 @@ int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) 
     solver.addForcesAndResolve(delta_, ws);
     if (change <= kFrictionTolerance * (1.0 + largest)) {
       ++iterations;
-      break;
+      return iterations;
     }
   }
+  ws.joint_friction_converged = iterations < kMaxFrictionIterations;
   return iterations;
 }
 

@@ -9,11 +9,11 @@
 // on the multipliers, which depend on the friction: the stage iterates
 //   N_k = |reaction(lambda_k)|,  tau_k = friction(N_k),  lambda_k+1 = solve with tau_k
 // re-using the factorization of J M^-1 J^T (ConstraintSolver::addForcesAndResolve) until
-// the torques change by less than 1e-12 relative, at most 20 times (a capped iteration is not
-// reported). Measured: 1 iteration when the load does not depend on the friction (a slider
-// pushed through its centre), 4-6 for a pendulum's pin with mu r <= 0.015 m, 13 at
-// mu r = 0.06 m; the map contracts by about mu r m d / I_pivot.
-// Reaction load: revolute |F| (radial and axial; moments are not turned into load);
+// the torques change by less than 1e-12 relative, at most 20 times (a step whose state
+// hit the cap is counted in StepStats and warned about after the run). Measured: 1 iteration when
+// the load does not depend on the friction (a slider pushed through its centre), 4-6 for a
+// pendulum's pin with mu r <= 0.015 m, 13 at mu r = 0.06 m; the map contracts by about mu r m d /
+// I_pivot. Reaction load: revolute |F| (radial and axial; moments are not turned into load);
 // prismatic |F - (F.z) z| (the part normal to the slide).
 // Not here: the drive constraints (core/constraint_rows.hpp), contact friction.
 #pragma once

@@ -120,6 +120,8 @@ StepStatus Simulator::check() {
       << " J the system had and received (step too large for the stiffest element?)";
     return failed(energy.body, "energy", s.str());
   }
+  if (!ws.joint_friction_converged && stats_.joint_friction_unconverged++ == 0)
+    stats_.first_unconverged_time = state_.time;
   stats_.contact_count = static_cast<int>(ws.contacts.size());
   stats_.max_penetration = std::max(stats_.max_penetration, ws.max_penetration);
   stats_.max_constraint_error = std::max(stats_.max_constraint_error, ws.max_constraint_error);

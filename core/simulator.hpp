@@ -45,6 +45,10 @@ struct StepStats {
   long events = 0;
   double last_event_time = std::numeric_limits<double>::quiet_NaN();  // [s]
   long evaluations = 0;
+  // Steps whose state's joint friction (reaction load) did not settle within the iteration
+  // cap (core/joint_forces.hpp), and the time of the first.
+  long joint_friction_unconverged = 0;
+  double first_unconverged_time = std::numeric_limits<double>::quiet_NaN();  // [s]
 };
 
 class Simulator {

@@ -40,6 +40,9 @@ struct Workspace {
   double max_constraint_error = 0.0;       // max |Phi| [m or -]
   double max_constraint_rate_error = 0.0;  // max |J v|
   double max_penetration = 0.0;            // [m]
+  // Joint friction under reaction load (core/joint_forces.hpp): false when its fixed-point
+  // iteration stopped at the cap before the friction torques settled.
+  bool joint_friction_converged = true;
 };
 
 }  // namespace tribo

@@ -137,7 +137,8 @@ void writeSummaryJson(const std::filesystem::path& file, const Scene& scene,
       {"integrator_steps", result.stats.integrator_steps},
       {"rejected_steps", result.stats.rejected_steps},
       {"force_evaluations", result.stats.evaluations},
-      {"events", result.stats.events}};
+      {"events", result.stats.events},
+      {"joint_friction_unconverged_steps", result.stats.joint_friction_unconverged}};
   const auto tmp = temporaryFor(file);
   {
     std::ofstream out(tmp);

@@ -85,6 +85,15 @@ RunResult runScene(const Scene& scene, const RunMonitor& monitor) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.simulated_seconds = sim.state().time;
   result.stats = sim.stats();
+  if (result.stats.joint_friction_unconverged > 0) {
+    std::ostringstream w;
+    w << "joint friction under reaction load did not settle within its iteration cap at "
+      << result.stats.joint_friction_unconverged
+      << " steps (first at t = " << result.stats.first_unconverged_time
+      << " s): its torque there is approximate (friction coefficient times pin radius large "
+         "against the joint's lever; see docs/joints.md)";
+    result.warnings.push_back(w.str());
+  }
   result.summary = summarize(result.trajectory, model, scene.output.summary);
   return result;
 }

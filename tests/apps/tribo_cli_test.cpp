@@ -111,6 +111,44 @@ TEST_F(TriboCli, SummaryPrintsTheStepLimitOrItsAbsenceAndTheJointDrift) {
   EXPECT_EQ(free_box.output.find("constraint drift"), std::string::npos) << free_box.output;
 }
 
+// Pin friction whose reaction-load iteration cannot settle (mu r m d / I_O = 1.7) is warned
+// about and counted in summary.json; the same pendulum with a small pin is not.
+TEST_F(TriboCli, UnsettledJointFrictionIsWarnedAndCounted) {
+  fs::create_directories(dir_);
+  auto scene = [&](const std::string& name, double mu, double radius) {
+    const fs::path path = dir_ / (name + ".yaml");
+    std::ofstream(path)
+        << "simulation: {duration: 0.5, time_step: 0.001}\n"
+           "bodies: [{name: bob, mass: 1, inertia: [0.01, 0.01, 0.01], "
+           "position: [0.5, 0, 0]}]\n"
+           "friction_laws: {coulomb: {mu: "
+        << mu
+        << ", v_eps: 0.01}}\n"
+           "joints: [{name: pin, type: revolute, parent: world, child: bob, anchor: [0, 0, 0], "
+           "axis: [0, 1, 0], friction: {law: coulomb, load: reaction, radius: "
+        << radius << "}}]\n";
+    return path.string();
+  };
+  const Result hard =
+      runTribo("run " + scene("hard", 0.9, 0.5) + " --out " + (dir_ / "hard").string());
+  ASSERT_EQ(hard.status, 0) << hard.output;
+  EXPECT_NE(hard.output.find("tribo: warning: joint friction under reaction load did not settle"),
+            std::string::npos)
+      << hard.output;
+  const auto summary = nlohmann::json::parse(slurp(dir_ / "hard" / "summary.json"));
+  EXPECT_GT(summary["run"]["joint_friction_unconverged_steps"].get<long>(), 0);
+  EXPECT_FALSE(summary["warnings"].empty());
+
+  const Result easy =
+      runTribo("run " + scene("easy", 0.3, 0.05) + " --out " + (dir_ / "easy").string());
+  ASSERT_EQ(easy.status, 0) << easy.output;
+  EXPECT_EQ(easy.output.find("did not settle"), std::string::npos) << easy.output;
+  EXPECT_EQ(nlohmann::json::parse(
+                slurp(dir_ / "easy" / "summary.json"))["run"]["joint_friction_unconverged_steps"]
+                .get<long>(),
+            0);
+}
+
 TEST_F(TriboCli, SceneWithoutASummaryBodySaysSoInsteadOfFigures) {
   fs::create_directories(dir_);
   const fs::path scene = dir_ / "fall.yaml";

@@ -221,6 +221,38 @@ TEST(JointElements, PinFrictionOfASwingingPendulumMatchesTheReducedReference) {
   const double th_engine = std::atan2(p.x(), -p.z());
   EXPECT_NEAR(th_engine, th, 2e-6) << "reference " << th;
   EXPECT_LT(std::abs(th), std::numbers::pi / 2 - 0.05);  // friction took energy out
+  EXPECT_EQ(sim.stats().joint_friction_unconverged, 0);  // mu r m d / I_O = 0.03: contracts
+}
+
+// The reaction-load iteration contracts by about mu r m d / I_O (docs/joints.md); near 1 it
+// cannot settle in its 20 iterations, and the run must say so rather than pass it over.
+TEST(JointElements, PinFrictionThatCannotSettleIsCounted) {
+  const double m = 1.0, d = 0.5, i_cm = 0.01;
+  auto pendulum = [&](double mu, double r) {
+    ModelBuilder b;
+    b.options().time_step = 1e-3;
+    b.options().gravity = Vec3(0, 0, -kG);
+    Body bob;
+    bob.name = "bob";
+    bob.mass = m;
+    bob.inertia = Mat3::Identity() * i_cm;
+    bob.position = Vec3(d, 0, 0);
+    const BodyIndex ib = b.addBody(bob);
+    const int j = b.addJoint("pin", JointType::kRevolute, BodyIndex::world(), ib, Vec3::Zero(),
+                             Vec3::UnitY());
+    b.setJointFriction(
+        j, {friction::makeFrictionLaw(
+                {"coulomb", {{"mu", mu}, {"v_eps", 1e-2}}, {{"regularization", "tanh"}}}),
+            JointFrictionLoad::kReaction, 0.0, r});
+    Simulator sim(b.build());
+    run(sim, 0.5);
+    return sim.stats();
+  };
+  EXPECT_EQ(pendulum(0.3, 0.05).joint_friction_unconverged, 0);
+  // mu r m d / I_O = 0.9 * 0.5 / 0.26 = 1.7: no contraction while the pin slips.
+  const StepStats hard = pendulum(0.9, 0.5);
+  EXPECT_GT(hard.joint_friction_unconverged, 0);
+  EXPECT_GE(hard.first_unconverged_time, 0.0);
 }
 
 TEST(JointElements, PositionDriveTracksAndItsTorqueIsInertiaTimesAcceleration) {
