@@ -31,19 +31,16 @@ Eigen::Vector3d ElasticStickLaw::stickForce(const Eigen::Vector3d& slip, double 
                                             const StickView& view, double* mu_out) const {
   Eigen::Vector3d f = Eigen::Vector3d::Zero();
   if (fn > 0.0) {
-    if (view.sliding) {
-      // Kinetic friction opposes the slip; where the slip has turned against the direction
-      // the contact was sliding in at the step's start (u), it keeps opposing that direction
-      // until the step ends and advance() re-sticks the contact. Without this, the stages of
-      // a multi-stage step that straddle the stop see opposite forces that cancel, and a
-      // contact can slide on at a constant small speed forever (RK4: measured 0.7 mm/s after
-      // 3 s for a box launched at 0.5 m/s).
+    // A sliding contact whose slip has turned against the direction it was sliding in at the
+    // step's start (its dragged anchor u) has stopped within the step: it feels its anchored
+    // spring, as the stuck contact advance() will make of it. Without this, the stages of a
+    // multi-stage step that straddle the stop see opposite kinetic forces that cancel, and the
+    // contact can slide on at a constant small speed for ever (RK4: measured 0.7 mm/s 3 s
+    // after a box was launched at 0.5 m/s).
+    const bool stopped = view.sliding && slip.dot(view.elongation) < 0.0;
+    if (view.sliding && !stopped) {
       const double speed = slip.norm();
-      const double hold = view.elongation.norm();
-      if (hold > 0.0 && slip.dot(view.elongation) <= 0.0)
-        f = (-params_.mu_k * fn / hold) * view.elongation;
-      else if (speed > 0.0)
-        f = (-params_.mu_k * fn / speed) * slip;
+      if (speed > 0.0) f = (-params_.mu_k * fn / speed) * slip;
     } else {
       f = -params_.stiffness * view.elongation - params_.damping * slip;
       const double magnitude = f.norm();
