@@ -121,4 +121,14 @@ std::shared_ptr<const MeshData> makeConvex(const MeshData& mesh) {
   return out;
 }
 
+MeshData boxMeshData(const Eigen::Vector3d& h) {
+  MeshData m;
+  for (int k = 0; k < 8; ++k)
+    m.vertices.emplace_back((k & 1) ? h.x() : -h.x(), (k & 2) ? h.y() : -h.y(),
+                            (k & 4) ? h.z() : -h.z());
+  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return m;
+}
+
 }  // namespace tribo::contact

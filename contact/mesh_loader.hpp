@@ -3,7 +3,8 @@
 // transform applied (COLLADA's unit scale included, its up-axis not: coordinates are taken
 // as written), duplicate vertices joined, polygons triangulated; `scale` multiplies each axis
 // afterwards. A convex mesh is checked to be convex (every vertex on or below every face
-// plane, within 1e-9 of the mesh size) and its triangles turned to face outwards.
+// plane, within 1e-9 of the mesh size) and its triangles turned to face outwards. A box's own
+// mesh (boxMeshData) is built here too, for the shapes that treat a box as a polyhedron.
 // Not here: computing convex hulls (a non-convex file given as convex_mesh is an error),
 // repairing meshes, textures or materials.
 #pragma once
@@ -26,6 +27,10 @@ class MeshError : public std::runtime_error {
 
 std::shared_ptr<const MeshData> loadMesh(const std::string& path,
                                          const Eigen::Vector3d& scale = Eigen::Vector3d::Ones());
+
+// A box of half extents h as a mesh: its 8 corners (corner k has bit 0, 1, 2 for +x, +y, +z)
+// and 12 outward triangles.
+MeshData boxMeshData(const Eigen::Vector3d& h);
 
 // Checks convexity and orients the triangles outwards; throws MeshError naming the first
 // vertex found above a face plane.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "contact/mesh_loader.hpp"
 #include "contact/primitive_contacts.hpp"
 
 namespace tribo::contact {
@@ -13,17 +14,6 @@ namespace {
 
 constexpr double kFaceTolerance = 1e-9;  // coplanar triangles: normals and offsets (x size)
 constexpr double kFaceBias = 1.05;       // a face overlap within 5% of EPA's depth is a face
-
-// The 12 outward triangles of a box's 8 corners (corner k has bit 0, 1, 2 for +x, +y, +z).
-MeshData boxMesh(const Eigen::Vector3d& h) {
-  MeshData m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.emplace_back((k & 1) ? h.x() : -h.x(), (k & 2) ? h.y() : -h.y(),
-                            (k & 4) ? h.z() : -h.z());
-  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  return m;
-}
 
 double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
@@ -94,7 +84,8 @@ Polyhedron makePolyhedron(const Shape& shape) {
   if (!isPolyhedron(shape))
     throw std::invalid_argument("polyhedron: a box or convex_mesh was expected, got " +
                                 shapeName(shape.type));
-  const MeshData mesh = shape.type == ShapeType::kBox ? boxMesh(shape.half_extents) : *shape.mesh;
+  const MeshData mesh =
+      shape.type == ShapeType::kBox ? boxMeshData(shape.half_extents) : *shape.mesh;
   Polyhedron p;
   p.vertices = mesh.vertices;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();

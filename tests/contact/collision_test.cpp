@@ -47,7 +47,7 @@ TEST(BoxHalfSpace, TiltedPlaneAndBoxAgreeWithFclDeepestPoint) {
   int compared = 0;
   for (int i = 0; i < 20; ++i) {
     const Eigen::Quaterniond q(Eigen::AngleAxisd(0.17 * i, Eigen::Vector3d(1, -1, 2).normalized()));
-    const Eigen::Isometry3d box = pose(plane * Eigen::Vector3d(0, 0, 0.02 + 0.003 * i) , q);
+    const Eigen::Isometry3d box = pose(plane * Eigen::Vector3d(0, 0, 0.02 + 0.003 * i), q);
     const std::vector<Eigen::Isometry3d> poses{plane, box};
     std::vector<ContactPoint> pa, pb;
     a.detect(poses, pa);
@@ -82,8 +82,9 @@ TEST(BoxBox, FclContactsPointFromAIntoB) {
   CollisionDetector d({Shape::box(half), Shape::box(half)}, {{0, 1}});
   std::vector<ContactPoint> out;
   // B sits on A, overlapping by 1 mm.
-  const std::vector<Eigen::Isometry3d> poses{pose({0, 0, 0}, Eigen::Quaterniond::Identity()),
-                                             pose({0.2, 0.1, 0.999}, Eigen::Quaterniond::Identity())};
+  const std::vector<Eigen::Isometry3d> poses{
+      pose({0, 0, 0}, Eigen::Quaterniond::Identity()),
+      pose({0.2, 0.1, 0.999}, Eigen::Quaterniond::Identity())};
   d.detect(poses, out);
   ASSERT_FALSE(out.empty());
   for (const auto& c : out) {

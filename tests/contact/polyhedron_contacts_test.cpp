@@ -11,6 +11,7 @@
 
 #include "contact/collision_detector.hpp"
 #include "contact/mesh_loader.hpp"
+#include "test_poses.hpp"
 
 namespace tribo::contact {
 namespace {
@@ -18,23 +19,10 @@ namespace {
 using Eigen::Isometry3d;
 using Eigen::Vector3d;
 
-Isometry3d pose(const Vector3d& p, const Eigen::Quaterniond& q = Eigen::Quaterniond::Identity()) {
-  Isometry3d t = Isometry3d::Identity();
-  t.linear() = q.toRotationMatrix();
-  t.translation() = p;
-  return t;
-}
+using test::pose;
 
 // A box of half extents h as a convex mesh (12 triangles; makeConvex orients them).
-Shape boxAsMesh(const Vector3d& h) {
-  MeshData m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.emplace_back((k & 1) ? h.x() : -h.x(), (k & 2) ? h.y() : -h.y(),
-                            (k & 4) ? h.z() : -h.z());
-  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  return Shape::convexMesh(makeConvex(m));
-}
+Shape boxAsMesh(const Vector3d& h) { return Shape::convexMesh(makeConvex(boxMeshData(h))); }
 
 TEST(Polyhedron, MergesCoplanarTrianglesIntoConvexFaces) {
   const Polyhedron cube = makePolyhedron(boxAsMesh({0.1, 0.2, 0.3}));

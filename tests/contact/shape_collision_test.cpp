@@ -8,6 +8,7 @@
 
 #include "contact/collision_detector.hpp"
 #include "contact/mesh_loader.hpp"
+#include "test_poses.hpp"
 
 namespace tribo::contact {
 namespace {
@@ -15,12 +16,7 @@ namespace {
 using Eigen::Isometry3d;
 using Eigen::Vector3d;
 
-Isometry3d pose(const Vector3d& p, const Eigen::Quaterniond& q = Eigen::Quaterniond::Identity()) {
-  Isometry3d t = Isometry3d::Identity();
-  t.linear() = q.toRotationMatrix();
-  t.translation() = p;
-  return t;
-}
+using test::pose;
 
 // A cube of edge 2 a centred on the origin, as a mesh (12 outward triangles).
 std::shared_ptr<const MeshData> cubeMesh(double a) {

@@ -171,6 +171,29 @@ TEST(JointElements, ReactionLoadFrictionSpinsAWheelDownOnItsAxle) {
   EXPECT_NEAR(sim.state().bodies[0].angular_velocity.y(), w0 - mu * m * kG * r / kIz, 1e-6 * w0);
 }
 
+// A bob of mass m and inertia i_cm (each axis) on a pin about y at the origin, released
+// horizontal (centre at (d, 0, 0)); the pin's friction is coulomb (tanh at v_eps) with
+// coefficient mu at radius r under the joint's reaction load.
+std::shared_ptr<const Model> pinnedPendulum(double m, double d, double i_cm, double mu, double r,
+                                            double v_eps, double dt) {
+  ModelBuilder b;
+  b.options().time_step = dt;
+  b.options().gravity = Vec3(0, 0, -kG);
+  Body bob;
+  bob.name = "bob";
+  bob.mass = m;
+  bob.inertia = Mat3::Identity() * i_cm;
+  bob.position = Vec3(d, 0, 0);
+  const BodyIndex ib = b.addBody(bob);
+  const int j =
+      b.addJoint("pin", JointType::kRevolute, BodyIndex::world(), ib, Vec3::Zero(), Vec3::UnitY());
+  b.setJointFriction(
+      j, {friction::makeFrictionLaw(
+              {"coulomb", {{"mu", mu}, {"v_eps", v_eps}}, {{"regularization", "tanh"}}}),
+          JointFrictionLoad::kReaction, 0.0, r});
+  return b.build();
+}
+
 TEST(JointElements, PinFrictionOfASwingingPendulumMatchesTheReducedReference) {
   // The pin load is the reaction |m (a_cm - g)|, which depends on the friction torque
   // itself. Reference: I_O th'' = -m g d sin th - mu tanh(r th' / v_eps) N r with N solved
@@ -200,22 +223,7 @@ TEST(JointElements, PinFrictionOfASwingingPendulumMatchesTheReducedReference) {
     th += h / 6 * (k1t + 2 * k2t + 2 * k3t + k4t);
     w += h / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
   }
-  ModelBuilder b;
-  b.options().time_step = 1e-4;
-  b.options().gravity = Vec3(0, 0, -kG);
-  Body bob;
-  bob.name = "bob";
-  bob.mass = m;
-  bob.inertia = Mat3::Identity() * i_cm;
-  bob.position = Vec3(d, 0, 0);  // th = pi / 2: horizontal
-  const BodyIndex ib = b.addBody(bob);
-  const int j =
-      b.addJoint("pin", JointType::kRevolute, BodyIndex::world(), ib, Vec3::Zero(), Vec3::UnitY());
-  b.setJointFriction(
-      j, {friction::makeFrictionLaw(
-              {"coulomb", {{"mu", mu}, {"v_eps", v_eps}}, {{"regularization", "tanh"}}}),
-          JointFrictionLoad::kReaction, 0.0, r});
-  Simulator sim(b.build());
+  Simulator sim(pinnedPendulum(m, d, i_cm, mu, r, v_eps, 1e-4));
   run(sim, 2.0);
   const Vec3 p = sim.state().bodies[0].position;
   const double th_engine = std::atan2(p.x(), -p.z());
@@ -229,22 +237,7 @@ TEST(JointElements, PinFrictionOfASwingingPendulumMatchesTheReducedReference) {
 TEST(JointElements, PinFrictionThatCannotSettleIsCounted) {
   const double m = 1.0, d = 0.5, i_cm = 0.01;
   auto pendulum = [&](double mu, double r) {
-    ModelBuilder b;
-    b.options().time_step = 1e-3;
-    b.options().gravity = Vec3(0, 0, -kG);
-    Body bob;
-    bob.name = "bob";
-    bob.mass = m;
-    bob.inertia = Mat3::Identity() * i_cm;
-    bob.position = Vec3(d, 0, 0);
-    const BodyIndex ib = b.addBody(bob);
-    const int j = b.addJoint("pin", JointType::kRevolute, BodyIndex::world(), ib, Vec3::Zero(),
-                             Vec3::UnitY());
-    b.setJointFriction(
-        j, {friction::makeFrictionLaw(
-                {"coulomb", {{"mu", mu}, {"v_eps", 1e-2}}, {{"regularization", "tanh"}}}),
-            JointFrictionLoad::kReaction, 0.0, r});
-    Simulator sim(b.build());
+    Simulator sim(pinnedPendulum(m, d, i_cm, mu, r, 1e-2, 1e-3));
     run(sim, 0.5);
     return sim.stats();
   };
