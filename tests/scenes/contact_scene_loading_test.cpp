@@ -130,8 +130,8 @@ simulation:
 bodies:
   - {name: a, mass: 1, geometry: [{name: ga, shape: sphere, radius: 0.1}]}
 )";
-  const contact::CollisionOptions& c =
-      io::loadSceneFromString(text, "options.yaml").model->options.collision;
+  const io::Scene scene = io::loadSceneFromString(text, "options.yaml");
+  const contact::CollisionOptions& c = scene.model->options.collision;
   const contact::CollisionOptions defaults;
   EXPECT_NE(c.broadphase, defaults.broadphase);
   EXPECT_TRUE(c.broadphase);
