@@ -1,12 +1,17 @@
 #include "core/stability.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <utility>
+
+#include "core/constraint_rows.hpp"
 
 namespace tribo {
 
@@ -114,6 +119,191 @@ Tangent stickTangent(const friction::FrictionLaw& law) {
   return {std::max(k, 0.0), std::max(c, 0.0)};
 }
 
+// Rocking of a box resting on a face (see stability.hpp). The pair's geometry at the initial
+// pose: a box on a half-space rests on the face whose outward normal is most nearly against
+// the plane's; two boxes touch by the faces most nearly along the separating axis of least
+// overlap (the face axis of either box along which they are farthest apart, a stack's
+// vertical, as for every pair the boxes are taken to touch there), and the contact patch is
+// the smaller of the two faces with its corners moved into the other face (for faces with
+// parallel edges, their overlap: exact for a stack, staggered or not; for a face turned
+// against the other about the normal, only an approximation of the overlap). Faces that do
+// not overlap along that axis (boxes side by side diagonally, far apart) have no patch.
+// Other shapes have no rocking mode here.
+struct RestingFace {
+  int box = -1;                   // geometry whose face it is
+  Vec3 normal;                    // contact normal (world); its sign does not matter
+  Vec3 centre;                    // of the face (world)
+  std::array<Vec3, 2> edges;      // the face's box axes (world)
+  std::array<double, 2> half;     // and its half extents along them
+  std::array<Vec3, 4> corners;    // the patch's corners, the contact points (world)
+  std::array<Vec3, 2> axes;       // rocking axes: the face's edges, normal to `normal`
+  std::array<int, 2> axis_index;  // which box axis each is (0 x, 1 y, 2 z)
+};
+
+Eigen::Isometry3d geometryPose(const Model& model, const Geometry& geometry) {
+  if (geometry.body.isWorld()) return geometry.local_pose;
+  const Body& body = model.bodies[geometry.body.value];
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = body.orientation.normalized().toRotationMatrix();
+  pose.translation() = body.position;
+  return pose * geometry.local_pose;
+}
+
+// The face of a box (pose, half extents h) whose outward normal is nearest to `towards`.
+RestingFace boxFace(int box, const Eigen::Isometry3d& pose, const Vec3& h, const Vec3& towards) {
+  const Mat3 r = pose.linear();
+  int j = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(r.col(i).dot(towards)) > std::abs(r.col(j).dot(towards))) j = i;
+  const int k = (j + 1) % 3, l = (j + 2) % 3;
+  const int first = std::min(k, l), second = std::max(k, l);
+  const double side = r.col(j).dot(towards) < 0.0 ? -1.0 : 1.0;
+  const Vec3 centre = pose.translation() + side * h[j] * r.col(j);
+  RestingFace face;
+  face.box = box;
+  face.normal = towards.normalized();
+  face.centre = centre;
+  face.edges = {r.col(first), r.col(second)};
+  face.half = {h[first], h[second]};
+  int c = 0;
+  for (const double s1 : {-1.0, 1.0})
+    for (const double s2 : {-1.0, 1.0})
+      face.corners[c++] = centre + s1 * h[first] * r.col(first) + s2 * h[second] * r.col(second);
+  face.axis_index = {first, second};
+  for (int i = 0; i < 2; ++i) {
+    const Vec3 e = r.col(face.axis_index[i]);
+    face.axes[i] = (e - e.dot(face.normal) * face.normal).normalized();
+  }
+  return face;
+}
+
+// Support distance of a box along unit u: max over the box of u . (x - centre).
+double boxSupport(const Mat3& r, const Vec3& h, const Vec3& u) {
+  return h.x() * std::abs(u.dot(r.col(0))) + h.y() * std::abs(u.dot(r.col(1))) +
+         h.z() * std::abs(u.dot(r.col(2)));
+}
+
+std::optional<RestingFace> restingFace(const Model& model, const ContactPair& pair) {
+  using contact::ShapeType;
+  const Geometry& ga = model.geometries[pair.geometry_a];
+  const Geometry& gb = model.geometries[pair.geometry_b];
+  const ShapeType ta = ga.shape.type, tb = gb.shape.type;
+  const Eigen::Isometry3d pa = geometryPose(model, ga), pb = geometryPose(model, gb);
+  if (ta == ShapeType::kBox && tb == ShapeType::kHalfSpace)
+    return boxFace(pair.geometry_a, pa, ga.shape.half_extents, -pb.linear().col(2));
+  if (ta == ShapeType::kHalfSpace && tb == ShapeType::kBox)
+    return boxFace(pair.geometry_b, pb, gb.shape.half_extents, -pa.linear().col(2));
+  if (ta != ShapeType::kBox || tb != ShapeType::kBox) return std::nullopt;
+  const Vec3 d = pb.translation() - pa.translation();
+  const Vec3 &ha = ga.shape.half_extents, &hb = gb.shape.half_extents;
+  Vec3 n = Vec3::UnitZ();
+  double best = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 6; ++i) {
+    const Vec3 u = (i < 3 ? pa : pb).linear().col(i % 3);
+    const double gap =
+        std::abs(u.dot(d)) - boxSupport(pa.linear(), ha, u) - boxSupport(pb.linear(), hb, u);
+    if (gap > best) {
+      best = gap;
+      n = u.dot(d) < 0.0 ? -u : u;  // from a towards b
+    }
+  }
+  const RestingFace fa = boxFace(pair.geometry_a, pa, ha, n);
+  const RestingFace fb = boxFace(pair.geometry_b, pb, hb, -n);
+  const bool b_smaller = fb.half[0] * fb.half[1] <= fa.half[0] * fa.half[1];
+  RestingFace patch = b_smaller ? fb : fa;
+  const RestingFace& other = b_smaller ? fa : fb;
+  for (Vec3& corner : patch.corners) {
+    for (int j = 0; j < 2; ++j) {
+      const double s = (corner - other.centre).dot(other.edges[j]);
+      corner += (std::clamp(s, -other.half[j], other.half[j]) - s) * other.edges[j];
+    }
+  }
+  const double overlap = (patch.corners[3] - patch.corners[0])
+                             .cross(patch.corners[2] - patch.corners[1])
+                             .dot(patch.normal);  // twice the clamped patch's area
+  if (!(std::abs(overlap) > 1e-9 * patch.half[0] * patch.half[1])) return std::nullopt;
+  return patch;
+}
+
+// Which dynamic bodies can turn about an axis through their centre of mass, everything else
+// held still, without breaking a joint equation at the initial pose: every row touching the
+// body is unchanged to first order by that rotation. A free body can about any axis; one on
+// planar_translation, prismatic or fixed about none; one on a revolute joint through its
+// centre of mass about that joint's axis only.
+class TurnCheck {
+ public:
+  explicit TurnCheck(const Model& model) : rows_(model.bodies.size()) {
+    const std::vector<ConstraintRow> rows = constraintRows(model);
+    if (rows.empty()) return;
+    State state;
+    std::vector<Mat3> rotation;
+    for (const Body& body : model.bodies) {
+      state.bodies.push_back(
+          {body.position, body.orientation, body.velocity, body.angular_velocity});
+      rotation.push_back(body.orientation.normalized().toRotationMatrix());
+    }
+    std::vector<RowValue> values(rows.size());
+    evaluateRows(rows, rowGroups(rows), MotionView(state, rotation), 0.0, values);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      for (int k = 0; k < rows[r].body_count; ++k)
+        if (rows[r].body[k] >= 0) rows_[rows[r].body[k]].push_back(values[r].j[k]);
+  }
+
+  bool canTurn(const Model& model, BodyIndex b, const Vec3& axis) const {
+    if (b.isWorld() || model.bodies[b.value].kind != BodyKind::kDynamic) return false;
+    for (const Row6& j : rows_[b.value]) {
+      const Vec3 angular = j.tail<3>().transpose();
+      if (std::abs(angular.dot(axis)) > 1e-9 * (j.head<3>().norm() + angular.norm())) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<std::vector<Row6>> rows_;  // per body: its blocks of the joint rows
+};
+
+// Rocking about `axis` (unit, in the patch) of the bodies on either side that can turn:
+// the largest eigenvalue of the corners' rotational stiffness sum_i g_i g_i^T per unit point
+// stiffness (g_i: the normal displacement of corner i per unit turn of each body about the
+// axis through its centre of mass) against the bodies' inertias about those axes. Zero when
+// neither can turn. The contact's normal stiffness and damping per point then give
+// k/m = k_point * it and c/m = c_point * it (the corners' dampers act on the same lever arms,
+// so the rotational damping is proportional to the stiffness).
+double rockingPerPointStiffness(const Model& model, const TurnCheck& turns, BodyIndex a,
+                                BodyIndex b, const RestingFace& face, const Vec3& axis) {
+  double diag[2] = {0.0, 0.0}, cross = 0.0;
+  int count = 0;
+  const BodyIndex sides[2] = {a, b};
+  std::array<double, 4> lever[2] = {};
+  double inertia[2] = {0.0, 0.0};
+  bool turns_side[2] = {false, false};
+  for (int s = 0; s < 2; ++s) {
+    turns_side[s] = turns.canTurn(model, sides[s], axis);
+    if (!turns_side[s]) continue;
+    const Body& body = model.bodies[sides[s].value];
+    const Mat3 r = body.orientation.normalized().toRotationMatrix();
+    inertia[s] = axis.dot(r * body.inertia * r.transpose() * axis);
+    if (!(inertia[s] > 0.0)) {
+      turns_side[s] = false;
+      continue;
+    }
+    for (int i = 0; i < 4; ++i)
+      lever[s][i] = axis.dot((face.corners[i] - body.position).cross(face.normal));
+    ++count;
+  }
+  if (count == 0) return 0.0;
+  for (int s = 0; s < 2; ++s) {
+    if (!turns_side[s]) continue;
+    for (int i = 0; i < 4; ++i) diag[s] += lever[s][i] * lever[s][i] / inertia[s];
+  }
+  if (count == 2) {
+    for (int i = 0; i < 4; ++i) cross += lever[0][i] * lever[1][i];
+    cross /= std::sqrt(inertia[0] * inertia[1]);
+  }
+  const double mean = 0.5 * (diag[0] + diag[1]), half = 0.5 * (diag[0] - diag[1]);
+  return mean + std::sqrt(half * half + cross * cross);
+}
+
 }  // namespace
 
 double stableStep(IntegratorType integrator, double k_over_m, double c_over_m) {
@@ -150,6 +340,7 @@ StabilityReport estimateStableStep(const Model& model) {
     if (it->second < report.limit.max_step) report.limit = {it->second, element()};
   };
   std::vector<bool> noted(model.materials.size(), false);  // one note per material
+  std::optional<TurnCheck> turns;                          // built at the first box pair
   for (const ContactPair& pair : model.contact_pairs) {
     const Geometry& ga = model.geometries[pair.geometry_a];
     const Geometry& gb = model.geometries[pair.geometry_b];
@@ -165,13 +356,29 @@ StabilityReport estimateStableStep(const Model& model) {
     const double load = restingLoad(model, ga.body, gb.body, g) / kPoints;
     const double depth = load > 0.0 ? depthAtLoad(law, load) : kUnloadedDepth;
     const Tangent normal = tangentAt(law, depth);
-    consider(kPoints * normal.stiffness / m, kPoints * normal.damping / m, [&] {
-      if (!nonlinear) return who() + " normal";
+    auto tangent_at = [&] {
+      if (!nonlinear) return std::string();
       std::ostringstream e;
-      e << who() << " normal (" << contact::normalLawName(law.type) << " at "
+      e << " (" << contact::normalLawName(law.type) << " at "
         << (load > 0.0 ? "its static depth " : "the stated depth ") << depth << " m)";
       return e.str();
-    });
+    };
+    consider(kPoints * normal.stiffness / m, kPoints * normal.damping / m,
+             [&] { return who() + " normal" + tangent_at(); });
+
+    // Rocking of a box on its face, about the face's two edges, on the same corners.
+    if (const std::optional<RestingFace> face = restingFace(model, pair)) {
+      if (!turns) turns.emplace(model);
+      for (int i = 0; i < 2; ++i) {
+        const double per_point =
+            rockingPerPointStiffness(model, *turns, ga.body, gb.body, *face, face->axes[i]);
+        if (!(per_point > 0.0)) continue;
+        consider(normal.stiffness * per_point, normal.damping * per_point, [&] {
+          return who() + " rocking about " + model.geometries[face->box].name + "'s " +
+                 "xyz"[face->axis_index[i]] + " axis" + tangent_at();
+        });
+      }
+    }
     if (nonlinear && !(load > 0.0) && first_of_material) {
       std::ostringstream note;
       note << who() << ": normal law " << contact::normalLawName(law.type)

@@ -14,6 +14,28 @@
 //                  Without gravity there is no static depth: the stated depth 1e-4 m, with
 //                  a note. A deeper contact (an impact, a stack's lower pairs) is stiffer:
 //                  the limit falls as d^-(p-1)/2;
+//   contact pair, rocking: a box resting on a face, on a half-space or on another box, turns
+//                  about the face's two edges through its centre of mass on the same n
+//                  points (the face's corners, at the normal law's tangent k_p, c_p): per
+//                  point lever arm l_i = a . ((p_i - x_cm) x normal), k = k_p sum l_i^2,
+//                  c = c_p sum l_i^2, m = a^T I a (the body's inertia about that axis);
+//                  for a box of edges (a, b, c) on its a x b face about x: 4 k_p (b/2)^2
+//                  against m (b^2 + c^2) / 12, 1.55 times the normal frequency for
+//                  0.2 x 0.2 x 0.1 m. With both bodies turning, the larger eigenvalue of the
+//                  two-body system (a stack's relative rocking). Assumed: the body rests on
+//                  that face at the initial pose (on a half-space, its face against the
+//                  plane; for two boxes, as for every pair taken to touch, the faces along
+//                  the separating axis of least overlap, the smaller face clipped to the
+//                  other being the patch, no patch when they do not overlap); it counts only
+//                  for a body that can turn about that axis through its centre of mass
+//                  without breaking a joint at the initial pose (free, spherical at the
+//                  centre of mass, revolute about that axis; not planar_translation,
+//                  prismatic, fixed). Left out: the coupling of rocking with translation
+//                  (zero for a box centred on its body), rounded shapes (sphere, cylinder,
+//                  capsule, cone) and meshes, a body turning about a joint away from its
+//                  centre of mass, and what friction adds: the stick springs' and the
+//                  friction slope's share in yaw and, through the corners' depth below the
+//                  centre of mass, in rocking (10-25% lower limits on the belt boxes);
 //   contact pair, stateful friction (elastic_stick): its stick spring-damper, k = n k_t,
 //                  c = n c_t (read off the law's stuck force), tangential;
 //   spring-damper: k, c as given, m as above;
@@ -25,8 +47,8 @@
 // spectral radius <= 1 (undamped: RK4 h w < 2 sqrt(2), semi-implicit Euler h w < 2; real
 // axis: RK4 2.785, Dormand-Prince 5(4) 3.307). For dopri5 it bounds the internal steps the
 // error control will settle on (a cost estimate, not a warning); bdf has no explicit limit.
-// Not here: rotational modes (a flat box's pitch on its corners, or its yaw on the stick
-// springs, has up to sqrt(3) times the frequency of its translation), shapes resting on more
+// Not here: yaw (a flat box's yaw on its stick springs has up to sqrt(3) times the frequency
+// of its translation) and rocking other than a box's on its face, shapes resting on more
 // or fewer than 4 points (linear law: a disc on 8 rim points has sqrt(2) times the
 // frequency, a sphere on one point half), nonlinear instability, contact chatter, accuracy
 // (see the README's measurements).
