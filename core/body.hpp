@@ -27,13 +27,13 @@ enum class BodyKind { kDynamic, kKinematic };
 struct Body {
   std::string name;
   BodyKind kind = BodyKind::kDynamic;
-  double mass = 1.0;                         // [kg]
-  Mat3 inertia = Mat3::Identity();           // about the origin, body frame [kg m^2]
-  Vec3 position = Vec3::Zero();              // initial, world [m]
-  Quat orientation = Quat::Identity();       // initial, body to world
-  Vec3 velocity = Vec3::Zero();              // initial (or prescribed), world [m/s]
-  Vec3 angular_velocity = Vec3::Zero();      // initial (or prescribed), world [rad/s]
-  Vec3 surface_velocity = Vec3::Zero();      // body frame [m/s]
+  double mass = 1.0;                     // [kg]
+  Mat3 inertia = Mat3::Identity();       // about the origin, body frame [kg m^2]
+  Vec3 position = Vec3::Zero();          // initial, world [m]
+  Quat orientation = Quat::Identity();   // initial, body to world
+  Vec3 velocity = Vec3::Zero();          // initial (or prescribed), world [m/s]
+  Vec3 angular_velocity = Vec3::Zero();  // initial (or prescribed), world [rad/s]
+  Vec3 surface_velocity = Vec3::Zero();  // body frame [m/s]
 };
 
 }  // namespace tribo

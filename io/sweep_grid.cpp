@@ -99,8 +99,7 @@ SweepAxis parseListAxis(std::string_view spec) {
 }
 
 SweepGrid::SweepGrid(std::vector<SweepAxis> axes) : axes_(std::move(axes)) {
-  if (axes_.empty())
-    throw SweepSpecError("expected at least one --grid or --list, found none");
+  if (axes_.empty()) throw SweepSpecError("expected at least one --grid or --list, found none");
   std::set<std::string> names;
   size_ = 1;
   for (const auto& a : axes_) {
@@ -109,8 +108,7 @@ SweepGrid::SweepGrid(std::vector<SweepAxis> axes) : axes_(std::move(axes)) {
       throw SweepSpecError("parameter '" + a.name +
                            "' is swept twice; give each parameter one --grid or --list");
     if (size_ > kMaxPoints / a.values.size())
-      throw SweepSpecError("the grid spans more than " + std::to_string(kMaxPoints) +
-                           " points");
+      throw SweepSpecError("the grid spans more than " + std::to_string(kMaxPoints) + " points");
     size_ *= a.values.size();
   }
 }

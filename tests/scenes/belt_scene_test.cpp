@@ -43,8 +43,7 @@ TEST(BeltScene, RohYooEarlyGrowthMatchesLinearizedRate) {
   const double x_eq = rohYooMu(kVb) * kM * kG / kK;
   const double slope = -std::log(kA) * (kMuS - kMuK) * std::pow(kA, -(kVb - kVs));
   const double sigma = -slope * kM * kG / (2 * kM);
-  const io::RunResult r =
-      runBelt({"friction=roh_yoo", set("x0", x_eq + 1e-3), "duration=30"});
+  const io::RunResult r = runBelt({"friction=roh_yoo", set("x0", x_eq + 1e-3), "duration=30"});
   ASSERT_GE(r.summary.cycles.size(), 20u);
   const double measured = io::envelopeGrowthRate(r.summary.cycles, 1.0, 30.0);
   // Asked: within 5%. Measured: 5e-5 (RK4, 1 ms), so hold it to 1%.
