@@ -551,29 +551,13 @@ class Loader {
 
   // Gives each robot link with Gazebo contact tags its own material against every surface of
   // the bodies: section, unless the scene names a material for that pair: the default
-  // material with the friction law replaced by Coulomb at mu1 (tanh-regularized at 0.01 m/s,
-  // as for `tribo run ROBOT.urdf`) and the normal law by a linear one of stiffness kp and
-  // damping kd (default: critical for the link's body on 4 points).
+  // material changed by the tags as for `tribo run ROBOT.urdf` (io/urdf_model.hpp).
   void applyGazeboTags() {
     if (default_material_.empty()) return;  // nothing to derive from; pairs need materials
     const contact::Material& base = material_values_.at(default_material_);
     for (const auto& [at, s] : gazebo_surfaces_) {
-      contact::Material material = base;
-      if (s.contact.mu1)
-        material.friction = guarded(at, [&] {
-          return friction::makeFrictionLaw(
-              {"coulomb", {{"mu", *s.contact.mu1}, {"v_eps", 1e-2}}, {{"regularization", "tanh"}}});
-        });
-      if (s.contact.kp || s.contact.kd) {
-        const double k = s.contact.kp.value_or(base.normal.stiffness);
-        const double c =
-            s.contact.kd.value_or(2.0 * std::sqrt(k * std::max(s.body_mass, 1e-3) / 4.0));
-        material.normal = contact::NormalLaw{};
-        material.normal.type = contact::NormalLawType::kLinear;
-        material.normal.stiffness = k;
-        material.normal.damping = c;
-        guarded(at, [&] { material.normal.validate(); });
-      }
+      const contact::Material material =
+          guarded(at, [&] { return withGazeboTags(base, s.contact, std::max(s.body_mass, 1e-3)); });
       const int index = guarded(at, [&] { return builder_.addMaterial(material); });
       for (const std::string& other : body_surfaces_)
         if (!surface_pairs_.count({std::min(s.name, other), std::max(s.name, other)}))

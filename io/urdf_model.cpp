@@ -242,4 +242,26 @@ UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& robot,
   return result;
 }
 
+std::shared_ptr<const friction::FrictionLaw> urdfCoulomb(double mu) {
+  return friction::makeFrictionLaw(
+      {"coulomb", {{"mu", mu}, {"v_eps", 1e-2}}, {{"regularization", "tanh"}}});
+}
+
+contact::Material withGazeboTags(contact::Material base, const GazeboContact& tags,
+                                 double body_mass, bool critical_without_kd) {
+  if (tags.mu1) base.friction = urdfCoulomb(*tags.mu1);
+  if (tags.kp || tags.kd) {
+    const double k = tags.kp.value_or(base.normal.stiffness);
+    const double c = tags.kd                          ? *tags.kd
+                     : tags.kp && critical_without_kd ? 2.0 * std::sqrt(k * body_mass / 4.0)
+                                                      : base.normal.damping;
+    base.normal = contact::NormalLaw{};
+    base.normal.type = contact::NormalLawType::kLinear;
+    base.normal.stiffness = k;
+    base.normal.damping = c;
+    base.normal.validate();
+  }
+  return base;
+}
+
 }  // namespace tribo::io

@@ -50,6 +50,17 @@ struct UrdfModelResult {
   std::vector<Surface> surfaces;
 };
 
+// Coulomb friction at mu, tanh-regularized at 0.01 m/s: what a URDF friction coefficient
+// (Gazebo's mu1, `tribo run ROBOT.urdf --set mu=`) becomes.
+std::shared_ptr<const friction::FrictionLaw> urdfCoulomb(double mu);
+
+// The contact material a link's Gazebo tags make of `base`: mu1 -> urdfCoulomb(mu1); kp or kd
+// -> a linear normal law of stiffness kp (else base's) and damping kd (else, with kp given,
+// critical for `body_mass` on 4 points when `critical_without_kd`, or base's). mu2 is not
+// used (isotropic friction). Without tags: `base`.
+contact::Material withGazeboTags(contact::Material base, const GazeboContact& tags,
+                                 double body_mass, bool critical_without_kd = true);
+
 // Throws ModelError (from the builder) or std::invalid_argument naming the link or joint.
 UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& robot,
                              const UrdfPlacement& placement);

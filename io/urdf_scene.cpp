@@ -18,8 +18,7 @@ contact::Material groundMaterial(double mu, double stiffness, double damping) {
   m.normal.type = contact::NormalLawType::kLinear;
   m.normal.stiffness = stiffness;
   m.normal.damping = damping;
-  m.friction = friction::makeFrictionLaw(
-      {"coulomb", {{"mu", mu}, {"v_eps", 1e-2}}, {{"regularization", "tanh"}}});
+  m.friction = urdfCoulomb(mu);
   return m;
 }
 
@@ -84,13 +83,11 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
   const double k = auto_k ? mass * g / (kPoints * kDepth) : number("stiffness");
   for (const auto& surface : added.surfaces) {
     const double m = surface.body_mass > 0.0 ? surface.body_mass : mass;
-    const double ks = surface.contact.kp.value_or(k);
-    const double cs = surface.contact.kd ? *surface.contact.kd
-                      : auto_c           ? 2.0 * std::sqrt(ks * m / 4.0)
-                                         : number("damping");
+    const contact::Material base =
+        groundMaterial(number("mu"), k, auto_c ? 2.0 * std::sqrt(k * m / 4.0) : number("damping"));
     builder.addSurfacePairMaterial(
         surface.name, "ground",
-        builder.addMaterial(groundMaterial(surface.contact.mu1.value_or(number("mu")), ks, cs)));
+        builder.addMaterial(withGazeboTags(base, surface.contact, m, auto_c)));
   }
   builder.setDefaultMaterial(builder.addMaterial(groundMaterial(
       number("mu"), k, auto_c ? 2.0 * std::sqrt(k * mass / kPoints) : number("damping"))));
