@@ -8,10 +8,10 @@
 #include <optional>
 
 #include "io/scene_parameters.hpp"
-#include "io/sweep_results.hpp"
-#include "io/sweep_runner.hpp"
+#include "study/sweep/sweep_results.hpp"
+#include "study/sweep/sweep_runner.hpp"
 #ifdef TRIBO_WITH_MPI
-#include "io/sweep_mpi.hpp"
+#include "study/sweep/sweep_mpi.hpp"
 #endif
 
 namespace tribo::app {
@@ -52,7 +52,7 @@ int launcherWorldSize() {
   return std::getenv("PMIX_RANK") ? 1 : 0;
 }
 
-void printReport(const io::SweepReport& r, const io::SweepSpec& spec, const fs::path& out,
+void printReport(const study::SweepReport& r, const study::SweepSpec& spec, const fs::path& out,
                  const std::string& workers) {
   std::string shape;
   for (const auto& a : spec.axes) {
@@ -75,10 +75,10 @@ void printReport(const io::SweepReport& r, const io::SweepSpec& spec, const fs::
 // The exit status for an error of planning or running a sweep (see the header).
 int failure(const std::exception& e, bool print) {
   if (print) std::fprintf(stderr, "tribo sweep: %s\n", e.what());
-  if (dynamic_cast<const io::SceneError*>(&e) || dynamic_cast<const io::SweepSpecError*>(&e))
+  if (dynamic_cast<const io::SceneError*>(&e) || dynamic_cast<const study::SweepSpecError*>(&e))
     return 2;
-  if (const auto* o = dynamic_cast<const io::SweepOutputError*>(&e))
-    return o->reason() == io::SweepOutputError::Reason::kCannotWrite ? 4 : 1;
+  if (const auto* o = dynamic_cast<const study::SweepOutputError*>(&e))
+    return o->reason() == study::SweepOutputError::Reason::kCannotWrite ? 4 : 1;
   return 4;
 }
 
@@ -91,11 +91,11 @@ std::optional<double> positive(const std::string& text) {
 }  // namespace
 
 int sweepCommand(const std::vector<std::string>& args) {
-  io::SweepSpec spec;
+  study::SweepSpec spec;
   std::string out;
   unsigned jobs = 0;
   bool quiet = false;
-  io::SettleRule settle;
+  study::SettleRule settle;
   bool want_settle = false, have_every = false;
   for (const auto& a : args)
     if (a == "--help" || a == "-h") {
@@ -113,9 +113,9 @@ int sweepCommand(const std::vector<std::string>& args) {
       } else if (a == "--set") {
         spec.fixed_overrides.push_back(args[++i]);
       } else if (a == "--grid") {
-        spec.axes.push_back(io::parseGridAxis(args[++i]));
+        spec.axes.push_back(study::parseGridAxis(args[++i]));
       } else if (a == "--list") {
-        spec.axes.push_back(io::parseListAxis(args[++i]));
+        spec.axes.push_back(study::parseListAxis(args[++i]));
       } else if (a == "--settle" || a == "--settle-every") {
         const auto v = positive(args[++i]);
         if (!v) return usage(a + ": expected a positive number, found '" + args[i] + "'");
@@ -138,7 +138,7 @@ int sweepCommand(const std::vector<std::string>& args) {
         return usage("more than one scene given ('" + spec.scene_path + "', '" + a + "')");
       }
     }
-  } catch (const io::SweepSpecError& e) {
+  } catch (const study::SweepSpecError& e) {
     return usage(e.what());
   }
   if (spec.scene_path.empty()) return usage("no scene file given");
@@ -151,12 +151,12 @@ int sweepCommand(const std::vector<std::string>& args) {
 #ifdef TRIBO_WITH_MPI
   if (world > 0) {
     // Every rank agrees on the outcome; only rank 0 speaks.
-    io::MpiSession mpi(nullptr, nullptr);
+    study::MpiSession mpi(nullptr, nullptr);
     try {
-      const io::SweepReport r =
-          io::runSweepDistributed(mpi, spec, out, jobs, quiet || mpi.rank() ? nullptr : stderr);
+      const study::SweepReport r =
+          study::runSweepDistributed(mpi, spec, out, jobs, quiet || mpi.rank() ? nullptr : stderr);
       if (mpi.rank() == 0) {
-        const unsigned per_rank = jobs ? jobs : io::defaultJobs(mpi.ranksOnThisNode());
+        const unsigned per_rank = jobs ? jobs : study::defaultJobs(mpi.ranksOnThisNode());
         printReport(
             r, spec, out,
             std::to_string(mpi.size()) + " MPI ranks x " + std::to_string(per_rank) + " thread(s)");
@@ -172,10 +172,10 @@ int sweepCommand(const std::vector<std::string>& args) {
                  " ranks, but this tribo was built without MPI (TRIBO_WITH_MPI=OFF)");
 #endif
   try {
-    const io::SweepPlan plan = io::planSweep(spec);
-    const unsigned threads = jobs ? jobs : io::defaultJobs();
-    const io::SweepReport r =
-        io::runSweepLocally(plan, out, {threads, quiet ? nullptr : stderr, 0});
+    const study::SweepPlan plan = study::planSweep(spec);
+    const unsigned threads = jobs ? jobs : study::defaultJobs();
+    const study::SweepReport r =
+        study::runSweepLocally(plan, out, {threads, quiet ? nullptr : stderr, 0});
     printReport(r, spec, out, std::to_string(threads) + " thread(s)");
     return 0;
   } catch (const std::exception& e) {

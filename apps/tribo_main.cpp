@@ -12,10 +12,10 @@
 #include "apps/sweep_command.hpp"
 #include "apps/tradeoff_command.hpp"
 #include "core/constraint_rows.hpp"
-#include "io/result_writer.hpp"
 #include "io/scene_loader.hpp"
-#include "io/scene_run.hpp"
 #include "io/urdf_scene.hpp"
+#include "study/result_writer.hpp"
+#include "study/scene_run.hpp"
 
 namespace {
 
@@ -38,7 +38,7 @@ int usage(const std::string& problem) {
   return 1;
 }
 
-void printSummary(const tribo::io::Scene& scene, const tribo::io::RunResult& r,
+void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& r,
                   const std::filesystem::path& out) {
   const auto& s = r.summary;
   const auto& o = scene.model->options;
@@ -116,11 +116,11 @@ int run(const std::vector<std::string>& args) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;
   }
-  const tribo::io::RunResult result = tribo::io::runScene(scene);
+  const tribo::study::RunResult result = tribo::study::runScene(scene);
   for (const auto& n : scene.notes) std::fprintf(stderr, "tribo: note: %s\n", n.c_str());
   for (const auto& w : result.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
   try {
-    tribo::io::writeResults(out_dir, scene, result);
+    tribo::study::writeResults(out_dir, scene, result);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 4;

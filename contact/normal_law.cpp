@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "friction/name_table.hpp"
+
 namespace tribo::contact {
 
 namespace {
@@ -48,27 +50,20 @@ void NormalLaw::validate() const {
     fail("max_depth must be > 0", max_depth);
 }
 
-NormalLawType normalLawFromName(const std::string& name) {
-  for (auto t : {NormalLawType::kLinear, NormalLawType::kHertz, NormalLawType::kHuntCrossley,
-                 NormalLawType::kRecurDyn})
-    if (normalLawName(t) == name) return t;
-  throw std::invalid_argument("unknown normal law '" + name +
-                              "' (expected one of: linear, hertz, hunt_crossley, recurdyn)");
-}
+namespace {
 
-std::string normalLawName(NormalLawType type) {
-  switch (type) {
-    case NormalLawType::kLinear:
-      return "linear";
-    case NormalLawType::kHertz:
-      return "hertz";
-    case NormalLawType::kHuntCrossley:
-      return "hunt_crossley";
-    case NormalLawType::kRecurDyn:
-      return "recurdyn";
-  }
-  return "unknown";
-}
+constexpr NameTable<NormalLawType, 4> kNormalLawNames{
+    "normal law",
+    {{{NormalLawType::kLinear, "linear"},
+      {NormalLawType::kHertz, "hertz"},
+      {NormalLawType::kHuntCrossley, "hunt_crossley"},
+      {NormalLawType::kRecurDyn, "recurdyn"}}}};
+
+}  // namespace
+
+NormalLawType normalLawFromName(const std::string& name) { return kNormalLawNames.fromName(name); }
+
+std::string normalLawName(NormalLawType type) { return kNormalLawNames.name(type); }
 
 double huntCrossleyRestitution(double u) {
   if (!(u > 0.0)) return 1.0;

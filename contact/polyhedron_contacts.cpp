@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "contact/mesh_loader.hpp"
+#include "contact/mesh_shape.hpp"
 #include "contact/primitive_contacts.hpp"
 
 namespace tribo::contact {

@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "friction/name_table.hpp"
+
 namespace tribo::contact {
 
 namespace {
@@ -98,26 +100,20 @@ void Shape::validate() const {
   }
 }
 
-std::string shapeName(ShapeType type) {
-  switch (type) {
-    case ShapeType::kBox:
-      return "box";
-    case ShapeType::kSphere:
-      return "sphere";
-    case ShapeType::kCylinder:
-      return "cylinder";
-    case ShapeType::kCapsule:
-      return "capsule";
-    case ShapeType::kCone:
-      return "cone";
-    case ShapeType::kHalfSpace:
-      return "halfspace";
-    case ShapeType::kConvexMesh:
-      return "convex_mesh";
-    case ShapeType::kTriangleMesh:
-      return "mesh";
-  }
-  return "unknown";
-}
+namespace {
+
+constexpr NameTable<ShapeType, 8> kShapeNames{"shape",
+                                              {{{ShapeType::kBox, "box"},
+                                                {ShapeType::kSphere, "sphere"},
+                                                {ShapeType::kCylinder, "cylinder"},
+                                                {ShapeType::kCapsule, "capsule"},
+                                                {ShapeType::kCone, "cone"},
+                                                {ShapeType::kHalfSpace, "halfspace"},
+                                                {ShapeType::kConvexMesh, "convex_mesh"},
+                                                {ShapeType::kTriangleMesh, "mesh"}}}};
+
+}  // namespace
+
+std::string shapeName(ShapeType type) { return kShapeNames.name(type); }
 
 }  // namespace tribo::contact

@@ -8,8 +8,9 @@
 //   half-space:    the solid below the plane z = 0 (outward normal +z)
 //   convex_mesh:   a closed convex polyhedron (vertices and outward triangles)
 //   mesh:          a triangle mesh, not necessarily convex or closed (a surface)
-// Meshes are shared, immutable vertex/triangle lists (contact/mesh_loader.hpp reads them).
-// Not here: collision tests (contact/collision_detector.hpp), inertia (shape_inertia.hpp).
+// Meshes are shared, immutable vertex/triangle lists (io/mesh_loader.hpp reads them;
+// contact/mesh_shape.hpp checks convex ones). Not here: collision tests
+// (contact/collision_detector.hpp), inertia (shape_inertia.hpp).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,34 +1,30 @@
 #include "core/constraint_options.hpp"
 
-#include <stdexcept>
+#include "friction/name_table.hpp"
 
 namespace tribo {
 
+namespace {
+
+constexpr NameTable<RedundancyPolicy, 2> kRedundancyNames{
+    "redundancy policy",
+    {{{RedundancyPolicy::kError, "error"}, {RedundancyPolicy::kRemove, "remove"}}}};
+constexpr NameTable<ConstraintSolverKind, 3> kSolverNames{
+    "constraint solver",
+    {{{ConstraintSolverKind::kAuto, "auto"},
+      {ConstraintSolverKind::kDense, "dense"},
+      {ConstraintSolverKind::kSparse, "sparse"}}}};
+
+}  // namespace
+
 RedundancyPolicy redundancyPolicyFromName(const std::string& name) {
-  if (name == "error") return RedundancyPolicy::kError;
-  if (name == "remove") return RedundancyPolicy::kRemove;
-  throw std::invalid_argument("unknown redundancy policy '" + name +
-                              "' (expected one of: error, remove)");
+  return kRedundancyNames.fromName(name);
 }
 
 ConstraintSolverKind constraintSolverFromName(const std::string& name) {
-  if (name == "auto") return ConstraintSolverKind::kAuto;
-  if (name == "dense") return ConstraintSolverKind::kDense;
-  if (name == "sparse") return ConstraintSolverKind::kSparse;
-  throw std::invalid_argument("unknown constraint solver '" + name +
-                              "' (expected one of: auto, dense, sparse)");
+  return kSolverNames.fromName(name);
 }
 
-std::string constraintSolverName(ConstraintSolverKind kind) {
-  switch (kind) {
-    case ConstraintSolverKind::kDense:
-      return "dense";
-    case ConstraintSolverKind::kSparse:
-      return "sparse";
-    case ConstraintSolverKind::kAuto:
-      break;
-  }
-  return "auto";
-}
+std::string constraintSolverName(ConstraintSolverKind kind) { return kSolverNames.name(kind); }
 
 }  // namespace tribo

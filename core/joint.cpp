@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "friction/name_table.hpp"
+
 namespace tribo {
 
 namespace {
@@ -10,20 +12,18 @@ const ConstraintEquation kDx{K::kDistance, 0, 0}, kDy{K::kDistance, 1, 0}, kDz{K
 const ConstraintEquation kPxy{K::kPerpendicular, 0, 1}, kPyz{K::kPerpendicular, 1, 2},
     kPzx{K::kPerpendicular, 2, 0}, kPzy{K::kPerpendicular, 2, 1};
 
-struct NamedType {
-  const char* name;
-  JointType type;
-};
-const NamedType kNames[] = {{"fixed", JointType::kFixed},
-                            {"revolute", JointType::kRevolute},
-                            {"continuous", JointType::kRevolute},
-                            {"prismatic", JointType::kPrismatic},
-                            {"planar_translation", JointType::kPlanarTranslation},
-                            {"spherical", JointType::kSpherical},
-                            {"universal", JointType::kUniversal},
-                            {"cylindrical", JointType::kCylindrical},
-                            {"planar", JointType::kPlanar},
-                            {"free", JointType::kFree}};
+// "continuous" is a revolute joint without limits (URDF's word); the first name is the name.
+constexpr NameTable<JointType, 10> kNames{"joint type",
+                                          {{{JointType::kFixed, "fixed"},
+                                            {JointType::kRevolute, "revolute"},
+                                            {JointType::kRevolute, "continuous"},
+                                            {JointType::kPrismatic, "prismatic"},
+                                            {JointType::kPlanarTranslation, "planar_translation"},
+                                            {JointType::kSpherical, "spherical"},
+                                            {JointType::kUniversal, "universal"},
+                                            {JointType::kCylindrical, "cylindrical"},
+                                            {JointType::kPlanar, "planar"},
+                                            {JointType::kFree, "free"}}}};
 }  // namespace
 
 const std::vector<ConstraintEquation>& jointEquations(JointType type) {
@@ -73,19 +73,8 @@ bool hasScalarCoordinate(JointType type) {
 
 bool isAngular(JointType type) { return type == JointType::kRevolute; }
 
-JointType jointTypeFromName(const std::string& name) {
-  std::string known;
-  for (const auto& n : kNames) {
-    if (name == n.name) return n.type;
-    known += (known.empty() ? "" : ", ") + std::string(n.name);
-  }
-  throw std::invalid_argument("unknown joint type '" + name + "' (expected one of: " + known + ")");
-}
+JointType jointTypeFromName(const std::string& name) { return kNames.fromName(name); }
 
-std::string jointTypeName(JointType type) {
-  for (const auto& n : kNames)
-    if (n.type == type) return n.name;
-  return "unknown";
-}
+std::string jointTypeName(JointType type) { return kNames.name(type); }
 
 }  // namespace tribo

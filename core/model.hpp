@@ -17,6 +17,7 @@
 #include "core/constraint_options.hpp"
 #include "core/force_element.hpp"
 #include "core/joint.hpp"
+#include "friction/name_table.hpp"
 
 namespace tribo {
 
@@ -25,10 +26,18 @@ namespace tribo {
 // variable-order BDF, implicit, for very stiff contacts). See core/integrator.hpp.
 enum class IntegratorType { kSemiImplicitEuler, kRk4, kDopri5, kBdf };
 
-// Scene names "semi_implicit_euler", "rk4", "dopri5", "bdf"; throws std::invalid_argument
-// otherwise.
-IntegratorType integratorFromName(const std::string& name);
-std::string integratorName(IntegratorType type);
+// Scene names "semi_implicit_euler", "rk4", "dopri5", "bdf".
+inline constexpr NameTable<IntegratorType, 4> kIntegratorNames{
+    "integrator",
+    {{{IntegratorType::kSemiImplicitEuler, "semi_implicit_euler"},
+      {IntegratorType::kRk4, "rk4"},
+      {IntegratorType::kDopri5, "dopri5"},
+      {IntegratorType::kBdf, "bdf"}}}};
+// Throws std::invalid_argument naming the known names for any other.
+inline IntegratorType integratorFromName(const std::string& name) {
+  return kIntegratorNames.fromName(name);
+}
+inline std::string integratorName(IntegratorType type) { return kIntegratorNames.name(type); }
 
 struct SimulationOptions {
   Vec3 gravity{0.0, 0.0, -9.81};  // [m/s^2]

@@ -15,29 +15,6 @@ bool finite(const Vec3& v) { return v.allFinite(); }
 
 }  // namespace
 
-IntegratorType integratorFromName(const std::string& name) {
-  if (name == "semi_implicit_euler") return IntegratorType::kSemiImplicitEuler;
-  if (name == "rk4") return IntegratorType::kRk4;
-  if (name == "dopri5") return IntegratorType::kDopri5;
-  if (name == "bdf") return IntegratorType::kBdf;
-  throw std::invalid_argument("unknown integrator '" + name +
-                              "' (expected one of: semi_implicit_euler, rk4, dopri5, bdf)");
-}
-
-std::string integratorName(IntegratorType type) {
-  switch (type) {
-    case IntegratorType::kSemiImplicitEuler:
-      return "semi_implicit_euler";
-    case IntegratorType::kRk4:
-      return "rk4";
-    case IntegratorType::kDopri5:
-      return "dopri5";
-    case IntegratorType::kBdf:
-      return "bdf";
-  }
-  return "unknown";
-}
-
 std::optional<BodyIndex> Model::findBody(const std::string& name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == name) return BodyIndex{static_cast<int>(i)};

@@ -68,10 +68,11 @@
 #include <set>
 #include <sstream>
 
-#include "contact/mesh_loader.hpp"
 #include "contact/shape_inertia.hpp"
 #include "core/model_builder.hpp"
+#include "core/number_text.hpp"
 #include "friction/friction_law.hpp"
+#include "io/mesh_loader.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
 
@@ -292,7 +293,7 @@ class Loader {
   Loader(std::string file, const YAML::Node& root, std::vector<std::string> package_paths)
       : file_(std::move(file)), root_(root), package_paths_(std::move(package_paths)) {}
 
-  Scene load(const std::vector<std::string>& overrides) {
+  Scene load(const std::vector<std::string>& overrides, const RunSettings& settings) {
     const Value root(file_, params_, root_, "");
     const Map m(root, {"parameters", "simulation", "bodies", "robots", "joints", "springs",
                        "friction_laws", "materials", "contacts", "output"});
@@ -317,6 +318,7 @@ class Loader {
       for (const Value& v : c->items("contacts", true)) readContact(v);
     Scene scene;
     if (auto o = m.get("output")) scene.output = readOutput(*o);
+    applyRunSettings(settings, scene.output);
     scene.path = file_;
     try {
       scene.model = builder_.build();
@@ -329,6 +331,22 @@ class Loader {
   }
 
  private:
+  void applyRunSettings(const RunSettings& r, OutputSpec& output) {
+    SimulationOptions& o = builder_.options();
+    if (r.integrator) o.integrator = *r.integrator;
+    if (r.time_step) o.time_step = *r.time_step;
+    if (r.duration) o.duration = *r.duration;
+    if (r.relative_tolerance) o.relative_tolerance = *r.relative_tolerance;
+    if (r.absolute_tolerance) o.absolute_tolerance = *r.absolute_tolerance;
+    if (r.event_location) o.event_location = *r.event_location;
+    if (r.output_interval) {
+      if (!(*r.output_interval > 0.0) || !std::isfinite(*r.output_interval))
+        throw SceneError({file_}, "output.interval",
+                         "expected a number > 0, found " + numberText(*r.output_interval));
+      output.interval = *r.output_interval;
+    }
+  }
+
   void readParameters(const Value& v) {
     const Map table(v, {});
     for (const auto& [name, value] : table.entries()) {
@@ -487,7 +505,7 @@ class Loader {
       std::filesystem::path path(file.text());
       if (path.is_relative()) path = std::filesystem::path(file_).parent_path() / path;
       try {
-        const auto mesh = contact::loadMesh(path.string(), scale);
+        const auto mesh = loadMesh(path.string(), scale);
         g.shape = kind == "mesh" ? contact::Shape::triangleMesh(mesh)
                                  : contact::Shape::convexMesh(contact::makeConvex(*mesh));
       } catch (const contact::MeshError& e) {
@@ -864,10 +882,11 @@ class Loader {
 
 Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
                           const std::vector<std::string>& overrides,
-                          const std::vector<std::string>& package_paths) {
+                          const std::vector<std::string>& package_paths,
+                          const RunSettings& settings) {
   try {
     const YAML::Node root = YAML::Load(yaml);
-    return Loader(name_for_errors, root, package_paths).load(overrides);
+    return Loader(name_for_errors, root, package_paths).load(overrides, settings);
   } catch (const YAML::Exception& e) {  // syntax errors, and any the reader did not foresee
     const int line = e.mark.line < 0 ? 0 : e.mark.line + 1;
     const int column = e.mark.column < 0 ? 0 : e.mark.column + 1;
@@ -876,14 +895,14 @@ Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_e
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
-                const std::vector<std::string>& package_paths) {
+                const std::vector<std::string>& package_paths, const RunSettings& settings) {
   std::error_code ec;
   std::ifstream in(path);
   if (!std::filesystem::is_regular_file(path, ec) || !in)
     throw SceneError("cannot open scene file '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
-  return loadSceneFromString(text.str(), path, overrides, package_paths);
+  return loadSceneFromString(text.str(), path, overrides, package_paths, settings);
 }
 
 }  // namespace tribo::io

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,7 +24,7 @@
 
 namespace tribo::io {
 
-// Which body coordinate the run summary analyses (io/oscillation_summary.hpp).
+// Which body coordinate the run summary analyses (study/oscillation_summary.hpp).
 struct SummarySpec {
   std::string body;           // body name; empty when the scene asks for no summary
   int coordinate = 0;         // of the body origin, world frame: 0 = x, 1 = y, 2 = z
@@ -48,16 +49,34 @@ struct Scene {
   std::vector<std::string> notes;
 };
 
+// Run settings that studies vary (the tradeoff's ladder, a Python caller, a sweep): each one
+// given replaces the scene's own value before the model is built, so the builder validates
+// it and everything derived from it follows (automatic joint-limit gains from the time step,
+// for one). The one path for changing how a loaded scene runs; a built Model is never
+// copied and edited.
+struct RunSettings {
+  std::optional<IntegratorType> integrator;
+  std::optional<double> time_step;           // [s]; the communication interval for dopri5, bdf
+  std::optional<double> duration;            // [s]
+  std::optional<double> relative_tolerance;  // dopri5, bdf
+  std::optional<double> absolute_tolerance;  // dopri5, bdf
+  std::optional<bool> event_location;        // dopri5, bdf
+  std::optional<double> output_interval;     // [s] output.interval
+};
+
 // Loads a scene file. `overrides` are NAME=VALUE strings (the command line's --set), applied
 // to the parameters: section before any "$name" is resolved; `package_paths` are the
 // command line's --package-path folders for the robots' package:// meshes. Throws SceneError.
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
-                const std::vector<std::string>& package_paths = {});
+                const std::vector<std::string>& package_paths = {},
+                const RunSettings& settings = {});
 
+// `settings` (RunSettings) replace the scene's own run settings.
 // The same from YAML text; `name_for_errors` stands for the file name in messages and in
 // Scene::path.
 Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
                           const std::vector<std::string>& overrides = {},
-                          const std::vector<std::string>& package_paths = {});
+                          const std::vector<std::string>& package_paths = {},
+                          const RunSettings& settings = {});
 
 }  // namespace tribo::io

@@ -5,9 +5,9 @@
 #include <limits>
 #include <sstream>
 
-#include "contact/mesh_loader.hpp"
 #include "core/number_text.hpp"
 #include "friction/friction_law.hpp"
+#include "io/mesh_loader.hpp"
 #include "io/urdf_assembly.hpp"
 
 namespace tribo::io {
@@ -42,7 +42,7 @@ contact::Shape shapeOf(const UrdfCollision& c, const std::string& link) {
       if (c.mesh_path.empty())
         throw std::invalid_argument("link '" + link + "': collision mesh '" + c.mesh_uri +
                                     "' was not found");
-      return contact::Shape::triangleMesh(contact::loadMesh(c.mesh_path, c.scale));
+      return contact::Shape::triangleMesh(loadMesh(c.mesh_path, c.scale));
   }
   throw std::invalid_argument("link '" + link + "': unsupported collision geometry");
 }

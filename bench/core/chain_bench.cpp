@@ -8,9 +8,9 @@
 // closed loops (fill in the sparse factorization) BM_LoopSolve/<scene>/<dense|sparse>.
 #include <benchmark/benchmark.h>
 
-#include "core/joint_test_models.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/joint_test_models.hpp"
 
 namespace {
 

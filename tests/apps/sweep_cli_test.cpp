@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "cli_support.hpp"
+#include "support/cli_support.hpp"
 
 namespace {
 

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_support.hpp"
+#include "support/cli_support.hpp"
 
 namespace {
 
@@ -83,8 +83,10 @@ Csv readCsv(const fs::path& file) {
   return csv;
 }
 
+// A figure; an empty field is a figure the run does not have (never the text "nan").
 double number(const std::string& text) {
-  if (text == "nan" || text == "-nan") return std::nan("");
+  EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+  if (text.empty()) return std::nan("");
   std::size_t used = 0;
   const double v = std::stod(text, &used);
   EXPECT_EQ(used, text.size()) << text;

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "cli_support.hpp"
+#include "support/cli_support.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "contact/mesh_loader.hpp"
+#include "contact/mesh_shape.hpp"
 #include "core/model_builder.hpp"
 #include "core/simulator.hpp"
 #include "friction/friction_law.hpp"

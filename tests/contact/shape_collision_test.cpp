@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "contact/collision_detector.hpp"
-#include "contact/mesh_loader.hpp"
-#include "test_poses.hpp"
+#include "contact/mesh_shape.hpp"
+#include "support/test_poses.hpp"
 
 namespace tribo::contact {
 namespace {

@@ -11,8 +11,8 @@
 
 #include "core/simulator.hpp"
 #include "friction/friction_law.hpp"
-#include "joint_test_models.hpp"
-#include "test_models.hpp"
+#include "support/joint_test_models.hpp"
+#include "support/test_models.hpp"
 
 namespace tribo {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "core/constraint_solver.hpp"
 #include "core/simulator.hpp"
-#include "joint_test_models.hpp"
+#include "support/joint_test_models.hpp"
 
 namespace tribo {
 namespace {

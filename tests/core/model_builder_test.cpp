@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "test_models.hpp"
+#include "support/test_models.hpp"
 
 namespace tribo {
 namespace {

@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "core/flush_denormals.hpp"
-#include "test_models.hpp"
+#include "support/test_models.hpp"
 
 namespace tribo {
 namespace {

@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "core/simulator.hpp"
-#include "test_models.hpp"
+#include "support/test_models.hpp"
 
 namespace tribo {
 namespace {

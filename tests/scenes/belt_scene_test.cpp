@@ -8,7 +8,7 @@
 
 #include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
-#include "io/scene_run.hpp"
+#include "study/scene_run.hpp"
 #include "support/one_dof_belt.hpp"
 
 namespace tribo {
@@ -18,9 +18,9 @@ const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
 constexpr double kM = 10.0, kK = 300.0, kG = 9.81, kVb = 1.5;
 constexpr double kMuS = 0.35, kMuK = 0.3, kVs = 0.01, kA = 1.5, kBeta = 1.0 / 3.0;
 
-io::RunResult runBelt(const std::vector<std::string>& overrides) {
+study::RunResult runBelt(const std::vector<std::string>& overrides) {
   const io::Scene scene = io::loadScene(kBelt, overrides);
-  io::RunResult r = io::runScene(scene);
+  study::RunResult r = study::runScene(scene);
   EXPECT_TRUE(r.complete) << r.message;
   return r;
 }
@@ -43,9 +43,9 @@ TEST(BeltScene, RohYooEarlyGrowthMatchesLinearizedRate) {
   const double x_eq = rohYooMu(kVb) * kM * kG / kK;
   const double slope = -std::log(kA) * (kMuS - kMuK) * std::pow(kA, -(kVb - kVs));
   const double sigma = -slope * kM * kG / (2 * kM);
-  const io::RunResult r = runBelt({"friction=roh_yoo", set("x0", x_eq + 1e-3), "duration=30"});
+  const study::RunResult r = runBelt({"friction=roh_yoo", set("x0", x_eq + 1e-3), "duration=30"});
   ASSERT_GE(r.summary.cycles.size(), 20u);
-  const double measured = io::envelopeGrowthRate(r.summary.cycles, 1.0, 30.0);
+  const double measured = study::envelopeGrowthRate(r.summary.cycles, 1.0, 30.0);
   // Asked: within 5%. Measured: 5e-5 (RK4, 1 ms), so hold it to 1%.
   EXPECT_NEAR(measured / sigma, 1.0, 0.01) << "measured " << measured << " expected " << sigma;
   EXPECT_NEAR(r.summary.x_mean, x_eq, 1e-3 * x_eq);
@@ -55,12 +55,12 @@ TEST(BeltScene, RecurDynAmplitudeDoesNotGrow) {
   // Beyond v_d the RecurDyn curve is flat (mu_k): no negative damping. Released at the
   // spring's neutral point the box oscillates about mu_k m g / k with peak-to-peak
   // 2 mu_k m g / k, and keeps it.
-  const io::RunResult r = runBelt({"friction=recurdyn", "duration=60"});
+  const study::RunResult r = runBelt({"friction=recurdyn", "duration=60"});
   const double expected = 2 * kMuK * kM * kG / kK;
   EXPECT_NEAR(r.summary.amplitude_pp, expected, 1e-3 * expected);
   ASSERT_GE(r.summary.cycles.size(), 40u);
   EXPECT_NEAR(r.summary.cycles.front().peak_to_peak, expected, 1e-3 * expected);
-  EXPECT_LT(std::abs(io::envelopeGrowthRate(r.summary.cycles, 0.0, 60.0)), 1e-4);
+  EXPECT_LT(std::abs(study::envelopeGrowthRate(r.summary.cycles, 0.0, 60.0)), 1e-4);
   EXPECT_EQ(r.summary.stuck_fraction, 0.0);
 }
 
@@ -80,7 +80,7 @@ TEST(BeltScene, RohYooSaturatesIntoTheStickSlipCycleOfTheReference) {
   const double reference = hi - lo;
   const double reference_stuck = static_cast<double>(stuck) / static_cast<double>(n);
 
-  const io::RunResult r = runBelt({"friction=roh_yoo"});
+  const study::RunResult r = runBelt({"friction=roh_yoo"});
   EXPECT_TRUE(r.summary.oscillating);
   EXPECT_NEAR(r.summary.amplitude_pp, reference, 1e-3 * reference)
       << "engine " << r.summary.amplitude_pp << " reference " << reference;
@@ -106,7 +106,7 @@ TEST(BeltScene, LimitCycleAmplitudeConvergesAsTheStepIsRefined) {
 TEST(BeltScene, StepBeyondTheContactStabilityLimitStopsWithAClearError) {
   // Contact: 4 corners of 2.5e5 N/m on 10 kg, omega = 316 rad/s; RK4 needs h < 2.8/omega.
   const io::Scene scene = io::loadScene(kBelt, {"dt=0.02", "duration=5"});
-  const io::RunResult r = io::runScene(scene);
+  const study::RunResult r = study::runScene(scene);
   EXPECT_FALSE(r.complete);
   EXPECT_NE(r.message.find("diverged at step"), std::string::npos) << r.message;
   for (std::size_t c = 0; c < r.trajectory.columns().size(); ++c)
@@ -117,11 +117,11 @@ TEST(BeltScene, StepJustAboveTheEstimatedLimitIsFlaggedBeforeTheRun) {
   // Vertical contact mode: omega = sqrt(4 k_c / m), zeta = 4 c_c / (2 sqrt(4 k_c m)); the
   // estimate must sit between the steps that are observed to work and to fail.
   const io::Scene ok = io::loadScene(kBelt, {"dt=0.008", "duration=1"});
-  const io::RunResult r_ok = io::runScene(ok);
+  const study::RunResult r_ok = study::runScene(ok);
   EXPECT_TRUE(r_ok.warnings.empty());
   EXPECT_GT(r_ok.stability.limit.max_step, 0.008);
   EXPECT_LT(r_ok.stability.limit.max_step, 0.0095);
-  const io::RunResult r_bad = io::runScene(io::loadScene(kBelt, {"dt=0.0095", "duration=1"}));
+  const study::RunResult r_bad = study::runScene(io::loadScene(kBelt, {"dt=0.0095", "duration=1"}));
   ASSERT_EQ(r_bad.warnings.size(), 1u);
   EXPECT_NE(r_bad.warnings[0].find("belt_surface, box_shape"), std::string::npos);
   // roh_yoo's stick branch (beta < 1) has no finite slope at zero slip: said in the notes.

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "io/scene_loader.hpp"
-#include "io/scene_run.hpp"
+#include "study/scene_run.hpp"
 
 namespace tribo {
 namespace {
@@ -15,9 +15,10 @@ namespace {
 const std::string kDir = std::string(TRIBO_SOURCE_DIR) + "/scenes/";
 
 TEST(BeltFreeBoxScene, StillGrowsIntoTheLimitCycleOfTheJointedScene) {
-  const io::RunResult jointed = io::runScene(io::loadScene(kDir + "belt.yaml", {"duration=40"}));
-  const io::RunResult free =
-      io::runScene(io::loadScene(kDir + "belt_free_box.yaml", {"duration=40"}));
+  const study::RunResult jointed =
+      study::runScene(io::loadScene(kDir + "belt.yaml", {"duration=40"}));
+  const study::RunResult free =
+      study::runScene(io::loadScene(kDir + "belt_free_box.yaml", {"duration=40"}));
   ASSERT_TRUE(jointed.complete) << jointed.message;
   ASSERT_TRUE(free.complete) << free.message;
   EXPECT_TRUE(free.summary.oscillating);

@@ -26,7 +26,7 @@
 
 #include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
-#include "io/scene_run.hpp"
+#include "study/scene_run.hpp"
 #include "support/one_dof_belt.hpp"
 
 namespace tribo {
@@ -94,13 +94,13 @@ std::vector<double> reference(double v_s, double beta, double a) {
 }
 
 struct Outcome {
-  io::RunResult run;
+  study::RunResult run;
   bool finite = true;
   double error = NAN;  // max |x - x_ref| over the recorded samples [m]
 };
 
 Outcome runCase(const std::vector<std::string>& overrides, const std::vector<double>& x_ref) {
-  Outcome o{io::runScene(io::loadSceneFromString(kScene, "extremes", overrides))};
+  Outcome o{study::runScene(io::loadSceneFromString(kScene, "extremes", overrides))};
   const auto& tr = o.run.trajectory;
   for (std::size_t c = 0; c < tr.columns().size(); ++c)
     for (double v : tr.column(c)) o.finite = o.finite && std::isfinite(v);

@@ -12,7 +12,7 @@
 
 #include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
-#include "io/scene_run.hpp"
+#include "study/scene_run.hpp"
 #include "support/one_dof_belt.hpp"
 
 namespace tribo {
@@ -22,14 +22,14 @@ const std::string kJointBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt_joi
 const std::string kContactBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
 constexpr double kM = 10.0, kK = 300.0, kG = 9.81, kVb = 1.5, kVs = 0.01;
 
-io::RunResult run(const io::Scene& scene) {
-  io::RunResult r = io::runScene(scene);
+study::RunResult run(const io::Scene& scene) {
+  study::RunResult r = study::runScene(scene);
   EXPECT_TRUE(r.complete) << r.message;
   return r;
 }
 
 // Share of the recorded samples in which the box moves with the belt (|v - v_b| < v_s).
-double stuckFraction(const io::TrajectoryRecorder& t) {
+double stuckFraction(const study::TrajectoryRecorder& t) {
   const auto v = t.column(t.columnIndex("box.vx"));
   double stuck = 0;
   for (double x : v) stuck += std::abs(kVb - x) < kVs;
@@ -52,8 +52,8 @@ TEST(BeltOnJoints, PrismaticJointFrictionGivesTheLimitCycleOfTheReferenceAndOfTh
   });
   const double expected = hi - lo;
 
-  const io::RunResult joint = run(io::loadScene(kJointBelt));
-  const io::RunResult contact = run(io::loadScene(kContactBelt));
+  const study::RunResult joint = run(io::loadScene(kJointBelt));
+  const study::RunResult contact = run(io::loadScene(kContactBelt));
   // Measured: joint 0.562476 m, reference 0.5624760 m, contacts 0.562460 m (whose normal
   // force is a penalty spring's, not exactly m g).
   EXPECT_NEAR(joint.summary.amplitude_pp, expected, 1e-4 * expected);
@@ -66,7 +66,7 @@ TEST(BeltOnJoints, PrismaticJointFrictionGivesTheLimitCycleOfTheReferenceAndOfTh
 
 TEST(BeltOnJoints, RecurDynLawThroughTheJointDoesNotGrowEither) {
   // Flat beyond v_d: the oscillation keeps 2 mu_k m g / k peak to peak.
-  const io::RunResult r = run(io::loadScene(kJointBelt, {"friction=recurdyn"}));
+  const study::RunResult r = run(io::loadScene(kJointBelt, {"friction=recurdyn"}));
   const double expected = 2 * 0.3 * kM * kG / kK;
   EXPECT_NEAR(r.summary.amplitude_pp, expected, 1e-3 * expected);
 }
@@ -77,8 +77,8 @@ TEST(BeltOnJoints, PlanarJointOnTheContactsGivesTheSameLimitCycle) {
   const auto at = yaml.find("type: planar_translation");
   ASSERT_NE(at, std::string::npos);
   yaml.replace(at, 24, "type: planar");
-  const io::RunResult pitching = run(io::loadSceneFromString(yaml, "belt_planar.yaml"));
-  const io::RunResult original = run(io::loadScene(kContactBelt));
+  const study::RunResult pitching = run(io::loadSceneFromString(yaml, "belt_planar.yaml"));
+  const study::RunResult original = run(io::loadScene(kContactBelt));
   // The box now pitches by the friction moment over its corners' stiffness (1e-4 rad).
   EXPECT_NEAR(pitching.summary.amplitude_pp, original.summary.amplitude_pp,
               1e-3 * original.summary.amplitude_pp);

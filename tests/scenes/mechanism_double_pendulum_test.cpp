@@ -2,9 +2,9 @@
 // motion whose energy must stay constant over 20 s (RK4: to its fourth order).
 #include <gtest/gtest.h>
 
-#include "core/joint_test_models.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/joint_test_models.hpp"
 
 namespace tribo {
 namespace {

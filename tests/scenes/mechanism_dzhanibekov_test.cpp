@@ -6,9 +6,9 @@
 // ((I2 - I1)(2 E I3 - L^2))).
 #include <gtest/gtest.h>
 
-#include "core/joint_test_models.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/joint_test_models.hpp"
 
 namespace tribo {
 namespace {

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/joint_test_models.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/joint_test_models.hpp"
 
 namespace tribo {
 namespace {

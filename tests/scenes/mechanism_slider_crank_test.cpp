@@ -11,7 +11,7 @@
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
-#include "io/scene_run.hpp"
+#include "study/scene_run.hpp"
 
 namespace tribo {
 namespace {
@@ -45,7 +45,7 @@ TEST(SliderCrankScene, TheLoopsRepeatedEquationsAreDroppedAndReported) {
   int dropped = 0;
   for (const Joint& j : scene.model->joints) dropped += __builtin_popcount(j.dropped_equations);
   EXPECT_EQ(dropped, 3);  // 3 bodies, 21 equations, no degree of freedom left
-  const io::RunResult r = io::runScene(scene);
+  const study::RunResult r = study::runScene(scene);
   ASSERT_TRUE(r.complete) << r.message;
   bool warned = false;
   for (const auto& w : r.warnings) warned = warned || w.find("redundant") != std::string::npos;

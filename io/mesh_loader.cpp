@@ -1,0 +1,90 @@
+#include "io/mesh_loader.hpp"
+
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <Eigen/Geometry>
+#include <assimp/Importer.hpp>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+namespace tribo::io {
+
+using contact::MeshData;
+using contact::MeshError;
+
+namespace {
+
+void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, MeshData& out) {
+  const aiMatrix4x4 transform = parent * node.mTransformation;
+  for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
+    const int base = static_cast<int>(out.vertices.size());
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D p = transform * mesh.mVertices[v];
+      out.vertices.emplace_back(p.x, p.y, p.z);
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines left by triangulation
+      out.triangles.push_back({base + static_cast<int>(face.mIndices[0]),
+                               base + static_cast<int>(face.mIndices[1]),
+                               base + static_cast<int>(face.mIndices[2])});
+    }
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    collect(scene, *node.mChildren[c], transform, out);
+}
+
+// Joins vertices with identical coordinates (several meshes of one file share corners).
+void weld(MeshData& mesh) {
+  std::map<std::array<double, 3>, int> index;
+  std::vector<int> map(mesh.vertices.size());
+  std::vector<Eigen::Vector3d> kept;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Eigen::Vector3d& v = mesh.vertices[i];
+    const auto [it, added] =
+        index.try_emplace({v.x(), v.y(), v.z()}, static_cast<int>(kept.size()));
+    if (added) kept.push_back(v);
+    map[i] = it->second;
+  }
+  mesh.vertices = std::move(kept);
+  std::vector<std::array<int, 3>> triangles;
+  for (auto t : mesh.triangles) {
+    for (int& i : t) i = map[i];
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
+  }
+  mesh.triangles = std::move(triangles);
+}
+
+}  // namespace
+
+std::shared_ptr<const MeshData> loadMesh(const std::string& path, const Eigen::Vector3d& scale) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw MeshError("mesh file '" + path + "': cannot open (expected an STL, OBJ or DAE file)");
+  if (!scale.allFinite() || !(scale.minCoeff() > 0.0))
+    throw MeshError("mesh file '" + path + "': scale must be 3 numbers > 0");
+  Assimp::Importer importer;
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_COLORS |
+                                                          aiComponent_TEXCOORDS |
+                                                          aiComponent_MATERIALS);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_RemoveComponent | aiProcess_SortByPType);
+  if (scene == nullptr || scene->mRootNode == nullptr)
+    throw MeshError("mesh file '" + path + "': cannot read it (" + importer.GetErrorString() + ")");
+  auto mesh = std::make_shared<MeshData>();
+  mesh->source = path;
+  collect(*scene, *scene->mRootNode, aiMatrix4x4(), *mesh);
+  if (mesh->triangles.empty())
+    throw MeshError("mesh file '" + path + "': expected at least one triangle, found none");
+  for (auto& v : mesh->vertices) v = v.cwiseProduct(scale);
+  weld(*mesh);
+  return mesh;
+}
+
+}  // namespace tribo::io

@@ -1,0 +1,152 @@
+#include "study/result_writer.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <utility>
+
+#include "contact/normal_law.hpp"
+#include "core/constraint_solver.hpp"
+#include "study/csv_text.hpp"
+#include "study/file_commit.hpp"
+
+namespace tribo::study {
+
+namespace {
+
+// JSON has no NaN or infinity: a non-finite figure is written as null.
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; }
+
+}  // namespace
+
+void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory) {
+  const auto tmp = partialPath(file);
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
+  const auto& names = trajectory.columns();
+  for (std::size_t c = 0; c < names.size(); ++c)
+    std::fprintf(f, "%s%s", c ? "," : "", names[c].c_str());
+  std::fputc('\n', f);
+  char buf[64];
+  for (std::size_t r = 0; r < trajectory.rows(); ++r) {
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      if (c) std::fputc(',', f);
+      const char* end = csvNumberTo(buf, buf + sizeof buf, trajectory.column(c)[r]);
+      std::fwrite(buf, 1, static_cast<std::size_t>(end - buf), f);
+    }
+    std::fputc('\n', f);
+  }
+  const bool ok = std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !ok) throw std::runtime_error("error writing '" + tmp.string() + "'");
+  commitFile(file);
+}
+
+void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
+                      const RunResult& result) {
+  const Model& model = *scene.model;
+  const SimulationOptions& o = model.options;
+  nlohmann::json j;
+  j["status"] = result.complete ? "complete" : "diverged";
+  if (!result.complete) {
+    j["error"] = result.message;
+    // Where the run stopped: the trajectory ends at the last good state before this time.
+    j["stopped_at"] = {
+        {"time", result.stop.time}, {"body", result.stop.body}, {"quantity", result.stop.quantity}};
+  }
+  j["warnings"] = result.warnings;
+  j["scene"] = scene.path;
+  j["notes"] = scene.notes;
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& [name, value] : scene.parameters) params[name] = value;
+  j["parameters"] = params;
+  j["settings"] = {{"integrator", integratorName(o.integrator)},
+                   {"time_step", o.time_step},
+                   {"duration", o.duration},
+                   {"baumgarte_alpha", o.baumgarte_alpha},
+                   {"baumgarte_beta", o.baumgarte_beta},
+                   {"output_interval", scene.output.interval}};
+  nlohmann::json materials = nlohmann::json::array();
+  for (const auto& m : model.materials) {
+    nlohmann::json material = {{"normal_law", contact::normalLawName(m.normal.type)},
+                               {"stiffness", m.normal.stiffness},
+                               {"damping", m.normal.damping},
+                               {"friction_law", std::string(m.friction->name())}};
+    // The depth exponent of the nonlinear laws (hertz: always 3/2), and where recurdyn's
+    // damping is full.
+    if (m.normal.type == contact::NormalLawType::kHertz) material["exponent"] = 1.5;
+    if (m.normal.type == contact::NormalLawType::kHuntCrossley ||
+        m.normal.type == contact::NormalLawType::kRecurDyn)
+      material["exponent"] = m.normal.exponent;
+    if (m.normal.type == contact::NormalLawType::kRecurDyn)
+      material["max_depth"] = m.normal.max_depth;
+    materials.push_back(std::move(material));
+  }
+  j["settings"]["materials"] = materials;
+  if (isAdaptive(o.integrator)) {
+    j["settings"]["relative_tolerance"] = o.relative_tolerance;
+    j["settings"]["absolute_tolerance"] = o.absolute_tolerance;
+    j["settings"]["max_internal_step"] = o.max_internal_step;
+    j["settings"]["event_location"] = o.event_location;
+  }
+  {
+    const ConstraintOptions& c = o.constraints;
+    const int equations = static_cast<int>(constraintRows(model).size());
+    j["settings"]["constraints"] = {
+        {"equations", equations},
+        {"factorization", useSparseFactorization(c, equations) ? "sparse" : "dense"},
+        {"projection", c.projection},
+        {"projection_tolerance", c.projection_tolerance},
+        {"projection_iterations", c.projection_iterations},
+        {"redundant", c.redundant == RedundancyPolicy::kRemove ? "remove" : "error"}};
+  }
+  j["stability"] = {{"estimated_max_step", number(result.stability.limit.max_step)},
+                    {"limiting_element", result.stability.limit.element},
+                    {"notes", result.stability.notes}};
+  const auto& s = result.summary;
+  static const char* kAxis[] = {"x", "y", "z"};
+  j["observed"] = {{"body", scene.output.summary.body},
+                   {"coordinate", kAxis[scene.output.summary.coordinate]},
+                   {"stick_speed", scene.output.summary.stick_speed}};
+  j["oscillating"] = s.oscillating;
+  j["amplitude_pp"] = number(s.amplitude_pp);
+  j["period"] = number(s.period);
+  j["time_to_98"] = number(s.time_to_98);
+  j["stuck_fraction"] = number(s.stuck_fraction);
+  j["mean"] = number(s.x_mean);
+  j["cycles_found"] = s.cycles.size();
+  j["cycles_used"] = s.cycles_used;
+  j["run"] = {
+      {"simulated_seconds", result.simulated_seconds},
+      {"steps", result.stats.steps},
+      {"wall_seconds", result.wall_seconds},
+      {"simulated_seconds_per_wall_second", number(result.simulated_seconds / result.wall_seconds)},
+      {"max_penetration", result.stats.max_penetration},
+      {"max_constraint_error", result.stats.max_constraint_error},
+      {"max_constraint_rate_error", result.stats.max_constraint_rate_error},
+      {"integrator_steps", result.stats.integrator_steps},
+      {"rejected_steps", result.stats.rejected_steps},
+      {"force_evaluations", result.stats.evaluations},
+      {"events", result.stats.events},
+      {"joint_friction_unconverged_steps", result.stats.joint_friction_unconverged}};
+  const auto tmp = partialPath(file);
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
+    out << j.dump(2) << '\n';
+    if (!out) throw std::runtime_error("error writing '" + tmp.string() + "'");
+  }
+  commitFile(file);
+}
+
+void writeResults(const std::filesystem::path& dir, const io::Scene& scene,
+                  const RunResult& result) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw std::runtime_error("cannot create output folder '" + dir.string() + "': " + ec.message());
+  writeTrajectoryCsv(dir / "trajectory.csv", result.trajectory);
+  writeSummaryJson(dir / "summary.json", scene, result);
+}
+
+}  // namespace tribo::study

@@ -1,0 +1,131 @@
+// Mesh files through assimp: the same unit cube written as ASCII STL, OBJ and COLLADA must
+// load as the same closed solid (8 vertices, 12 triangles, volume 1); scaling, convexity
+// checks and unreadable files give what the header promises.
+#include "io/mesh_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "contact/shape_inertia.hpp"
+
+namespace tribo::contact {
+namespace {
+
+using io::loadMesh;
+
+namespace fs = std::filesystem;
+
+const double kV[8][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                         {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+const int kT[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                       {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+
+fs::path write(const std::string& name, const std::string& text) {
+  const fs::path path = fs::temp_directory_path() / ("tribo_mesh_test_" + name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string stl() {
+  std::ostringstream s;
+  s << "solid cube\n";
+  for (const auto& t : kT) {
+    s << " facet normal 0 0 0\n  outer loop\n";
+    for (int i : t) s << "   vertex " << kV[i][0] << " " << kV[i][1] << " " << kV[i][2] << "\n";
+    s << "  endloop\n endfacet\n";
+  }
+  s << "endsolid cube\n";
+  return s.str();
+}
+
+std::string obj() {
+  std::ostringstream s;
+  for (const auto& v : kV) s << "v " << v[0] << " " << v[1] << " " << v[2] << "\n";
+  for (const auto& t : kT) s << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+  return s.str();
+}
+
+std::string dae() {
+  std::ostringstream pos, idx;
+  for (const auto& v : kV) pos << v[0] << " " << v[1] << " " << v[2] << " ";
+  for (const auto& t : kT) idx << t[0] << " " << t[1] << " " << t[2] << " ";
+  std::ostringstream s;
+  s << R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+  <library_geometries>
+    <geometry id="cube" name="cube"><mesh>
+      <source id="cube-pos"><float_array id="cube-pos-array" count="24">)"
+    << pos.str() << R"(</float_array>
+        <technique_common><accessor source="#cube-pos-array" count="8" stride="3">
+          <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+        </accessor></technique_common></source>
+      <vertices id="cube-vtx"><input semantic="POSITION" source="#cube-pos"/></vertices>
+      <triangles count="12"><input semantic="VERTEX" source="#cube-vtx" offset="0"/><p>)"
+    << idx.str() << R"(</p></triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes><visual_scene id="scene">
+    <node id="n"><instance_geometry url="#cube"/></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+  return s.str();
+}
+
+TEST(MeshLoader, StlObjAndDaeGiveTheSameClosedCube) {
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"cube.stl", stl()}, {"cube.obj", obj()}, {"cube.dae", dae()}}) {
+    const fs::path path = write(name, text);
+    const auto mesh = loadMesh(path.string());
+    EXPECT_EQ(mesh->vertices.size(), 8u) << name;
+    EXPECT_EQ(mesh->triangles.size(), 12u) << name;
+    const auto p = solidMassProperties(Shape::convexMesh(makeConvex(*mesh)), 1.0);
+    EXPECT_NEAR(p.volume, 1.0, 1e-12) << name;
+    EXPECT_TRUE(p.centroid.isApprox(Eigen::Vector3d(0.5, 0.5, 0.5), 1e-12)) << name;
+    // Scaled by (2, 1, 0.5): volume 1, x extent 2.
+    const auto scaled = loadMesh(path.string(), {2.0, 1.0, 0.5});
+    double x_max = 0;
+    for (const auto& v : scaled->vertices) x_max = std::max(x_max, v.x());
+    EXPECT_DOUBLE_EQ(x_max, 2.0) << name;
+    fs::remove(path);
+  }
+}
+
+TEST(MeshLoader, ConvexityIsCheckedAndInwardFacesAreTurned) {
+  auto mesh = loadMesh(write("c.obj", obj()).string());
+  MeshData flipped = *mesh;
+  for (auto& t : flipped.triangles) std::swap(t[1], t[2]);
+  const auto fixed = makeConvex(flipped);
+  EXPECT_NEAR(solidMassProperties(Shape::convexMesh(fixed), 1.0).volume, 1.0, 1e-12);
+  // Push the (1, 1, 1) corner inwards past the faces it shares with its neighbours: not
+  // convex any more.
+  MeshData dented = *mesh;
+  for (auto& v : dented.vertices)
+    if (v.isApprox(Eigen::Vector3d(1, 1, 1))) v = Eigen::Vector3d(0.6, 0.6, 0.6);
+  try {
+    makeConvex(dented);
+    ADD_FAILURE() << "a dented cube passed as convex";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("not convex"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MeshLoader, MissingOrUnreadableFilesNameTheFile) {
+  try {
+    loadMesh("/nonexistent/part.stl");
+    ADD_FAILURE();
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/part.stl"), std::string::npos);
+  }
+  const fs::path junk = write("junk.stl", "this is not a mesh\n");
+  EXPECT_THROW(loadMesh(junk.string()), MeshError);
+  fs::remove(junk);
+}
+
+}  // namespace
+}  // namespace tribo::contact
