@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -21,15 +20,29 @@ const std::set<std::string> kJointTypes{"fixed",     "revolute", "continuous",
                                         "prismatic", "floating", "planar"};
 
 // Collects urdfdom's console messages while it parses, instead of printing them.
+// console_bridge has one process-wide handler: this one is installed once and files each
+// message with the thread that is parsing, so files parsed at once on several threads (a
+// sweep's points) keep their messages apart without a lock of ours.
 class MessageCollector : public console_bridge::OutputHandler {
  public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN) messages.push_back(text);
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN && sink) sink->push_back(text);
   }
-  std::vector<std::string> messages;
+  static thread_local std::vector<std::string>* sink;
 };
+thread_local std::vector<std::string>* MessageCollector::sink = nullptr;
 
-std::mutex console_mutex;  // console_bridge's handler is process-wide
+// urdfdom's parse with its messages gathered into `messages`.
+urdf::ModelInterfaceSharedPtr parseCollecting(const std::string& xml,
+                                              std::vector<std::string>& messages) {
+  static MessageCollector collector;
+  static const bool installed = (console_bridge::useOutputHandler(&collector), true);
+  (void)installed;
+  MessageCollector::sink = &messages;
+  urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  MessageCollector::sink = nullptr;
+  return model;
+}
 
 Eigen::Isometry3d toIsometry(const urdf::Pose& p) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -101,16 +114,8 @@ class Reader {
       throw UrdfError(at(robot ? robot->Row() : 0) + "expected a <robot> root element");
     const XmlIndex index = indexAndCheck(robot);
 
-    urdf::ModelInterfaceSharedPtr model;
     std::vector<std::string> messages;
-    {
-      std::lock_guard<std::mutex> lock(console_mutex);
-      MessageCollector collector;
-      console_bridge::useOutputHandler(&collector);
-      model = urdf::parseURDF(xml);
-      console_bridge::restorePreviousOutputHandler();
-      messages = collector.messages;
-    }
+    const urdf::ModelInterfaceSharedPtr model = parseCollecting(xml, messages);
     if (!model) {
       std::string why;
       for (const auto& m : messages) why += (why.empty() ? "" : "; ") + m;
