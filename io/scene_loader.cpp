@@ -73,6 +73,7 @@
 #include "core/number_text.hpp"
 #include "friction/friction_law.hpp"
 #include "io/mesh_loader.hpp"
+#include "io/scene_expression.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
 
@@ -120,9 +121,17 @@ class Value {
     const std::string& s = node_.Scalar();
     return isReference(s) ? params_->resolve(s, where(), path_).text : s;
   }
+  // A number, or an expression over parameters (io/scene_expression.hpp).
   double number() const {
-    if (node_.IsScalar())
-      if (const auto v = parseNumber(text())) return *v;
+    if (node_.IsScalar()) {
+      const std::string t = text();
+      if (const auto v = parseNumber(t)) return *v;
+      try {
+        return evaluateExpression(t, *params_, where(), path_);
+      } catch (const SceneError&) {
+        if (looksLikeExpression(t)) throw;  // else: a word, say so plainly below
+      }
+    }
     fail("expected a number, found " + found());
   }
   double positive() const {

@@ -70,11 +70,6 @@ void ParameterTable::add(const std::string& name, const std::string& text,
                      "digit (got '" +
                          name + "')");
   if (find(name)) throw SceneError(where, key_path, "parameter '" + name + "' defined twice");
-  if (isReference(text))
-    throw SceneError(where, key_path,
-                     "a parameter's value must be a number or a string, not a reference to "
-                     "another parameter (got '" +
-                         text + "')");
   parameters_.push_back({name, text, parseNumber(text).has_value(), where, key_path, false});
 }
 

@@ -6,8 +6,9 @@
 //     "1.5m", "inf", "nan").
 // Command-line overrides (`--set NAME=VALUE`) replace a parameter's value before any
 // reference is resolved; a parameter whose value in the file is a number only takes numbers.
-// Not here: YAML (io/scene_loader.cpp reads the file and feeds this table), parameters that
-// refer to other parameters, arithmetic on parameters.
+// A parameter's value may be an expression over other parameters; where a number is
+// expected, io/scene_expression.hpp evaluates it.
+// Not here: YAML (io/scene_loader.cpp reads the file and feeds this table), evaluation.
 #pragma once
 
 #include <optional>
@@ -51,8 +52,11 @@ std::optional<double> parseNumber(std::string_view text);
 // Is `name` usable as a parameter name: [A-Za-z_][A-Za-z0-9_]*.
 bool isParameterName(std::string_view name);
 
-// Does `text` refer to a parameter, i.e. does it start with '$'?
-inline bool isReference(std::string_view text) { return !text.empty() && text.front() == '$'; }
+// Does `text` refer to a parameter as a whole: '$' then a parameter name? ("$k / $m" is an
+// expression, io/scene_expression.hpp.)
+inline bool isReference(std::string_view text) {
+  return !text.empty() && text.front() == '$' && isParameterName(text.substr(1));
+}
 
 class ParameterTable {
  public:
