@@ -72,6 +72,8 @@
 #include "core/model_builder.hpp"
 #include "core/number_text.hpp"
 #include "friction/friction_law.hpp"
+#include "friction/tabulated_law.hpp"
+#include "io/friction_curve.hpp"
 #include "io/mesh_loader.hpp"
 #include "io/scene_expression.hpp"
 #include "io/urdf_model.hpp"
@@ -715,6 +717,7 @@ class Loader {
       name.fail("friction law '" + name.text() +
                 "' is not defined in friction_laws (defined: " + joined(law_names_) + ")");
     LawEntry& law = it->second;
+    if (!law.law && law.spec.name == "tabulated") law.law = tabulatedLaw(law, name);
     if (!law.law) {
       try {
         law.law = friction::makeFrictionLaw(law.spec);
@@ -723,6 +726,30 @@ class Loader {
       }
     }
     return law.law;
+  }
+
+  // The `tabulated` law: its only key `file`, a CSV curve relative to the scene file
+  // (io/friction_curve.hpp); rule violations are reported at the curve's line.
+  std::shared_ptr<const friction::FrictionLaw> tabulatedLaw(const LawEntry& law,
+                                                            const Value& selected_by) {
+    for (const auto& [key, value] : law.spec.values)
+      law.at.fail("tabulated: unknown key '" + key + "' (accepted keys: file)");
+    for (const auto& [key, value] : law.spec.options)
+      if (key != "file") law.at.fail("tabulated: unknown key '" + key + "' (accepted keys: file)");
+    const auto file = law.spec.options.find("file");
+    if (file == law.spec.options.end())
+      law.at.fail("tabulated: missing required key 'file' (a CSV of speed, coefficient)");
+    std::filesystem::path path = file->second;
+    if (path.is_relative()) path = std::filesystem::path(file_).parent_path() / path;
+    const FrictionCurve curve = readFrictionCurve(path.string());
+    try {
+      return std::make_shared<friction::TabulatedLaw>(curve.speeds, curve.coefficients);
+    } catch (const friction::TabulatedPointError& e) {
+      throw SceneError({path.string(), curve.lines[e.point], 0}, "",
+                       std::string(e.what()) + " (selected by " + selected_by.path() + ")");
+    } catch (const friction::FrictionParameterError& e) {
+      law.at.fail(std::string(e.what()) + " (selected by " + selected_by.path() + ")");
+    }
   }
 
   void readSpring(const Value& v) {
@@ -747,6 +774,7 @@ class Loader {
   void readFrictionLaws(const Value& v) {
     Keys known = friction::knownFrictionLaws();
     for (const auto& name : friction::knownStatefulFrictionLaws()) known.push_back(name);
+    known.push_back("tabulated");  // built here from its file (tabulatedLaw)
     const Map laws(v, {});
     for (const auto& [law, entry] : laws.entries()) {
       if (std::find(known.begin(), known.end(), law) == known.end())
