@@ -91,15 +91,37 @@ void Dynamics::projectConstraints(State& state) {
   if (c.projection) projection_.project(state, c.projection_tolerance, c.projection_iterations);
 }
 
+void Dynamics::setProfiling(bool on) {
+  if (on && !profiling_) {
+    profile_ = {};
+    fcl_offset_ = detector_.fclSeconds();
+  }
+  profiling_ = on;
+  detector_.setTiming(on);
+}
+
 const Workspace& Dynamics::evaluate(const State& state) {
+  StageClock clock(profiling_ ? &profile_ : nullptr);
   updatePoses(state);
+  clock.lap(Stage::kPoses);
   detect();
+  clock.lap(Stage::kDetect);
   contactKinematics(state);
+  clock.lap(Stage::kContactKinematics);
   normalForces();
+  clock.lap(Stage::kNormalForce);
   friction(state);
+  clock.lap(Stage::kFriction);
   assemble(state);
+  clock.lap(Stage::kAssemble);
   unconstrainedAccelerations(state);
+  clock.lap(Stage::kAccelerations);
   solveConstraints(state);
+  clock.lap(Stage::kConstraints);
+  if (profiling_) {
+    ++profile_.evaluations;
+    profile_.fcl = detector_.fclSeconds() - fcl_offset_;
+  }
   return ws_;
 }
 
@@ -245,6 +267,7 @@ void Dynamics::solveConstraints(const State& state) {
 
 bool Dynamics::advanceFrictionStates(State& state) {
   if (!any_stateful_) return false;
+  StageClock clock(profiling_ ? &profile_ : nullptr);
   const Model& m = *model_;
   anchor_book_.begin(state.stick_anchors);
   for (const contact::ContactRecord& rec : ws_.contacts) {
@@ -262,6 +285,7 @@ bool Dynamics::advanceFrictionStates(State& state) {
   std::vector<contact::StickAnchor> next = anchor_book_.finish();
   const bool changed = next != state.stick_anchors;
   if (changed) state.stick_anchors = std::move(next);
+  clock.lap(Stage::kFrictionStates);
   return changed;
 }
 

@@ -11,8 +11,9 @@
 //   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations
 //   solveConstraints   Lagrange multipliers (core/constraint_solver.hpp), then joint
 //                      friction under reaction load
-// Results land in the Workspace, split by source. After a step, advanceFrictionStates lets
-// stateful friction laws move their anchors.
+// Results land in the Workspace, split by source. With profiling on, each stage's wall time
+// is added to a StageProfile (core/stage_profile.hpp); off, no clock is read. After a step,
+// advanceFrictionStates lets stateful friction laws move their anchors.
 // Not here: time stepping (core/integrator.hpp), run control and divergence checks
 // (core/simulator.hpp).
 #pragma once
@@ -24,6 +25,7 @@
 #include "core/constraint_solver.hpp"
 #include "core/joint_forces.hpp"
 #include "core/model.hpp"
+#include "core/stage_profile.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
 
@@ -51,9 +53,11 @@ class Dynamics {
   bool hasStatefulFriction() const { return any_stateful_; }
   bool advanceFrictionStates(State& state);
 
-  // Time spent inside FCL, measured when switched on (benchmarks) [s].
-  void setCollisionTiming(bool on) { detector_.setTiming(on); }
-  double collisionFclSeconds() const { return detector_.fclSeconds(); }
+  // Time per stage (core/stage_profile.hpp). Switching profiling on starts the profile from
+  // zero; switching it off keeps the totals. Off by default.
+  void setProfiling(bool on);
+  bool profiling() const { return profiling_; }
+  const StageProfile& profile() const { return profile_; }
 
  private:
   // The stages of evaluate, in order.
@@ -78,6 +82,9 @@ class Dynamics {
   std::vector<char> stateful_material_;  // per material: its friction law keeps state
   bool any_stateful_ = false;
   contact::AnchorBook anchor_book_;
+  bool profiling_ = false;
+  StageProfile profile_;
+  double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on
 };
 
 }  // namespace tribo

@@ -1,6 +1,7 @@
 #include "core/simulator.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -30,7 +31,25 @@ const Workspace& Simulator::current() {
   return dynamics_.workspace();
 }
 
+void Simulator::setProfiling(bool on) {
+  if (on && !profiling_) stats_.profile = {};
+  profiling_ = on;
+  dynamics_.setProfiling(on);
+}
+
 StepStatus Simulator::step() {
+  if (!profiling_) return advance();
+  const auto start = std::chrono::steady_clock::now();
+  StepStatus status = advance();
+  const double step_seconds =
+      stats_.profile.step +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats_.profile = dynamics_.profile();
+  stats_.profile.step = step_seconds;
+  return status;
+}
+
+StepStatus Simulator::advance() {
   const ScopedFlushDenormals flush;  // core/flush_denormals.hpp: why
   if (!energy_.started()) energy_.reset(state_, current());
   last_good_ = state_;
