@@ -98,14 +98,18 @@ StepStatus Simulator::check() {
   const Model& m = model();
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     const BodyState& s = state_.bodies[b];
-    const std::string& name = m.bodies[b].name;
-    const std::string who = "body '" + name + "' ";
-    if (!s.position.allFinite()) return failed(name, "position", who + "position is not finite");
-    if (!s.orientation.coeffs().allFinite())
-      return failed(name, "orientation", who + "orientation is not finite");
-    if (!s.velocity.allFinite()) return failed(name, "velocity", who + "velocity is not finite");
-    if (!s.angular_velocity.allFinite())
-      return failed(name, "angular_velocity", who + "angular velocity is not finite");
+    // The message is built only on failure: a warm step does not allocate.
+    const char* quantity = !s.position.allFinite()               ? "position"
+                           : !s.orientation.coeffs().allFinite() ? "orientation"
+                           : !s.velocity.allFinite()             ? "velocity"
+                           : !s.angular_velocity.allFinite()     ? "angular_velocity"
+                                                                 : nullptr;
+    if (quantity != nullptr) {
+      const std::string& name = m.bodies[b].name;
+      std::string words = quantity;
+      std::replace(words.begin(), words.end(), '_', ' ');
+      return failed(name, quantity, "body '" + name + "' " + words + " is not finite");
+    }
   }
   const Workspace& ws = current();
   for (const auto& c : ws.contacts) {
