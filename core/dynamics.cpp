@@ -282,9 +282,7 @@ bool Dynamics::advanceFrictionStates(State& state) {
     anchor_book_.add(contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point, frames,
                                        state.time, update));
   }
-  std::vector<contact::StickAnchor> next = anchor_book_.finish();
-  const bool changed = next != state.stick_anchors;
-  if (changed) state.stick_anchors = std::move(next);
+  const bool changed = anchor_book_.finish(state.stick_anchors);
   clock.lap(Stage::kFrictionStates);
   return changed;
 }
