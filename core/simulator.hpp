@@ -10,7 +10,8 @@
 // A step returns a status; it never throws and never lets a NaN through: on divergence the
 // state stays at the last good step and the status names the step, time, body and quantity.
 // With profiling on (setProfiling), StepStats::profile holds the time per stage of the step
-// (core/stage_profile.hpp); off, the default, no clock is read.
+// (core/stage_profile.hpp); off, the default, no clock is read. A warm step does not
+// allocate (tests/core/allocation_test.cpp): messages are built only on failure.
 // Not here: output (io/), the stop time (the caller's loop), the a-priori step limit
 // (core/stability.hpp).
 #pragma once
