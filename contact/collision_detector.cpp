@@ -12,6 +12,7 @@
 #include <fcl/narrowphase/collision.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -93,6 +94,46 @@ class TrackedObject : public fcl::CollisionObjectd {
   }
 };
 
+std::atomic<CollisionDetector::FclScopeHook> fcl_scope_hook{nullptr};
+
+// Brackets calls into FCL: their wall time when `seconds` is given, and the test hook.
+class FclScope {
+ public:
+  explicit FclScope(double* seconds)
+      : seconds_(seconds), hook_(fcl_scope_hook.load(std::memory_order_relaxed)) {
+    if (seconds_ != nullptr) start_ = std::chrono::steady_clock::now();
+    if (hook_ != nullptr) hook_(true);
+  }
+  ~FclScope() {
+    if (hook_ != nullptr) hook_(false);
+    if (seconds_ != nullptr)
+      *seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  FclScope(const FclScope&) = delete;
+  FclScope& operator=(const FclScope&) = delete;
+
+ private:
+  double* seconds_;
+  CollisionDetector::FclScopeHook hook_;
+  std::chrono::steady_clock::time_point start_{};
+};
+
+// Tribo code called back from inside FCL: outside the hook's bracket while it runs.
+class FclCallback {
+ public:
+  FclCallback() : hook_(fcl_scope_hook.load(std::memory_order_relaxed)) {
+    if (hook_ != nullptr) hook_(false);
+  }
+  ~FclCallback() {
+    if (hook_ != nullptr) hook_(true);
+  }
+  FclCallback(const FclCallback&) = delete;
+  FclCallback& operator=(const FclCallback&) = delete;
+
+ private:
+  CollisionDetector::FclScopeHook hook_;
+};
+
 std::uint64_t pairKey(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
@@ -154,9 +195,6 @@ struct CollisionDetector::Impl {
       case PairKind::kFcl:
         break;
     }
-    const auto start =
-        timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    result.clear();
     // FCL 0.7 answers shape/mesh with the normal reversed (and misses some sphere/triangle
     // contacts) but mesh/shape correctly: ask with the mesh first and turn the normal back.
     // Its sphere/triangle test also reports the depth with a negative sign: for mesh pairs
@@ -165,10 +203,14 @@ struct CollisionDetector::Impl {
         shapes[b].type == ShapeType::kTriangleMesh && shapes[a].type != ShapeType::kTriangleMesh;
     const bool mesh =
         shapes[a].type == ShapeType::kTriangleMesh || shapes[b].type == ShapeType::kTriangleMesh;
-    if (swap)
-      fcl::collide(objects[b].get(), objects[a].get(), request, result);
-    else
-      fcl::collide(objects[a].get(), objects[b].get(), request, result);
+    {
+      const FclScope scope(timing ? &fcl_seconds : nullptr);
+      result.clear();
+      if (swap)
+        fcl::collide(objects[b].get(), objects[a].get(), request, result);
+      else
+        fcl::collide(objects[a].get(), objects[b].get(), request, result);
+    }
     const auto first = out.size();
     for (std::size_t i = 0; i < result.numContacts(); ++i) {
       const auto& c = result.getContact(i);
@@ -182,9 +224,6 @@ struct CollisionDetector::Impl {
       cp.depth = depth;
       out.push_back(cp);
     }
-    if (timing)
-      fcl_seconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (kinds[p] == PairKind::kPolyhedra && out.size() > first) {
       // EPA's deepest point gives the normal and depth; a face contact becomes its manifold.
       const ContactPoint epa = *std::max_element(
@@ -284,6 +323,9 @@ const std::vector<std::pair<int, int>>& CollisionDetector::pairs() const { retur
 
 void CollisionDetector::setTiming(bool timing) { impl_->timing = timing; }
 double CollisionDetector::fclSeconds() const { return impl_->fcl_seconds; }
+void CollisionDetector::setFclScopeHook(FclScopeHook hook) {
+  fcl_scope_hook.store(hook, std::memory_order_relaxed);
+}
 
 void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
                                std::vector<ContactPoint>& out) {
@@ -301,21 +343,20 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
     for (std::size_t p = 0; p < m.pairs.size(); ++p) m.narrowphase(static_cast<int>(p), poses, out);
     return;
   }
-  const auto start =
-      m.timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-  m.manager.update();
   m.candidates.assign(m.unbounded_pairs.begin(), m.unbounded_pairs.end());
-  m.manager.collide(&m, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* d) {
-    auto* self = static_cast<Impl*>(d);
-    const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
-    const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-    const auto it = self->pair_index.find(pairKey(a, b));
-    if (it != self->pair_index.end()) self->candidates.push_back(it->second);
-    return false;  // keep going
-  });
-  if (m.timing)
-    m.fcl_seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  {
+    const FclScope scope(m.timing ? &m.fcl_seconds : nullptr);
+    m.manager.update();
+    m.manager.collide(&m, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* d) {
+      const FclCallback ours;
+      auto* self = static_cast<Impl*>(d);
+      const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
+      const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
+      const auto it = self->pair_index.find(pairKey(a, b));
+      if (it != self->pair_index.end()) self->candidates.push_back(it->second);
+      return false;  // keep going
+    });
+  }
   std::sort(m.candidates.begin(), m.candidates.end());  // deterministic order
   for (int p : m.candidates) m.narrowphase(p, poses, out);
 }

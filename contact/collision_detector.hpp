@@ -10,6 +10,8 @@
 // point into the face manifold (contact/polyhedron_contacts.hpp) unless switched off. With
 // `broadphase` on, FCL's dynamic AABB tree culls the pairs first; half-spaces stay out of
 // the tree (their AABB is infinite) and their pairs are always tested.
+// Does not allocate once its buffers have grown to their working size; FCL's narrowphase
+// may (libccd's EPA, the box/box manifold), which a test hook brackets.
 // Not here: forces, materials, which pairs exist (the model builder), contact identity
 // between steps (contact/stick_anchor.hpp).
 #pragma once
@@ -63,6 +65,14 @@ class CollisionDetector {
   // measured only when `timing` is on (it costs two clock reads per call).
   void setTiming(bool timing);
   double fclSeconds() const;
+
+  // Test hook, process-wide: when set, called with true right before and false right after
+  // every call into FCL (broadphase update and collide, FCL narrowphase collide), so a test
+  // can tell FCL's own heap use from Tribo's (tests/core/allocation_test.cpp). Tribo code
+  // that FCL calls back (the broadphase pair callback) runs outside the bracket. Null (the
+  // default): nothing is called.
+  using FclScopeHook = void (*)(bool inside);
+  static void setFclScopeHook(FclScopeHook hook);
 
  private:
   struct Impl;

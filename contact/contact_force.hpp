@@ -1,5 +1,6 @@
-// Contact kinematics and forces at one contact point: depth rate, tangential slip
-// (including the surface velocity of belts and conveyors), penalty normal force and the
+// Contact kinematics and forces at one contact point, as three stages of the step (each a
+// loop over all points in core/dynamics.cpp): kinematics (depth rate, tangential slip
+// including the surface velocity of belts and conveyors), penalty normal force, and the
 // pair's friction law.
 //
 //   v_rel = (v_B + w_B x (p - o_B)) - (v_A + w_A x (p - o_A))
@@ -39,7 +40,30 @@ struct Material {
   std::shared_ptr<const friction::FrictionLaw> friction;  // never null in a built model
 };
 
-// Fills `out` (kinematics and forces) for point `cp` between A and B with a memoryless law.
+// Kinematics stage: fills out.point, out.depth_rate and out.slip for point `cp` between A
+// and B (inline: the hot path of every contact scene).
+inline void contactKinematics(const ContactPoint& cp, const GeometryMotion& a,
+                              const GeometryMotion& b, ContactRecord& out) {
+  const Eigen::Vector3d& n = cp.normal;
+  const Eigen::Vector3d v_rel = b.pointVelocity(cp.position) - a.pointVelocity(cp.position);
+  const double vn = n.dot(v_rel);
+  out.point = cp;
+  out.depth_rate = -vn;
+  const Eigen::Vector3d v_slide = v_rel + b.surface_velocity - a.surface_velocity;
+  out.slip = v_slide - n.dot(v_slide) * n;
+}
+
+// Normal-force stage, after the kinematics: out.normal_force.
+inline void normalForce(const Material& material, ContactRecord& out) {
+  out.normal_force = material.normal.force(out.point.depth, out.depth_rate);
+}
+
+// Friction stage, after the normal force: out.friction_force and out.mu with a memoryless
+// law, or with a stateful law given the contact's state view.
+void frictionForce(const Material& material, ContactRecord& out);
+void frictionForce(const Material& material, const friction::StickView& view, ContactRecord& out);
+
+// All three stages for one point (memoryless law; for tests and single-contact callers).
 void evaluateContact(const ContactPoint& cp, const GeometryMotion& a, const GeometryMotion& b,
                      const Material& material, ContactRecord& out);
 

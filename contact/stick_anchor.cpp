@@ -88,10 +88,13 @@ std::uint64_t AnchorBook::claim(const ContactPoint& cp, const StickAnchor* match
   return key;
 }
 
-std::vector<StickAnchor> AnchorBook::finish() {
+bool AnchorBook::finish(std::vector<StickAnchor>& anchors) {
   std::sort(next_.begin(), next_.end(),
             [](const StickAnchor& a, const StickAnchor& b) { return a.key < b.key; });
-  return std::move(next_);
+  previous_ = {};
+  if (next_ == anchors) return false;
+  anchors.swap(next_);
+  return true;
 }
 
 }  // namespace tribo::contact

@@ -70,16 +70,20 @@ friction::StickView stickView(const StickAnchor* anchor, const ContactPoint& cp,
 StickAnchor anchorAt(std::uint64_t key, const ContactPoint& cp, const AnchorFrames& frames,
                      double time, const friction::StickUpdate& update);
 
-// Builds the next step's anchor list: claim() hands out each contact's key by the rules
-// above (in contact order), add() takes the new anchor, finish() returns them sorted by key.
+// Builds the next step's anchor list: begin() with the current list, claim() hands out each
+// contact's key by the rules above (in contact order), add() takes the new anchor, finish()
+// sorts them by key and, if they differ, swaps them into the list. The book and the state
+// trade buffers instead of giving them away, so once both have grown to the working size a
+// step does not allocate.
 class AnchorBook {
  public:
   void begin(std::span<const StickAnchor> previous);
   // Key for a contact point given the anchor it matched (nullptr: none).
   std::uint64_t claim(const ContactPoint& cp, const StickAnchor* matched);
   void add(const StickAnchor& anchor) { next_.push_back(anchor); }
-  // The new, sorted anchor list (moved out).
-  std::vector<StickAnchor> finish();
+  // Sorts the new anchors by key; when they differ from `anchors` (the list given to
+  // begin()), swaps them in and returns true.
+  bool finish(std::vector<StickAnchor>& anchors);
 
  private:
   std::vector<std::uint64_t> claimed_;  // keys handed out this step

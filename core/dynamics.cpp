@@ -14,6 +14,12 @@ contact::CollisionDetector makeDetector(const Model& model) {
   return contact::CollisionDetector(std::move(shapes), std::move(pairs), model.options.collision);
 }
 
+// A body's surface velocity in the world frame (zero for the world).
+Vec3 surfaceVelocity(const Model& model, const Workspace& ws, BodyIndex b) {
+  if (b.isWorld()) return Vec3::Zero();
+  return ws.rotation[b.value] * model.bodies[b.value].surface_velocity;
+}
+
 contact::GeometryMotion motionOf(const Model& model, const State& state, const Workspace& ws,
                                  BodyIndex b) {
   contact::GeometryMotion m;
@@ -22,8 +28,15 @@ contact::GeometryMotion motionOf(const Model& model, const State& state, const W
   m.origin = s.position;
   m.velocity = s.velocity;
   m.angular_velocity = s.angular_velocity;
-  m.surface_velocity = ws.rotation[b.value] * model.bodies[b.value].surface_velocity;
+  m.surface_velocity = surfaceVelocity(model, ws, b);
   return m;
+}
+
+contact::AnchorFrames anchorFrames(const Model& model, const Workspace& ws,
+                                   const ContactPair& pair) {
+  return {&ws.geometry_poses[pair.geometry_a], &ws.geometry_poses[pair.geometry_b],
+          surfaceVelocity(model, ws, model.geometries[pair.geometry_a].body),
+          surfaceVelocity(model, ws, model.geometries[pair.geometry_b].body)};
 }
 
 void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
@@ -63,41 +76,6 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   }
 }
 
-namespace {
-
-contact::AnchorFrames anchorFrames(const Workspace& ws, const ContactPair& pair,
-                                   const contact::GeometryMotion& a,
-                                   const contact::GeometryMotion& b) {
-  return {&ws.geometry_poses[pair.geometry_a], &ws.geometry_poses[pair.geometry_b],
-          a.surface_velocity, b.surface_velocity};
-}
-
-}  // namespace
-
-bool Dynamics::advanceFrictionStates(State& state) {
-  if (!any_stateful_) return false;
-  const Model& m = *model_;
-  anchor_book_.begin(state.stick_anchors);
-  for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair& pair = m.contact_pairs[rec.point.pair];
-    if (!stateful_material_[pair.material]) continue;
-    const auto a = motionOf(m, state, ws_, m.geometries[pair.geometry_a].body);
-    const auto b = motionOf(m, state, ws_, m.geometries[pair.geometry_b].body);
-    const contact::AnchorFrames frames = anchorFrames(ws_, pair, a, b);
-    const contact::StickAnchor* old =
-        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
-    const friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
-    const friction::StickUpdate update =
-        m.materials[pair.material].friction->advance(rec.slip, rec.normal_force, view);
-    anchor_book_.add(contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point, frames,
-                                       state.time, update));
-  }
-  std::vector<contact::StickAnchor> next = anchor_book_.finish();
-  if (next == state.stick_anchors) return false;
-  state.stick_anchors = std::move(next);
-  return true;
-}
-
 State Dynamics::initialState() const {
   State s;
   s.time = 0.0;
@@ -113,8 +91,48 @@ void Dynamics::projectConstraints(State& state) {
   if (c.projection) projection_.project(state, c.projection_tolerance, c.projection_iterations);
 }
 
-void Dynamics::accumulateContacts(const State& state) {
+void Dynamics::setProfiling(bool on) {
+  if (on && !profiling_) {
+    profile_ = {};
+    fcl_offset_ = detector_.fclSeconds();
+  }
+  profiling_ = on;
+  detector_.setTiming(on);
+}
+
+const Workspace& Dynamics::evaluate(const State& state) {
+  StageClock clock(profiling_ ? &profile_ : nullptr);
+  updatePoses(state);
+  clock.lap(Stage::kPoses);
+  detect();
+  clock.lap(Stage::kDetect);
+  contactKinematics(state);
+  clock.lap(Stage::kContactKinematics);
+  normalForces();
+  clock.lap(Stage::kNormalForce);
+  friction(state);
+  clock.lap(Stage::kFriction);
+  assemble(state);
+  clock.lap(Stage::kAssemble);
+  unconstrainedAccelerations(state);
+  clock.lap(Stage::kAccelerations);
+  solveConstraints(state);
+  clock.lap(Stage::kConstraints);
+  if (profiling_) {
+    ++profile_.evaluations;
+    profile_.fcl = detector_.fclSeconds() - fcl_offset_;
+  }
+  return ws_;
+}
+
+void Dynamics::updatePoses(const State& state) {
   const Model& m = *model_;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
+    ws_.rotation[b] = r;
+    if (m.bodies[b].kind == BodyKind::kDynamic)
+      ws_.inv_inertia_world[b] = r * inv_inertia_body_[b] * r.transpose();
+  }
   for (std::size_t g = 0; g < m.geometries.size(); ++g) {
     const Geometry& geo = m.geometries[g];
     if (geo.body.isWorld()) {
@@ -127,33 +145,68 @@ void Dynamics::accumulateContacts(const State& state) {
       ws_.geometry_poses[g] = body * geo.local_pose;
     }
   }
+}
+
+void Dynamics::detect() {
   detector_.detect(ws_.geometry_poses, ws_.contact_points);
   ws_.contacts.resize(ws_.contact_points.size());
+}
+
+void Dynamics::contactKinematics(const State& state) {
+  const Model& m = *model_;
   ws_.max_penetration = 0.0;
   for (std::size_t i = 0; i < ws_.contact_points.size(); ++i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
     const ContactPair& pair = m.contact_pairs[cp.pair];
     const BodyIndex a = m.geometries[pair.geometry_a].body;
     const BodyIndex b = m.geometries[pair.geometry_b].body;
-    contact::ContactRecord& rec = ws_.contacts[i];
-    if (!stateful_material_[pair.material]) {
-      contact::evaluateContact(cp, motionOf(m, state, ws_, a), motionOf(m, state, ws_, b),
-                               m.materials[pair.material], rec);
-    } else {
-      const auto ma = motionOf(m, state, ws_, a), mb = motionOf(m, state, ws_, b);
-      const contact::StickAnchor* anchor =
-          contact::findAnchor(state.stick_anchors, cp, m.options.collision.match_radius);
-      const friction::StickView view =
-          contact::stickView(anchor, cp, anchorFrames(ws_, pair, ma, mb), state.time);
-      contact::evaluateContact(cp, ma, mb, m.materials[pair.material], view, rec);
-    }
+    contact::contactKinematics(cp, motionOf(m, state, ws_, a), motionOf(m, state, ws_, b),
+                               ws_.contacts[i]);
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
+  }
+}
+
+void Dynamics::normalForces() {
+  const Model& m = *model_;
+  for (contact::ContactRecord& rec : ws_.contacts)
+    contact::normalForce(m.materials[m.contact_pairs[rec.point.pair].material], rec);
+}
+
+void Dynamics::friction(const State& state) {
+  const Model& m = *model_;
+  for (contact::ContactRecord& rec : ws_.contacts) {
+    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    const contact::Material& material = m.materials[pair.material];
+    if (!stateful_material_[pair.material]) {
+      contact::frictionForce(material, rec);
+      continue;
+    }
+    const contact::StickAnchor* anchor =
+        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
+    const friction::StickView view =
+        contact::stickView(anchor, rec.point, anchorFrames(m, ws_, pair), state.time);
+    contact::frictionForce(material, view, rec);
+  }
+}
+
+void Dynamics::assemble(const State& state) {
+  const Model& m = *model_;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    ws_.contact_wrench[b].setZero();
+    ws_.spring_wrench[b].setZero();
+  }
+  for (const contact::ContactRecord& rec : ws_.contacts) {
+    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    const BodyIndex a = m.geometries[pair.geometry_a].body;
+    const BodyIndex b = m.geometries[pair.geometry_b].body;
     const Vec3 f = rec.force();
     if (!b.isWorld())
-      applyAt(ws_.contact_wrench[b.value], state.bodies[b.value].position, cp.position, f);
+      applyAt(ws_.contact_wrench[b.value], state.bodies[b.value].position, rec.point.position, f);
     if (!a.isWorld())
-      applyAt(ws_.contact_wrench[a.value], state.bodies[a.value].position, cp.position, -f);
+      applyAt(ws_.contact_wrench[a.value], state.bodies[a.value].position, rec.point.position, -f);
   }
+  accumulateSprings(state);
+  joint_forces_.accumulate(state, ws_);
 }
 
 void Dynamics::accumulateSprings(const State& state) {
@@ -185,26 +238,8 @@ void Dynamics::accumulateSprings(const State& state) {
   }
 }
 
-void Dynamics::computeKinematics(const State& state) {
+void Dynamics::unconstrainedAccelerations(const State& state) {
   const Model& m = *model_;
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-    const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
-    ws_.rotation[b] = r;
-    if (m.bodies[b].kind == BodyKind::kDynamic)
-      ws_.inv_inertia_world[b] = r * inv_inertia_body_[b] * r.transpose();
-  }
-}
-
-const Workspace& Dynamics::evaluate(const State& state) {
-  const Model& m = *model_;
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-    ws_.contact_wrench[b].setZero();
-    ws_.spring_wrench[b].setZero();
-  }
-  computeKinematics(state);
-  accumulateContacts(state);
-  accumulateSprings(state);
-  joint_forces_.accumulate(state, ws_);
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     const Body& body = m.bodies[b];
     if (body.kind != BodyKind::kDynamic) {
@@ -223,9 +258,33 @@ const Workspace& Dynamics::evaluate(const State& state) {
     ws_.linear_acceleration[b] = force / body.mass + m.options.gravity;
     ws_.angular_acceleration[b] = ws_.inv_inertia_world[b] * (torque - gyro);
   }
+}
+
+void Dynamics::solveConstraints(const State& state) {
   solver_.solve(state, ws_);
   joint_forces_.applyReactionFriction(solver_, ws_);
-  return ws_;
+}
+
+bool Dynamics::advanceFrictionStates(State& state) {
+  if (!any_stateful_) return false;
+  StageClock clock(profiling_ ? &profile_ : nullptr);
+  const Model& m = *model_;
+  anchor_book_.begin(state.stick_anchors);
+  for (const contact::ContactRecord& rec : ws_.contacts) {
+    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    if (!stateful_material_[pair.material]) continue;
+    const contact::AnchorFrames frames = anchorFrames(m, ws_, pair);
+    const contact::StickAnchor* old =
+        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
+    const friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
+    const friction::StickUpdate update =
+        m.materials[pair.material].friction->advance(rec.slip, rec.normal_force, view);
+    anchor_book_.add(contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point, frames,
+                                       state.time, update));
+  }
+  const bool changed = anchor_book_.finish(state.stick_anchors);
+  clock.lap(Stage::kFrictionStates);
+  return changed;
 }
 
 }  // namespace tribo

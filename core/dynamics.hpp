@@ -1,11 +1,21 @@
-// One force evaluation: state in, forces and constrained accelerations out. The fixed
-// pipeline of every evaluation:
-//   kinematics (rotations, world inertias) -> geometry poses -> collision -> contact kinematics,
-//   normal force, friction law -> spring-dampers -> joint forces (core/joint_forces.hpp) -> gravity
-//   and gyroscopic terms -> constraint solve (Lagrange multipliers) -> joint friction under
-//   reaction load -> accelerations
-// Results land in the Workspace, split by source. Not here: time stepping
-// (core/integrator.hpp), run control and divergence checks (core/simulator.hpp).
+// One force evaluation: state in, forces and constrained accelerations out, as a fixed
+// pipeline of named stages (each a member function below, run in this order by evaluate):
+//   updatePoses        kinematics (rotations, world inertias) and geometry poses
+//   detect             collision detection (contact/collision_detector.hpp)
+//   contactKinematics  per contact point: depth rate, slip (contact/contact_force.hpp)
+//   normalForces       per contact point: penalty normal force
+//   friction           per contact point: the pair's friction law (stateful laws: anchor
+//                      lookup and state view, contact/stick_anchor.hpp)
+//   assemble           wrenches by source: contacts, spring-dampers, joint forces
+//                      (core/joint_forces.hpp)
+//   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations
+//   solveConstraints   Lagrange multipliers (core/constraint_solver.hpp), then joint
+//                      friction under reaction load
+// Results land in the Workspace, split by source. With profiling on, each stage's wall time
+// is added to a StageProfile (core/stage_profile.hpp); off, no clock is read. After a step,
+// advanceFrictionStates lets stateful friction laws move their anchors.
+// Not here: time stepping (core/integrator.hpp), run control and divergence checks
+// (core/simulator.hpp).
 #pragma once
 
 #include <memory>
@@ -15,6 +25,7 @@
 #include "core/constraint_solver.hpp"
 #include "core/joint_forces.hpp"
 #include "core/model.hpp"
+#include "core/stage_profile.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
 
@@ -41,13 +52,24 @@ class Dynamics {
   // state.stick_anchors (contact/stick_anchor.hpp); returns true when they changed.
   bool hasStatefulFriction() const { return any_stateful_; }
   bool advanceFrictionStates(State& state);
-  // Time spent inside FCL, measured when switched on (benchmarks) [s].
-  void setCollisionTiming(bool on) { detector_.setTiming(on); }
-  double collisionFclSeconds() const { return detector_.fclSeconds(); }
+
+  // Time per stage (core/stage_profile.hpp). Switching profiling on starts the profile from
+  // zero; switching it off keeps the totals. Off by default.
+  void setProfiling(bool on);
+  bool profiling() const { return profiling_; }
+  const StageProfile& profile() const { return profile_; }
 
  private:
-  void computeKinematics(const State& state);
-  void accumulateContacts(const State& state);
+  // The stages of evaluate, in order.
+  void updatePoses(const State& state);
+  void detect();
+  void contactKinematics(const State& state);
+  void normalForces();
+  void friction(const State& state);
+  void assemble(const State& state);
+  void unconstrainedAccelerations(const State& state);
+  void solveConstraints(const State& state);
+
   void accumulateSprings(const State& state);
 
   std::shared_ptr<const Model> model_;
@@ -60,6 +82,9 @@ class Dynamics {
   std::vector<char> stateful_material_;  // per material: its friction law keeps state
   bool any_stateful_ = false;
   contact::AnchorBook anchor_book_;
+  bool profiling_ = false;
+  StageProfile profile_;
+  double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on
 };
 
 }  // namespace tribo

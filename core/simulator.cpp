@@ -1,6 +1,7 @@
 #include "core/simulator.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -30,7 +31,25 @@ const Workspace& Simulator::current() {
   return dynamics_.workspace();
 }
 
+void Simulator::setProfiling(bool on) {
+  if (on && !profiling_) stats_.profile = {};
+  profiling_ = on;
+  dynamics_.setProfiling(on);
+}
+
 StepStatus Simulator::step() {
+  if (!profiling_) return advance();
+  const auto start = std::chrono::steady_clock::now();
+  StepStatus status = advance();
+  const double step_seconds =
+      stats_.profile.step +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats_.profile = dynamics_.profile();
+  stats_.profile.step = step_seconds;
+  return status;
+}
+
+StepStatus Simulator::advance() {
   const ScopedFlushDenormals flush;  // core/flush_denormals.hpp: why
   if (!energy_.started()) energy_.reset(state_, current());
   last_good_ = state_;
@@ -79,14 +98,18 @@ StepStatus Simulator::check() {
   const Model& m = model();
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     const BodyState& s = state_.bodies[b];
-    const std::string& name = m.bodies[b].name;
-    const std::string who = "body '" + name + "' ";
-    if (!s.position.allFinite()) return failed(name, "position", who + "position is not finite");
-    if (!s.orientation.coeffs().allFinite())
-      return failed(name, "orientation", who + "orientation is not finite");
-    if (!s.velocity.allFinite()) return failed(name, "velocity", who + "velocity is not finite");
-    if (!s.angular_velocity.allFinite())
-      return failed(name, "angular_velocity", who + "angular velocity is not finite");
+    // The message is built only on failure: a warm step does not allocate.
+    const char* quantity = !s.position.allFinite()               ? "position"
+                           : !s.orientation.coeffs().allFinite() ? "orientation"
+                           : !s.velocity.allFinite()             ? "velocity"
+                           : !s.angular_velocity.allFinite()     ? "angular_velocity"
+                                                                 : nullptr;
+    if (quantity != nullptr) {
+      const std::string& name = m.bodies[b].name;
+      std::string words = quantity;
+      std::replace(words.begin(), words.end(), '_', ' ');
+      return failed(name, quantity, "body '" + name + "' " + words + " is not finite");
+    }
   }
   const Workspace& ws = current();
   for (const auto& c : ws.contacts) {

@@ -9,6 +9,9 @@
 //   energy rising without a source (core/energy.hpp).
 // A step returns a status; it never throws and never lets a NaN through: on divergence the
 // state stays at the last good step and the status names the step, time, body and quantity.
+// With profiling on (setProfiling), StepStats::profile holds the time per stage of the step
+// (core/stage_profile.hpp); off, the default, no clock is read. A warm step does not
+// allocate (tests/core/allocation_test.cpp): messages are built only on failure.
 // Not here: output (io/), the stop time (the caller's loop), the a-priori step limit
 // (core/stability.hpp).
 #pragma once
@@ -21,6 +24,7 @@
 #include "core/dynamics.hpp"
 #include "core/energy.hpp"
 #include "core/integrator.hpp"
+#include "core/stage_profile.hpp"
 
 namespace tribo {
 
@@ -49,6 +53,9 @@ struct StepStats {
   // cap (core/joint_forces.hpp), and the time of the first.
   long joint_friction_unconverged = 0;
   double first_unconverged_time = std::numeric_limits<double>::quiet_NaN();  // [s]
+  // Time per stage since Simulator::setProfiling(true); all zero while profiling is off.
+  // With profiling on from the start, profile.evaluations == evaluations.
+  StageProfile profile;
 };
 
 class Simulator {
@@ -62,10 +69,14 @@ class Simulator {
 
   // Advances by the model's time step.
   StepStatus step();
+  // Time per stage into StepStats::profile (core/stage_profile.hpp). Switching it on
+  // starts the profile from zero; off (the default) costs nothing.
+  void setProfiling(bool on);
   // Forces, contacts and accelerations at the current state (evaluated at most once).
   const Workspace& current();
 
  private:
+  StepStatus advance();  // step() without the profile
   StepStatus check();
   EnergyGuard makeEnergyGuard() const;
   // A failed status at the current state's time (or at `time` for the integrator's).
@@ -80,6 +91,7 @@ class Simulator {
   EnergyGuard energy_;
   long own_evaluations_ = 0;
   StepStats stats_;
+  bool profiling_ = false;
 };
 
 }  // namespace tribo

@@ -1,7 +1,8 @@
 // Everything derived within one force evaluation, preallocated so a warm step does not
-// allocate: geometry poses, contact points and records, force buffers split by source, the
-// resulting accelerations, and the constraint quantities. Written by Dynamics::evaluate;
-// read by the integrators, outputs and tests. Not restart state (core/state.hpp).
+// allocate (tests/core/allocation_test.cpp): geometry poses, contact points and records,
+// force buffers split by source, the resulting accelerations, and the constraint
+// quantities. Each field names the stage of Dynamics::evaluate (core/dynamics.hpp) that
+// writes it; read by the integrators, outputs and tests. Not restart state (core/state.hpp).
 #pragma once
 
 #include <vector>
@@ -21,27 +22,33 @@ struct Wrench {
 };
 
 struct Workspace {
-  // Kinematics stage, per body: rotation (body to world) and, for dynamic bodies, the
-  // inverse world inertia R I^-1 R^T (zero for kinematic bodies).
+  // updatePoses, per body: rotation (body to world) and, for dynamic bodies, the inverse
+  // world inertia R I^-1 R^T (zero for kinematic bodies); per geometry, its world pose.
   std::vector<Mat3> rotation;
   std::vector<Mat3> inv_inertia_world;
   std::vector<Eigen::Isometry3d> geometry_poses;  // world
+  // detect: the contact points, grouped by pair (and `contacts` sized to match).
   std::vector<contact::ContactPoint> contact_points;
-  std::vector<contact::ContactRecord> contacts;  // one per contact point
-  // Per body, by source (gravity is m g, not stored).
+  // One per contact point: contactKinematics (point, depth rate, slip), normalForces
+  // (normal_force), friction (friction_force, mu).
+  std::vector<contact::ContactRecord> contacts;
+  // assemble, per body, by source (gravity is m g, not stored). joint_wrench: joint limits,
+  // springs, dampers, efforts, constant-load friction; solveConstraints adds the friction
+  // under reaction load.
   std::vector<Wrench> contact_wrench;
   std::vector<Wrench> spring_wrench;
-  std::vector<Wrench> joint_wrench;       // joint limits, springs, dampers, friction
-  std::vector<Wrench> constraint_wrench;  // J^T lambda
-  // Per body, world: the result of the evaluation (zero for kinematic bodies).
+  std::vector<Wrench> joint_wrench;
+  std::vector<Wrench> constraint_wrench;  // solveConstraints: J^T lambda
+  // Per body, world: unconstrainedAccelerations, then solveConstraints adds the constraint
+  // forces' part; the result of the evaluation (zero for kinematic bodies).
   std::vector<Vec3> linear_acceleration;
   std::vector<Vec3> angular_acceleration;
-  // Constraint measures at the evaluated state.
+  // Constraint measures at the evaluated state (solveConstraints).
   double max_constraint_error = 0.0;       // max |Phi| [m or -]
   double max_constraint_rate_error = 0.0;  // max |J v|
-  double max_penetration = 0.0;            // [m]
-  // Joint friction under reaction load (core/joint_forces.hpp): false when its fixed-point
-  // iteration stopped at the cap before the friction torques settled.
+  double max_penetration = 0.0;            // contactKinematics: deepest contact [m]
+  // solveConstraints: joint friction under reaction load (core/joint_forces.hpp): false when
+  // its fixed-point iteration stopped at the cap before the friction torques settled.
   bool joint_friction_converged = true;
 };
 

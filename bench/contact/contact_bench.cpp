@@ -4,6 +4,9 @@
 // (points per evaluation times evaluations), steps per second, the share of wall time spent
 // inside FCL (broadphase and FCL narrowphase, measured on a separate Dynamics), and for the
 // grids the resting penetration and horizontal drift after the run.
+// Stage profile (core/stage_profile.hpp): the belt and the 20 x 20 grid with profiling on,
+// each stage's share of the step's wall time and the step in microseconds; the same run
+// with profiling off is its baseline (what the clock reads cost).
 // Baselines in the same process: FCL's own collide() on a box/half-space and a box/box pair
 // (points per second of FCL alone), and the closed-form box/half-space manifold.
 // Names: BM_Contact/<scene>, BM_Baseline_<What>.
@@ -16,6 +19,7 @@
 #include "contact/collision_detector.hpp"
 #include "core/dynamics.hpp"
 #include "core/simulator.hpp"
+#include "core/stage_profile.hpp"
 #include "io/scene_loader.hpp"
 
 namespace {
@@ -44,9 +48,9 @@ void BM_Contact(benchmark::State& st, const std::string& file, double seconds) {
       drift = std::max(
           drift, (sim.state().bodies[b].position - start.bodies[b].position).head<2>().norm());
   }
-  // FCL's share: the same run's evaluations on a Dynamics with FCL timing switched on.
+  // FCL's share: the same run's evaluations on a Dynamics with profiling switched on.
   tribo::Dynamics dynamics(scene.model);
-  dynamics.setCollisionTiming(true);
+  dynamics.setProfiling(true);
   tribo::State s = dynamics.initialState();
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < 200; ++i) dynamics.evaluate(s);
@@ -56,9 +60,48 @@ void BM_Contact(benchmark::State& st, const std::string& file, double seconds) {
       benchmark::Counter(static_cast<double>(steps) * static_cast<double>(st.iterations()),
                          benchmark::Counter::kIsRate);
   st.counters["points_per_step"] = points / evaluations;
-  st.counters["fcl_share"] = dynamics.collisionFclSeconds() / total;
+  st.counters["fcl_share"] = dynamics.profile().fcl / total;
   st.counters["penetration_um"] = penetration * 1e6;
   st.counters["drift_um"] = drift * 1e6;
+}
+
+// A scene's run with profiling on (or off: the baseline): per stage, its share of the step's
+// wall time; the step [us]; the stages' sum as a share (the rest is the integrator's own
+// work, the checks and the energy guard).
+void BM_StageProfile(benchmark::State& st, const std::string& file, double seconds,
+                     bool profiling) {
+  const auto scene = tribo::io::loadScene(kScenes + file);
+  const long steps = std::lround(seconds / scene.model->options.time_step);
+  tribo::StageProfile sum;
+  for (auto _ : st) {
+    tribo::Simulator sim(scene.model);
+    sim.setProfiling(profiling);
+    for (long i = 0; i < steps; ++i) {
+      if (!sim.step().ok) {
+        st.SkipWithError("diverged");
+        return;
+      }
+    }
+    const tribo::StageProfile& p = sim.stats().profile;
+    for (std::size_t k = 0; k < tribo::kStageCount; ++k) sum.seconds[k] += p.seconds[k];
+    sum.step += p.step;
+    sum.fcl += p.fcl;
+    sum.evaluations += p.evaluations;
+  }
+  st.counters["steps_per_s"] =
+      benchmark::Counter(static_cast<double>(steps) * static_cast<double>(st.iterations()),
+                         benchmark::Counter::kIsRate);
+  if (!profiling) return;
+  for (std::size_t k = 0; k < tribo::kStageCount; ++k)
+    st.counters[std::string(tribo::stageName(static_cast<tribo::Stage>(k)))] =
+        sum.seconds[k] / sum.step;
+  st.counters["fcl"] = sum.fcl / sum.step;
+  st.counters["stages"] = sum.total() / sum.step;
+  st.counters["step_us"] =
+      1e6 * sum.step / (static_cast<double>(steps) * static_cast<double>(st.iterations()));
+  st.counters["evals_per_step"] =
+      static_cast<double>(sum.evaluations) /
+      (static_cast<double>(steps) * static_cast<double>(st.iterations()));
 }
 
 // One pair's FCL (or closed-form) detection over and over: points per second.
@@ -110,6 +153,18 @@ BENCHMARK_CAPTURE(BM_Contact, box_grid20, std::string("box_grid20.yaml"), 1.0)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Contact, sphere_pile, std::string("sphere_pile.yaml"), 1.0)
     ->Name("BM_Contact/sphere_pile")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StageProfile, belt, std::string("belt.yaml"), 10.0, true)
+    ->Name("BM_StageProfile/belt")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StageProfile, belt_off, std::string("belt.yaml"), 10.0, false)
+    ->Name("BM_StageProfile/belt/off")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StageProfile, box_grid20, std::string("box_grid20.yaml"), 0.2, true)
+    ->Name("BM_StageProfile/box_grid20")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StageProfile, box_grid20_off, std::string("box_grid20.yaml"), 0.2, false)
+    ->Name("BM_StageProfile/box_grid20/off")
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
