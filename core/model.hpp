@@ -94,6 +94,8 @@ struct Model {
   // True when the builder made contact_pairs from every pair of geometries that may touch
   // (the scene listed none): filtered by joints and groups/masks, culled by the broadphase.
   bool automatic_contacts = false;
+  // Scalar joint constraint equations kept after redundancy removal (set by the builder).
+  int constraint_equations = 0;
   SimulationOptions options;
 
   std::optional<BodyIndex> findBody(const std::string& name) const;

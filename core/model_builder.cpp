@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/constraint_rows.hpp"
 #include "core/number_text.hpp"
 
 namespace tribo {
@@ -248,6 +249,7 @@ std::shared_ptr<const Model> ModelBuilder::build() const {
   auto model = std::make_shared<Model>(model_);
   model->options = options_;
   finishJoints(*model);
+  model->constraint_equations = static_cast<int>(constraintRows(*model).size());
   if (model->contact_pairs.empty() && (default_material_ >= 0 || !surface_materials_.empty())) {
     addAutomaticContacts(*model);
     model->automatic_contacts = true;

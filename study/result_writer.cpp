@@ -91,7 +91,7 @@ void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
   }
   {
     const ConstraintOptions& c = o.constraints;
-    const int equations = static_cast<int>(constraintRows(model).size());
+    const int equations = model.constraint_equations;
     j["settings"]["constraints"] = {
         {"equations", equations},
         {"factorization", useSparseFactorization(c, equations) ? "sparse" : "dense"},

@@ -9,7 +9,7 @@
 #include <chrono>
 
 #include "core/simulator.hpp"
-#include "test_models.hpp"
+#include "support/test_models.hpp"
 
 namespace tribo {
 namespace {
