@@ -1,10 +1,21 @@
-// The `tribo` command: parse arguments, load the scene (io), run it (core via io), write
+// The `tribo` command: parse arguments, load the scene (io), run it (study), write
 // results, print a short summary. Exit status: 0 success, 1 usage error, 2 bad scene or
-// parameters, 3 the run diverged (partial results written and marked so), 4 output error.
+// parameters (also an output that would not fit the disk), 3 the run diverged (partial
+// results written and marked so), 4 output error, 5 interrupted by SIGINT or SIGTERM
+// (results up to there written, marked so), 6 the output folder is in use by another run.
+// A run streams trajectory.csv as it goes; a first SIGINT/SIGTERM stops it at the next
+// output row, a second one ends the process at once (the files stay under their .partial
+// names).
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -13,13 +24,17 @@
 #include "apps/tradeoff_command.hpp"
 #include "io/scene_loader.hpp"
 #include "io/urdf_scene.hpp"
+#include "study/dir_lock.hpp"
+#include "study/output_budget.hpp"
 #include "study/result_writer.hpp"
+#include "study/run_progress.hpp"
 #include "study/scene_run.hpp"
 
 namespace {
 
 constexpr const char* kUsage =
     "usage: tribo run SCENE.yaml --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
+    "                [--quiet | --progress]\n"
     "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "       tribo info FILE.urdf [--package-path DIR ...]\n"
     "       tribo sweep SCENE.yaml --out DIR --grid NAME=START:STOP:COUNT | --list NAME=V1,... "
@@ -30,7 +45,28 @@ constexpr const char* kUsage =
     "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
     "  --out   output folder (created if missing)\n"
     "  --set   override a value of the scene's parameters: section (repeatable)\n"
+    "  --progress  show the progress line of a long run even when stderr is not a terminal\n"
+    "  --quiet     never show it\n"
     "  info    print a URDF robot's tree, masses, joint types and model checks\n";
+
+// Set by the first SIGINT or SIGTERM; the run stops at its next output row.
+std::atomic<bool> g_stop{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void onStopSignal(int) {
+  g_stop.store(true);
+  // A second signal ends the process at once.
+  ::signal(SIGINT, SIG_DFL);
+  ::signal(SIGTERM, SIG_DFL);
+}
+
+void catchStopSignals() {
+  struct sigaction sa {};
+  sa.sa_handler = onStopSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
 
 int usage(const std::string& problem) {
   std::fprintf(stderr, "tribo: %s\n\n%s", problem.c_str(), kUsage);
@@ -44,8 +80,9 @@ void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& 
   std::printf("scene            %s\n", scene.path.c_str());
   std::printf("integrator       %s, step %g s, %ld steps\n",
               tribo::integratorName(o.integrator).c_str(), o.time_step, r.stats.steps);
-  std::printf("status           %s\n",
-              r.complete ? "complete" : ("DIVERGED: " + r.message).c_str());
+  std::printf("status           %s\n", r.complete      ? "complete"
+                                       : r.interrupted ? r.message.c_str()
+                                                       : ("DIVERGED: " + r.message).c_str());
   static const char* kAxis[] = {"x", "y", "z"};
   if (scene.output.summary.body.empty()) {
     std::printf("observed         nothing (the scene's output.summary names no body)\n");
@@ -85,9 +122,14 @@ int run(const std::vector<std::string>& args) {
   std::string out_dir;
   std::vector<std::string> overrides;
   std::vector<std::string> package_paths;
+  bool quiet = false, progress = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--out" || a == "--set" || a == "--package-path") {
+    if (a == "--quiet") {
+      quiet = true;
+    } else if (a == "--progress") {
+      progress = true;
+    } else if (a == "--out" || a == "--set" || a == "--package-path") {
       if (i + 1 >= args.size()) return usage(a + " needs a value");
       if (a == "--out")
         out_dir = args[++i];
@@ -105,6 +147,7 @@ int run(const std::vector<std::string>& args) {
   }
   if (scene_path.empty()) return usage("no scene file given");
   if (out_dir.empty()) return usage("no output folder given (--out DIR)");
+  if (quiet && progress) return usage("--quiet and --progress contradict each other");
 
   tribo::io::Scene scene;
   try {
@@ -115,16 +158,63 @@ int run(const std::vector<std::string>& args) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;
   }
-  const tribo::study::RunResult result = tribo::study::runScene(scene);
+  namespace study = tribo::study;
+  const std::filesystem::path out(out_dir);
+  try {
+    study::checkOutputFitsDisk(scene, out);
+  } catch (const study::OutputTooLarge& e) {
+    std::fprintf(stderr, "tribo: %s: %s\n", scene.path.c_str(), e.what());
+    return 2;
+  }
+  std::optional<study::DirLock> lock;
+  std::optional<study::TrajectoryCsvFile> csv;
+  try {
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec)
+      throw std::runtime_error("cannot create output folder '" + out_dir + "': " + ec.message());
+    lock.emplace(out);
+    csv.emplace(out / "trajectory.csv",
+                study::TrajectoryRecorder(*scene.model, 0, false).columns());
+  } catch (const study::DirLockedError& e) {
+    std::fprintf(stderr, "tribo: %s\n", e.what());
+    return 6;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo: %s\n", e.what());
+    return 4;
+  }
+  const bool show_progress = !quiet && (progress || ::isatty(STDERR_FILENO));
+  study::RunProgress progress_line(show_progress ? stderr : nullptr, scene.model->options.duration);
+  study::RunOptions options;
+  options.sink = &*csv;
+  options.spill_dir = out;
+  options.stop = &g_stop;
+  options.progress = [&](double simulated) { progress_line.update(simulated); };
+  catchStopSignals();
+  std::optional<study::RunResult> run_result;
+  try {
+    run_result.emplace(study::runScene(scene, options));
+  } catch (const std::exception& e) {
+    progress_line.finish();
+    std::fprintf(stderr, "tribo: %s\n", e.what());
+    return 4;
+  }
+  progress_line.finish();
+  const study::RunResult& result = *run_result;
   for (const auto& n : scene.notes) std::fprintf(stderr, "tribo: note: %s\n", n.c_str());
   for (const auto& w : result.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
   try {
-    tribo::study::writeResults(out_dir, scene, result);
+    csv->commit();
+    study::writeSummaryJson(out / "summary.json", scene, result);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 4;
   }
   printSummary(scene, result, out_dir);
+  if (result.interrupted) {
+    std::fprintf(stderr, "tribo: %s; results up to there written\n", result.message.c_str());
+    return 5;
+  }
   if (!result.complete) {
     std::fprintf(stderr, "tribo: run stopped early: %s\n", result.message.c_str());
     return 3;

@@ -233,6 +233,15 @@ std::shared_ptr<const Model> ModelBuilder::build() const {
     throw ModelError("options: time step must be > 0 (got " + numberText(o.time_step) + ")");
   if (!std::isfinite(o.duration) || o.duration <= 0.0)
     throw ModelError("options: duration must be > 0 (got " + numberText(o.duration) + ")");
+  // One step longer than the whole run would simulate nothing (or overshoot the duration).
+  if (o.time_step > o.duration)
+    throw ModelError("options: time_step (" + numberText(o.time_step) +
+                     " s) is larger than the duration (" + numberText(o.duration) + " s)");
+  if (o.duration / o.time_step > kMaxSteps)
+    throw ModelError("options: duration / time_step = " + numberText(o.duration / o.time_step) +
+                     " steps, more than the " + numberText(kMaxSteps) +
+                     " a run may take (duration " + numberText(o.duration) + " s, time_step " +
+                     numberText(o.time_step) + " s)");
   if (!finite(o.gravity)) throw ModelError("options: gravity must be finite");
   if (!(o.baumgarte_alpha >= 0.0) || !(o.baumgarte_beta >= 0.0))
     throw ModelError("options: Baumgarte alpha and beta must be >= 0");

@@ -12,6 +12,11 @@
 
 namespace tribo {
 
+// The most steps (duration / time_step) a model may ask for: 1e15 is still an exact integer
+// in a double and years of wall time for the cheapest scene; beyond it the numbers are a
+// typo, not a run.
+inline constexpr double kMaxSteps = 1e15;
+
 class ModelError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -77,6 +82,8 @@ class ModelBuilder {
   std::optional<int> findGeometry(const std::string& name) const;
   const std::vector<Body>& bodies() const { return model_.bodies; }
 
+  // Options: time_step and duration finite and > 0, time_step <= duration, and at most
+  // kMaxSteps steps.
   std::shared_ptr<const Model> build() const;
 
  private:

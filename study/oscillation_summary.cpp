@@ -10,7 +10,15 @@
 namespace tribo::study {
 namespace {
 
-using Samples = std::span<const double>;
+// Every helper reads its samples through S: std::span<const double> (in memory) or
+// SeriesRef (a SampleSeries, e.g. a spilled column), with the same arithmetic in the same
+// order, so both give the same bits.
+struct SeriesRef {
+  const SampleSeries* series;  // null: empty
+  std::size_t size() const { return series ? series->size() : 0; }
+  bool empty() const { return size() == 0; }
+  double operator[](std::size_t i) const { return series->at(i); }
+};
 
 // An extremum of x: sample index, kind, and the refined time and value.
 struct Extremum {
@@ -24,7 +32,8 @@ struct Extremum {
   throw std::invalid_argument("summarizeOscillation: " + what);
 }
 
-void validate(Samples t, Samples x, Samples slip, const OscillationOptions& o) {
+template <class S>
+void validate(const S& t, const S& x, const S& slip, const OscillationOptions& o) {
   if (x.size() != t.size()) {
     fail("t and x differ in size (" + std::to_string(t.size()) + " vs " + std::to_string(x.size()) +
          ")");
@@ -54,7 +63,8 @@ void validate(Samples t, Samples x, Samples slip, const OscillationOptions& o) {
 // Alternating maxima and minima found with hysteresis `delta`: an extremum is accepted once
 // x has moved away from it by more than delta. An extremum at the first sample is dropped
 // (the record may begin mid-slope); the last one is never confirmed.
-std::vector<Extremum> findExtrema(Samples x, double delta) {
+template <class S>
+std::vector<Extremum> findExtrema(const S& x, double delta) {
   enum class Seek { kEither, kMax, kMin };
   Seek seek = Seek::kEither;
   std::size_t hi = 0;
@@ -85,7 +95,8 @@ struct Poly2 {
 };
 
 // Polynomial through samples first .. first+count-1 (count 2: line, count 3: parabola).
-Poly2 through(Samples t, Samples x, std::size_t first, std::size_t count, double t_ref) {
+template <class S>
+Poly2 through(const S& t, const S& x, std::size_t first, std::size_t count, double t_ref) {
   const double u0 = t[first] - t_ref, u1 = t[first + 1] - t_ref;
   const double f01 = (x[first + 1] - x[first]) / (u1 - u0);
   double f012 = 0;
@@ -98,7 +109,8 @@ Poly2 through(Samples t, Samples x, std::size_t first, std::size_t count, double
 }
 
 // Second divided difference at sample j (an estimate of x'' there).
-double curvature(Samples t, Samples x, std::size_t j) {
+template <class S>
+double curvature(const S& t, const S& x, std::size_t j) {
   const double s_left = (x[j] - x[j - 1]) / (t[j] - t[j - 1]);
   const double s_right = (x[j + 1] - x[j]) / (t[j + 1] - t[j]);
   return 2 * (s_right - s_left) / (t[j + 1] - t[j - 1]);
@@ -106,7 +118,8 @@ double curvature(Samples t, Samples x, std::size_t j) {
 
 // Smooth extremum at k: the curvature at both neighbours is within a factor 2 of that at k.
 // A kink puts all the curvature on one or two samples. Undecidable near the ends: smooth.
-bool looksSmooth(Samples t, Samples x, std::size_t k) {
+template <class S>
+bool looksSmooth(const S& t, const S& x, std::size_t k) {
   if (k < 2 || k + 2 >= x.size()) return true;
   const double c = curvature(t, x, k);
   if (c == 0) return false;
@@ -118,7 +131,8 @@ bool looksSmooth(Samples t, Samples x, std::size_t k) {
 }
 
 // Vertex of the parabola through samples k-1, k, k+1, kept within [t[k-1], t[k+1]].
-Extremum refineSmooth(Samples t, Samples x, std::size_t k, bool is_max) {
+template <class S>
+Extremum refineSmooth(const S& t, const S& x, std::size_t k, bool is_max) {
   const Poly2 p = through(t, x, k - 1, 3, t[k]);
   if (p.c2 == 0 || (p.c2 < 0) != is_max) return {k, is_max, t[k], x[k]};
   const double u = std::clamp(-p.c1 / (2 * p.c2), t[k - 1] - t[k], t[k + 1] - t[k]);
@@ -128,7 +142,8 @@ Extremum refineSmooth(Samples t, Samples x, std::size_t k, bool is_max) {
 // Corner between the branch ending at sample k-1 and the branch starting at k+1: the crossing
 // in [t[k-1], t[k+1]] of polynomials of degree `count`-1 extrapolated from each side. Empty
 // if the crossing is missing or implausible (not beyond x[k], or beyond what the slopes allow).
-std::optional<Extremum> refineKink(Samples t, Samples x, std::size_t k, bool is_max,
+template <class S>
+std::optional<Extremum> refineKink(const S& t, const S& x, std::size_t k, bool is_max,
                                    std::size_t count) {
   if (k < count || k + count >= x.size()) return std::nullopt;
   const Poly2 left = through(t, x, k - count, count, t[k]);
@@ -165,7 +180,8 @@ std::optional<Extremum> refineKink(Samples t, Samples x, std::size_t k, bool is_
   return best;
 }
 
-Extremum refine(Samples t, Samples x, std::size_t k, bool is_max) {
+template <class S>
+Extremum refine(const S& t, const S& x, std::size_t k, bool is_max) {
   if (looksSmooth(t, x, k)) return refineSmooth(t, x, k, is_max);
   for (const std::size_t count : {3u, 2u}) {
     if (auto e = refineKink(t, x, k, is_max, count)) return *e;
@@ -173,28 +189,87 @@ Extremum refine(Samples t, Samples x, std::size_t k, bool is_max) {
   return {k, is_max, t[k], x[k]};
 }
 
+// First index i with t[i] > a (std::upper_bound by index).
+template <class S>
+std::size_t upperBound(const S& t, double a) {
+  std::size_t lo = 0, n = t.size();
+  while (n > 0) {
+    const std::size_t half = n / 2;
+    if (!(a < t[lo + half])) {
+      lo += half + 1;
+      n -= half + 1;
+    } else {
+      n = half;
+    }
+  }
+  return lo;
+}
+
+// First index i with t[i] >= a (std::lower_bound by index).
+template <class S>
+std::size_t lowerBound(const S& t, double a) {
+  std::size_t lo = 0, n = t.size();
+  while (n > 0) {
+    const std::size_t half = n / 2;
+    if (t[lo + half] < a) {
+      lo += half + 1;
+      n -= half + 1;
+    } else {
+      n = half;
+    }
+  }
+  return lo;
+}
+
 // Integral of the piecewise linear x(t) from t[0]: cumulative trapezoids plus interpolation.
+// The running sum is kept at every kStride-th sample and resumed from there, term by term in
+// the same order, so memory stays small for a long record and the sums are exact repeats.
+template <class S>
 class Integral {
  public:
-  Integral(Samples t, Samples x) : t_(t), x_(x), cumulative_(t.size(), 0.0) {
-    for (std::size_t i = 1; i < t.size(); ++i)
-      cumulative_[i] = cumulative_[i - 1] + 0.5 * (t[i] - t[i - 1]) * (x[i] + x[i - 1]);
+  static constexpr std::size_t kStride = 1024;
+  Integral(const S& t, const S& x) : t_(t), x_(x) {
+    double c = 0.0;
+    checkpoints_.push_back(c);
+    for (std::size_t i = 1; i < t.size(); ++i) {
+      c = c + term(i);
+      if (i % kStride == 0) checkpoints_.push_back(c);
+    }
   }
   double upTo(double a) const {
-    const auto it = std::upper_bound(t_.begin(), t_.end(), a);
-    const std::size_t j =
-        std::min<std::size_t>(it == t_.begin() ? 0 : (it - t_.begin()) - 1, t_.size() - 2);
+    const std::size_t above = upperBound(t_, a);
+    const std::size_t j = std::min<std::size_t>(above == 0 ? 0 : above - 1, t_.size() - 2);
     const double xa = x_[j] + (x_[j + 1] - x_[j]) * (a - t_[j]) / (t_[j + 1] - t_[j]);
-    return cumulative_[j] + 0.5 * (a - t_[j]) * (x_[j] + xa);
+    return cumulative(j) + 0.5 * (a - t_[j]) * (x_[j] + xa);
   }
   double mean(double a, double b) const { return (upTo(b) - upTo(a)) / (b - a); }
 
  private:
-  Samples t_, x_;
-  std::vector<double> cumulative_;
+  double term(std::size_t i) const { return 0.5 * (t_[i] - t_[i - 1]) * (x_[i] + x_[i - 1]); }
+  double cumulative(std::size_t j) const {
+    double c = checkpoints_[j / kStride];
+    for (std::size_t i = j / kStride * kStride + 1; i <= j; ++i) c = c + term(i);
+    return c;
+  }
+
+  const S& t_;
+  const S& x_;
+  std::vector<double> checkpoints_;
 };
 
-double stuckFraction(Samples t, Samples slip, double stick_speed) {
+// Smallest and largest of x[first..].
+template <class S>
+std::pair<double, double> minMax(const S& x, std::size_t first) {
+  double lo = x[first], hi = x[first];
+  for (std::size_t i = first + 1; i < x.size(); ++i) {
+    lo = std::min(lo, x[i]);
+    hi = std::max(hi, x[i]);
+  }
+  return {lo, hi};
+}
+
+template <class S>
+double stuckFraction(const S& t, const S& slip, double stick_speed) {
   if (slip.empty()) return 0;
   const std::size_t n = t.size();
   double stuck = 0;
@@ -205,22 +280,20 @@ double stuckFraction(Samples t, Samples slip, double stick_speed) {
   return stuck / (t[n - 1] - t[0]);
 }
 
-}  // namespace
-
-OscillationSummary summarizeOscillation(std::span<const double> t, std::span<const double> x,
-                                        std::span<const double> slip_speed,
-                                        const OscillationOptions& options) {
+template <class S>
+OscillationSummary summarize(const S& t, const S& x, const S& slip_speed,
+                             const OscillationOptions& options) {
   validate(t, x, slip_speed, options);
   OscillationSummary s;
   s.stuck_fraction = stuckFraction(t, slip_speed, options.stick_speed);
 
-  const auto [lo_it, hi_it] = std::minmax_element(x.begin(), x.end());
+  const auto [x_lo, x_hi] = minMax(x, 0);
   const double delta =
-      std::max(options.min_relative_prominence * (*hi_it - *lo_it), options.min_prominence);
+      std::max(options.min_relative_prominence * (x_hi - x_lo), options.min_prominence);
   std::vector<Extremum> extrema = findExtrema(x, delta);
   for (Extremum& e : extrema) e = refine(t, x, e.index, e.is_max);
 
-  const Integral integral(t, x);
+  const Integral<S> integral(t, x);
   for (std::size_t i = 0; i + 2 < extrema.size(); ++i) {
     const Extremum &a = extrema[i], &m = extrema[i + 1], &b = extrema[i + 2];
     if (!a.is_max) continue;  // extrema alternate, so m is a minimum and b a maximum
@@ -231,11 +304,11 @@ OscillationSummary summarizeOscillation(std::span<const double> t, std::span<con
   const std::size_t used = std::min<std::size_t>(options.last_cycles, n_cycles);
   s.cycles_used = static_cast<int>(used);
   if (used == 0) {
-    const double t_half = 0.5 * (t.front() + t.back());
-    const auto first = std::lower_bound(t.begin(), t.end(), t_half) - t.begin();
-    const auto [lo, hi] = std::minmax_element(x.begin() + first, x.end());
-    s.amplitude_pp = *hi - *lo;
-    s.x_mean = integral.mean(t_half, t.back());
+    const double t_back = t[t.size() - 1];
+    const double t_half = 0.5 * (t[0] + t_back);
+    const auto [lo, hi] = minMax(x, lowerBound(t, t_half));
+    s.amplitude_pp = hi - lo;
+    s.x_mean = integral.mean(t_half, t_back);
     return s;  // oscillating = false, period = time_to_98 = 0
   }
   const Cycle& first_used = s.cycles[n_cycles - used];
@@ -253,6 +326,20 @@ OscillationSummary summarizeOscillation(std::span<const double> t, std::span<con
   }
   s.oscillating = s.amplitude_pp > 0;
   return s;
+}
+
+}  // namespace
+
+OscillationSummary summarizeOscillation(std::span<const double> t, std::span<const double> x,
+                                        std::span<const double> slip_speed,
+                                        const OscillationOptions& options) {
+  return summarize(t, x, slip_speed, options);
+}
+
+OscillationSummary summarizeOscillation(const SampleSeries& t, const SampleSeries& x,
+                                        const SampleSeries* slip_speed,
+                                        const OscillationOptions& options) {
+  return summarize(SeriesRef{&t}, SeriesRef{&x}, SeriesRef{slip_speed}, options);
 }
 
 double envelopeGrowthRate(const std::vector<Cycle>& cycles, double t0, double t1) {

@@ -15,12 +15,17 @@
 // is smooth, or, at a kink (the corner where stick turns into slip), by intersecting
 // polynomials extrapolated from each side.
 //
+// A record too long for memory is read through SampleSeries (e.g. a column spilled to a
+// file, study/series_spill.hpp): the analysis then holds only the extrema, the cycles and
+// one running integral per 1024 samples, and gives the same bits as from memory.
+//
 // What it is not: a spectral analysis (no FFT, one dominant oscillation is assumed), a noise
 // filter (noise larger than the threshold makes cycles), or a detector of when a transient
 // has settled (the figures average the last cycles of the record; the caller chooses the
 // record). Pure functions of their inputs; no other Tribo dependency.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -68,6 +73,20 @@ struct OscillationSummary {
 // std::invalid_argument naming the problem otherwise (also for out-of-range options).
 OscillationSummary summarizeOscillation(std::span<const double> t, std::span<const double> x,
                                         std::span<const double> slip_speed,
+                                        const OscillationOptions& options = {});
+
+// Samples read by index from wherever they are kept. The analysis reads them mostly in
+// order (a few passes, binary searches, and neighbours of each extremum).
+class SampleSeries {
+ public:
+  virtual ~SampleSeries() = default;
+  virtual std::size_t size() const = 0;
+  virtual double at(std::size_t i) const = 0;
+};
+
+// The same analysis of samples read through SampleSeries; `slip_speed` may be null.
+OscillationSummary summarizeOscillation(const SampleSeries& t, const SampleSeries& x,
+                                        const SampleSeries* slip_speed,
                                         const OscillationOptions& options = {});
 
 // Exponential growth rate sigma [1/s] of the envelope: least-squares slope of

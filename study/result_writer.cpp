@@ -20,26 +20,51 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 
 }  // namespace
 
-void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory) {
+TrajectoryCsvFile::TrajectoryCsvFile(const std::filesystem::path& file,
+                                     const std::vector<std::string>& columns)
+    : file_(file) {
   const auto tmp = partialPath(file);
-  std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
-  const auto& names = trajectory.columns();
-  for (std::size_t c = 0; c < names.size(); ++c)
-    std::fprintf(f, "%s%s", c ? "," : "", names[c].c_str());
-  std::fputc('\n', f);
+  f_ = std::fopen(tmp.c_str(), "w");
+  if (!f_) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
+  std::setvbuf(f_, nullptr, _IOFBF, std::size_t{1} << 16);
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    std::fprintf(f_, "%s%s", c ? "," : "", columns[c].c_str());
+  std::fputc('\n', f_);
+}
+
+TrajectoryCsvFile::~TrajectoryCsvFile() {
+  if (f_) std::fclose(f_);
+}
+
+void TrajectoryCsvFile::row(std::span<const double> values) {
   char buf[64];
-  for (std::size_t r = 0; r < trajectory.rows(); ++r) {
-    for (std::size_t c = 0; c < names.size(); ++c) {
-      if (c) std::fputc(',', f);
-      const char* end = csvNumberTo(buf, buf + sizeof buf, trajectory.column(c)[r]);
-      std::fwrite(buf, 1, static_cast<std::size_t>(end - buf), f);
-    }
-    std::fputc('\n', f);
+  for (std::size_t c = 0; c < values.size(); ++c) {
+    if (c) std::fputc(',', f_);
+    const char* end = csvNumberTo(buf, buf + sizeof buf, values[c]);
+    std::fwrite(buf, 1, static_cast<std::size_t>(end - buf), f_);
   }
-  const bool ok = std::ferror(f) == 0;
-  if (std::fclose(f) != 0 || !ok) throw std::runtime_error("error writing '" + tmp.string() + "'");
-  commitFile(file);
+  std::fputc('\n', f_);
+}
+
+void TrajectoryCsvFile::commit() {
+  const auto tmp = partialPath(file_);
+  const bool ok = std::ferror(f_) == 0;
+  const bool closed = std::fclose(f_) == 0;
+  f_ = nullptr;
+  if (!closed || !ok) throw std::runtime_error("error writing '" + tmp.string() + "'");
+  commitFile(file_);
+}
+
+void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory) {
+  if (!trajectory.keepsRows())
+    throw std::logic_error("writeTrajectoryCsv: the recorder kept no rows (they were streamed)");
+  TrajectoryCsvFile csv(file, trajectory.columns());
+  std::vector<double> row(trajectory.columns().size());
+  for (std::size_t r = 0; r < trajectory.rows(); ++r) {
+    for (std::size_t c = 0; c < row.size(); ++c) row[c] = trajectory.column(c)[r];
+    csv.row(row);
+  }
+  csv.commit();
 }
 
 void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
@@ -47,8 +72,8 @@ void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
   const Model& model = *scene.model;
   const SimulationOptions& o = model.options;
   nlohmann::json j;
-  j["status"] = result.complete ? "complete" : "diverged";
-  if (!result.complete) {
+  j["status"] = result.complete ? "complete" : result.interrupted ? "interrupted" : "diverged";
+  if (!result.complete && !result.interrupted) {
     j["error"] = result.message;
     // Where the run stopped: the trajectory ends at the last good state before this time.
     j["stopped_at"] = {

@@ -1,23 +1,51 @@
 // Writes a run's results into an output folder:
-//   trajectory.csv  header row, then one row per recorded sample (columns as recorded)
-//   summary.json    status ("complete" or "diverged" with the message), the scene's
+//   trajectory.csv  header row, then one row per recorded sample (columns as recorded),
+//                   either from a recorder's kept rows or row by row as the run goes
+//                   (TrajectoryCsvFile, a RowSink: nothing of it stays in memory)
+//   summary.json    status ("complete", "diverged" with the message, or "interrupted"), the scene's
 //                   parameters and speed/accuracy settings, the oscillation figures, run
 //                   statistics (penetration, constraint drift) and speed
 // Each file is written under a temporary name and renamed when complete, so a reader never
 // sees a half-written file under the final name. Not here: running, analysis.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "study/scene_run.hpp"
 
 namespace tribo::study {
 
-// Throws std::runtime_error naming the path when a file cannot be written.
+// trajectory.csv written while the run goes: the header at once, each row as recorded,
+// all under partialPath(file) until commit() renames it. Destroyed without commit(), it
+// leaves the .partial file behind and the final name untouched.
+class TrajectoryCsvFile : public RowSink {
+ public:
+  // Throws std::runtime_error naming the path when it cannot be opened.
+  TrajectoryCsvFile(const std::filesystem::path& file, const std::vector<std::string>& columns);
+  ~TrajectoryCsvFile() override;
+  TrajectoryCsvFile(const TrajectoryCsvFile&) = delete;
+  TrajectoryCsvFile& operator=(const TrajectoryCsvFile&) = delete;
+
+  void row(std::span<const double> values) override;
+  // Flushes, closes and renames to the final name. Throws std::runtime_error naming the
+  // path if any write failed (e.g. the disk filled up during the run).
+  void commit();
+
+ private:
+  std::filesystem::path file_;
+  std::FILE* f_ = nullptr;
+};
+
+// Throws std::runtime_error naming the path when a file cannot be written. The recorder must
+// keep its rows.
 void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory);
 void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
                       const RunResult& result);
-// Both files into `dir` (created if missing).
+// Both files into `dir` (created if missing), from a recorder that keeps its rows.
 void writeResults(const std::filesystem::path& dir, const io::Scene& scene,
                   const RunResult& result);
 

@@ -1,12 +1,18 @@
 #include "study/scene_run.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "core/constraint_rank.hpp"
+#include "core/number_text.hpp"
+#include "study/output_budget.hpp"
+#include "study/series_spill.hpp"
 
 namespace tribo::study {
 
@@ -31,22 +37,86 @@ OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& 
   return summarizeOscillation(trajectory.column(0), x, slip, options);
 }
 
+namespace {
+
+// Columns of the observed coordinate, its slip and normal force; empty when the spec names
+// no body of the model (then there is no summary).
+std::optional<std::array<std::size_t, 3>> summaryColumns(const TrajectoryRecorder& trajectory,
+                                                         const Model& model,
+                                                         const io::SummarySpec& spec) {
+  if (spec.body.empty()) return std::nullopt;
+  const auto index = model.findBody(spec.body);
+  if (!index || index->isWorld()) return std::nullopt;
+  static const char* kAxis[] = {".x", ".y", ".z"};
+  const std::string& name = model.bodies[index->value].name;
+  return std::array{trajectory.columnIndex(name + kAxis[spec.coordinate]),
+                    trajectory.columnIndex(name + ".slip"),
+                    trajectory.columnIndex(name + ".normal_force")};
+}
+
+// The summary's three series (t, x, and the slip speed read as "not stuck" out of contact,
+// as summarize() masks it) spilled to scratch files as the rows go by.
+class SummarySpill : public RowSink {
+ public:
+  SummarySpill(std::array<std::size_t, 3> columns, const std::filesystem::path& dir)
+      : columns_(columns), t_(dir), x_(dir), slip_(dir) {}
+  void row(std::span<const double> v) override {
+    t_.append(v[0]);
+    x_.append(v[columns_[0]]);
+    slip_.append(v[columns_[2]] > 0.0 ? v[columns_[1]] : std::numeric_limits<double>::max());
+  }
+  OscillationSummary summarize(const io::SummarySpec& spec) const {
+    if (t_.size() < 3) return {};
+    OscillationOptions options;
+    options.last_cycles = spec.last_cycles;
+    options.stick_speed = spec.stick_speed;
+    return summarizeOscillation(t_, x_, &slip_, options);
+  }
+
+ private:
+  std::array<std::size_t, 3> columns_;
+  SpilledColumn t_, x_, slip_;
+};
+
+}  // namespace
+
 RunResult runScene(const io::Scene& scene, const RunMonitor& monitor) {
+  RunOptions options;
+  options.monitor = monitor;
+  return runScene(scene, options);
+}
+
+RunResult runScene(const io::Scene& scene, const RunOptions& options) {
+  const RunMonitor& monitor = options.monitor;
+  const bool keep = options.sink == nullptr;
+  if (!keep && monitor.stop)
+    throw std::invalid_argument("runScene: a run monitor needs the rows kept (no sink)");
+  if (keep) checkOutputFitsMemory(scene);
   const Model& model = *scene.model;
   const double dt = model.options.time_step;
   const long steps = std::lround(model.options.duration / dt);
   const double interval = std::max(scene.output.interval, dt);
   RunResult result{
       false,
+      false,
       "",
       {},
       0.0,
       0.0,
-      TrajectoryRecorder(model, static_cast<std::size_t>(model.options.duration / interval + 2)),
+      TrajectoryRecorder(model, static_cast<std::size_t>(model.options.duration / interval + 2),
+                         keep),
       {},
       {},
       {},
       {}};
+  std::optional<SummarySpill> spill;
+  if (!keep) {
+    result.trajectory.addSink(options.sink);
+    if (const auto columns = summaryColumns(result.trajectory, model, scene.output.summary)) {
+      spill.emplace(*columns, options.spill_dir);
+      result.trajectory.addSink(&*spill);
+    }
+  }
   result.stability = estimateStableStep(model);
   // Adaptive integrators choose their own steps (dt is the communication interval).
   if (!isAdaptive(model.options.integrator) && dt > result.stability.limit.max_step) {
@@ -64,7 +134,16 @@ RunResult runScene(const io::Scene& scene, const RunMonitor& monitor) {
   double next_output = interval;
   double next_check = monitor.interval;
   result.complete = true;
+  bool at_row = true;  // the last row recorded is the current state
+  int since_clock = 0;
+  auto last_progress = start;
   for (long i = 0; i < steps; ++i) {
+    if (options.stop && at_row && options.stop->load(std::memory_order_relaxed)) {
+      result.complete = false;
+      result.interrupted = true;
+      result.message = "interrupted at t = " + numberText(sim.state().time) + " s";
+      break;
+    }
     const StepStatus status = sim.step();
     if (!status.ok) {
       result.complete = false;
@@ -72,13 +151,23 @@ RunResult runScene(const io::Scene& scene, const RunMonitor& monitor) {
       result.stop = status;
       break;
     }
+    at_row = false;
     if (sim.state().time >= next_output - 0.5 * dt) {
       result.trajectory.record(sim.state(), sim.current());
       next_output += interval;
+      at_row = true;
     }
     if (monitor.stop && sim.state().time >= next_check - 0.5 * dt) {
       next_check += monitor.interval;
       if (monitor.stop(result.trajectory)) break;
+    }
+    if (options.progress && ++since_clock == 64) {
+      since_clock = 0;
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - last_progress).count() >= options.progress_interval) {
+        last_progress = now;
+        options.progress(sim.state().time);
+      }
     }
   }
   result.wall_seconds =
@@ -94,7 +183,10 @@ RunResult runScene(const io::Scene& scene, const RunMonitor& monitor) {
          "against the joint's lever; see docs/joints.md)";
     result.warnings.push_back(w.str());
   }
-  result.summary = summarize(result.trajectory, model, scene.output.summary);
+  result.trajectory.clearSinks();
+  result.summary = keep    ? summarize(result.trajectory, model, scene.output.summary)
+                   : spill ? spill->summarize(scene.output.summary)
+                           : OscillationSummary{};
   return result;
 }
 

@@ -1,12 +1,23 @@
 // Runs a loaded scene from t = 0 to its duration, recording at the output interval, and
 // analyses the observed coordinate (limit-cycle amplitude, period, time to 98% of the
 // amplitude, stuck fraction). Before the run, the step is checked against the a-priori
-// stability limit (core/stability.hpp); exceeding it is a warning carried in the result. The loop
-// does no I/O. A diverged run stops at the failing step and is returned with complete = false and
-// the simulator's message; what was recorded up to the last good step is kept. Not here: writing
-// files (study/result_writer.hpp), argument parsing (apps/).
+// stability limit (core/stability.hpp); exceeding it is a warning carried in the result. A
+// diverged run stops at the failing step and is returned with complete = false and the
+// simulator's message; what was recorded up to the last good step is kept.
+// Recording either keeps every row in memory (the default: sweeps, the tradeoff read the
+// columns; capped by study/output_budget.hpp) or streams them (RunOptions::sink, e.g.
+// trajectory.csv written as the run goes): then memory does not grow with the duration, and
+// the summary is computed from its three columns spilled to scratch files
+// (study/series_spill.hpp), with the same figures as from memory. The simulator's step does
+// no I/O; a streamed row is a buffered write between steps.
+// A run may be stopped from outside (RunOptions::stop, e.g. set by a signal handler): it
+// goes on to the next output row, so the trajectory ends at the state the result reports,
+// and returns with interrupted = true.
+// Not here: opening files (study/result_writer.hpp), argument parsing, signals (apps/).
 #pragma once
 
+#include <atomic>
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -20,7 +31,8 @@ namespace tribo::study {
 
 struct RunResult {
   bool complete = false;
-  std::string message;  // why the run stopped early, when !complete
+  bool interrupted = false;  // stopped by RunOptions::stop (complete is false)
+  std::string message;       // why the run stopped early, when !complete
   StepStats stats;
   double wall_seconds = 0.0;  // time spent stepping (analysis excluded)
   double simulated_seconds = 0.0;
@@ -39,6 +51,24 @@ struct RunMonitor {
   std::function<bool(const TrajectoryRecorder&)> stop;
 };
 
+// How a run records and who may stop it. The defaults keep every row and run to the end.
+struct RunOptions {
+  RunMonitor monitor;  // needs the rows kept (no sink)
+  // Streaming: every row goes to `sink` and none is kept; the summary's scratch files go
+  // into `spill_dir` (the temporary folder when empty).
+  RowSink* sink = nullptr;
+  std::filesystem::path spill_dir;
+  // Set by someone else: stop at the next output row (interrupted).
+  const std::atomic<bool>* stop = nullptr;
+  // Called about every `progress_interval` wall seconds with the simulated time [s].
+  std::function<void(double)> progress;
+  double progress_interval = 0.25;
+};
+
+// Throws OutputTooLarge (study/output_budget.hpp) when rows are kept and would not fit the
+// memory cap, std::invalid_argument for a monitor on a streamed run, std::runtime_error
+// when a scratch file cannot be written.
+RunResult runScene(const io::Scene& scene, const RunOptions& options);
 RunResult runScene(const io::Scene& scene, const RunMonitor& monitor = {});
 
 // The oscillation summary of a recorded trajectory for a summary spec.

@@ -5,14 +5,17 @@
 
 namespace tribo::study {
 
-TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_rows)
-    : model_(model) {
+TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_rows,
+                                       bool keep_rows)
+    : model_(model), keep_rows_(keep_rows) {
   names_.push_back("t");
   for (const Body& b : model.bodies)
     for (const char* c : {".x", ".y", ".z", ".vx", ".vy", ".vz", ".slip", ".normal_force"})
       names_.push_back(b.name + c);
   data_.resize(names_.size());
-  for (auto& col : data_) col.reserve(expected_rows);
+  if (keep_rows_)
+    for (auto& col : data_) col.reserve(std::min(expected_rows, kMaxReservedRows));
+  row_.resize(names_.size());
   slip_.resize(model.bodies.size());
   normal_.resize(model.bodies.size());
 }
@@ -36,14 +39,18 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
     }
   }
   std::size_t col = 0;
-  data_[col++].push_back(state.time);
+  row_[col++] = state.time;
   for (std::size_t b = 0; b < state.bodies.size(); ++b) {
     const BodyState& s = state.bodies[b];
-    for (int i = 0; i < 3; ++i) data_[col++].push_back(s.position[i]);
-    for (int i = 0; i < 3; ++i) data_[col++].push_back(s.velocity[i]);
-    data_[col++].push_back(slip_[b]);
-    data_[col++].push_back(normal_[b]);
+    for (int i = 0; i < 3; ++i) row_[col++] = s.position[i];
+    for (int i = 0; i < 3; ++i) row_[col++] = s.velocity[i];
+    row_[col++] = slip_[b];
+    row_[col++] = normal_[b];
   }
+  for (RowSink* sink : sinks_) sink->row(row_);
+  if (keep_rows_)
+    for (std::size_t c = 0; c < row_.size(); ++c) data_[c].push_back(row_[c]);
+  ++rows_;
 }
 
 }  // namespace tribo::study

@@ -1,9 +1,11 @@
-// In-memory recording of a run at a fixed output interval: one column per channel, so the
-// summary analysis reads a column without copying. Channels: t, then per body
+// Recording of a run at a fixed output interval. Channels: t, then per body
 // NAME.x NAME.y NAME.z NAME.vx NAME.vy NAME.vz (world frame, body origin),
 // NAME.slip (largest contact slip speed on the body [m/s], 0 out of contact) and
 // NAME.normal_force (sum of its contact normal forces [N]).
-// The step loop never writes files; io/trajectory_writer.hpp does, after the run.
+// Each row goes to the sinks added (e.g. trajectory.csv written as the run goes,
+// study/result_writer.hpp) and, unless the recorder was made without, into memory, one
+// column per channel, so an analysis reads a column without copying (sweeps, the tradeoff).
+// A recorder that keeps no rows holds one row of scratch, whatever the duration.
 // Not here: file formats, analysis.
 #pragma once
 
@@ -17,27 +19,48 @@
 
 namespace tribo::study {
 
+// Receives every row as it is recorded, in the recorder's column order.
+class RowSink {
+ public:
+  virtual ~RowSink() = default;
+  virtual void row(std::span<const double> values) = 0;
+};
+
 class TrajectoryRecorder {
  public:
   static constexpr int kChannelsPerBody = 8;
+  // The most rows `expected_rows` reserves memory for (a hint must not allocate gigabytes).
+  static constexpr std::size_t kMaxReservedRows = std::size_t{1} << 20;
 
-  // `expected_rows` only reserves memory.
-  TrajectoryRecorder(const Model& model, std::size_t expected_rows = 0);
+  // `expected_rows` only reserves memory (at most kMaxReservedRows). Without `keep_rows`
+  // the rows only go to the sinks.
+  TrajectoryRecorder(const Model& model, std::size_t expected_rows = 0, bool keep_rows = true);
+
+  // `sink` (not owned, outliving the recorder's use) receives every later row.
+  void addSink(RowSink* sink) { sinks_.push_back(sink); }
+  void clearSinks() { sinks_.clear(); }
 
   // Appends one row: `ws` must be the evaluation at `state`.
   void record(const State& state, const Workspace& ws);
 
   const std::vector<std::string>& columns() const { return names_; }
-  std::size_t rows() const { return data_.empty() ? 0 : data_[0].size(); }
+  // Rows recorded so far (kept or not).
+  std::size_t rows() const { return rows_; }
+  bool keepsRows() const { return keep_rows_; }
+  // A kept column (empty when the recorder keeps no rows).
   std::span<const double> column(std::size_t c) const { return data_[c]; }
   // Column index of "BODY.channel"; throws std::out_of_range if absent.
   std::size_t columnIndex(const std::string& name) const;
 
  private:
   const Model& model_;
+  bool keep_rows_;
+  std::size_t rows_ = 0;
   std::vector<std::string> names_;
   std::vector<std::vector<double>> data_;
+  std::vector<double> row_;            // scratch: the row being recorded
   std::vector<double> slip_, normal_;  // per body, scratch
+  std::vector<RowSink*> sinks_;
 };
 
 }  // namespace tribo::study

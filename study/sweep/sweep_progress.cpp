@@ -4,21 +4,9 @@
 
 #include <string>
 
+#include "study/run_progress.hpp"
+
 namespace tribo::study {
-
-namespace {
-
-std::string clock(double seconds) {
-  const long s = static_cast<long>(seconds + 0.5);
-  char buf[32];
-  if (s >= 3600)
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
-  else
-    std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
-  return buf;
-}
-
-}  // namespace
 
 SweepProgress::SweepProgress(std::FILE* out, std::size_t total, std::size_t already_done)
     : out_(out),
@@ -67,13 +55,13 @@ void SweepProgress::render(bool force) {
   if (ran > 0 && elapsed > 0) {
     const double r = ran / elapsed;
     std::snprintf(rate, sizeof rate, "  %.3g points/s", r);
-    std::snprintf(left, sizeof left, "  %s left", clock((total_ - done_) / r).c_str());
+    std::snprintf(left, sizeof left, "  %s left", clockText((total_ - done_) / r).c_str());
   }
   char failed[48] = "";
   if (failed_) std::snprintf(failed, sizeof failed, "  %zu failed", failed_);
   std::fprintf(out_, "%ssweep [%s] %4zu/%zu %3d%%%s%s  %s elapsed%s%s", terminal_ ? "\r" : "",
                bar.c_str(), done_, total_, static_cast<int>(100 * share), rate, left,
-               clock(elapsed).c_str(), failed, terminal_ ? "\033[K" : "\n");
+               clockText(elapsed).c_str(), failed, terminal_ ? "\033[K" : "\n");
   std::fflush(out_);
 }
 

@@ -1,9 +1,5 @@
 #include "study/sweep/sweep_results.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -108,15 +104,12 @@ SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manif
   if (ec)
     throw SweepOutputError(Reason::kCannotWrite,
                            "cannot create '" + dir.string() + "': " + ec.message());
-  const fs::path lock = dir / ".lock";
-  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0)
-    throw SweepOutputError(Reason::kCannotWrite, "cannot open '" + lock.string() + "'");
-  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(lock_fd_);
-    lock_fd_ = -1;
-    throw SweepOutputError(Reason::kInUse,
-                           "'" + dir.string() + "' is in use by another sweep (locked)");
+  try {
+    lock_.emplace(dir);
+  } catch (const DirLockedError& e) {
+    throw SweepOutputError(Reason::kInUse, e.what());
+  } catch (const std::runtime_error& e) {
+    throw SweepOutputError(Reason::kCannotWrite, e.what());
   }
   header_ = join(sweepColumns(grid));
   const fs::path manifest_file = dir / "sweep.json";
@@ -185,7 +178,6 @@ SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manif
 
 SweepResultsFile::~SweepResultsFile() {
   if (file_) std::fclose(file_);
-  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
 }
 
 void SweepResultsFile::rewrite(const std::vector<std::size_t>& order) {

@@ -14,7 +14,8 @@
 // the kill), and skips those points; a different sweep.json is refused. When the last point
 // is in, finish() rewrites results.csv in point order, so an interrupted and resumed sweep
 // ends with the same bytes as an uninterrupted one (rows hold no wall times).
-// A lock (flock on DIR/.lock) keeps a second sweep from writing the same folder.
+// A lock (study/dir_lock.hpp: flock on DIR/.lock) keeps a second sweep or run from writing
+// the same folder.
 // Not here: running points, distributing them.
 #pragma once
 
@@ -22,10 +23,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "study/dir_lock.hpp"
 #include "study/sweep/sweep_grid.hpp"
 #include "study/sweep/sweep_point.hpp"
 
@@ -96,7 +99,7 @@ class SweepResultsFile {
   std::vector<std::size_t> written_order_;
   std::size_t done_count_ = 0, dropped_ = 0;
   std::FILE* file_ = nullptr;
-  int lock_fd_ = -1;
+  std::optional<DirLock> lock_;
   std::mutex mutex_;
 };
 

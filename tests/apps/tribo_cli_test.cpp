@@ -186,6 +186,15 @@ TEST_F(TriboCli, BadParametersFailWithFileAndKeyAndWriteNothing) {
   }
 }
 
+TEST_F(TriboCli, AStepLongerThanTheRunIsAnErrorNamingBothValues) {
+  const Result r = runTribo("run " + kBelt + " --out " + dir_.string() + " --set dt=1e300");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("time_step (1e+300 s) is larger than the duration (60 s)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_));
+}
+
 TEST_F(TriboCli, DivergedRunExitsNonZeroAndMarksTheSummary) {
   const Result r =
       runTribo("run " + kBelt + " --out " + dir_.string() + " --set dt=0.02 --set duration=5");

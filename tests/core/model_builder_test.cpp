@@ -79,6 +79,18 @@ TEST(ModelBuilder, RejectsBadOptionsAndEmptyModels) {
   b.options().time_step = 0.0;
   EXPECT_NE(test::modelErrorOf([&] { b.build(); }).find("time step must be > 0"),
             std::string::npos);
+  // A step longer than the run, and a step count no run could finish, name both values.
+  b.options().duration = 60;
+  b.options().time_step = 1e300;
+  EXPECT_EQ(test::modelErrorOf([&] { b.build(); }),
+            "options: time_step (1e+300 s) is larger than the duration (60 s)");
+  b.options().time_step = 60;  // one step is a valid run
+  EXPECT_EQ(test::modelErrorOf([&] { b.build(); }), "");
+  b.options().duration = 1e12;
+  b.options().time_step = 1e-4;
+  const std::string many = test::modelErrorOf([&] { b.build(); });
+  EXPECT_NE(many.find("1e+16 steps"), std::string::npos) << many;
+  EXPECT_NE(many.find("time_step 0.0001 s"), std::string::npos) << many;
 }
 
 TEST(ModelBuilder, JointFramesCoincideInTheInitialConfiguration) {

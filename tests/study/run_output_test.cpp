@@ -1,0 +1,184 @@
+// A run's output when it is streamed rather than kept: the spilled columns read back what
+// was appended, the oscillation analysis gives the same bits from a spill as from memory,
+// a streamed run writes the rows a kept run holds, a stop request ends the run at an output
+// row, the output budget refuses what would not fit and names the keys, and a locked folder
+// refuses a second writer.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "io/scene_loader.hpp"
+#include "study/dir_lock.hpp"
+#include "study/oscillation_summary.hpp"
+#include "study/output_budget.hpp"
+#include "study/scene_run.hpp"
+#include "study/series_spill.hpp"
+
+namespace tribo::study {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
+
+fs::path freshDir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("tribo_run_output_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+TEST(SpilledColumn, ReadsBackEveryValueInAnyOrderAndLeavesNoFile) {
+  const fs::path dir = freshDir("spill");
+  SpilledColumn c(dir);
+  const std::size_t n = 100'003;  // pages of 8192: a partial last page stays in memory
+  for (std::size_t i = 0; i < n; ++i) c.append(std::sin(0.001 * static_cast<double>(i)) + i);
+  ASSERT_EQ(c.size(), n);
+  for (std::size_t i = 0; i < n; i += 7)
+    ASSERT_EQ(c.at(i), std::sin(0.001 * static_cast<double>(i)) + i) << i;
+  for (std::size_t i = n; i-- > 0;)  // backwards, through every cache slot
+    ASSERT_EQ(c.at(i), std::sin(0.001 * static_cast<double>(i)) + i) << i;
+  EXPECT_TRUE(fs::is_empty(dir));  // unlinked at creation
+  fs::remove_all(dir);
+}
+
+// A record in memory behind SampleSeries (the analysis must not care where samples live).
+class VectorSeries : public SampleSeries {
+ public:
+  explicit VectorSeries(const std::vector<double>& v) : v_(v) {}
+  std::size_t size() const override { return v_.size(); }
+  double at(std::size_t i) const override { return v_[i]; }
+
+ private:
+  const std::vector<double>& v_;
+};
+
+TEST(OscillationSummaryFromSeries, SameBitsAsFromMemoryAndTheSignalsAmplitude) {
+  // A growing, then steady oscillation of amplitude 0.5 (p-p 1) over 50 000 samples (many
+  // integral strides), with a slip channel half the time below the stick speed.
+  std::vector<double> t, x, slip;
+  for (int i = 0; i < 50'000; ++i) {
+    const double ti = 0.01 * i;
+    t.push_back(ti);
+    x.push_back(0.5 * (1 - std::exp(-ti / 20)) * std::sin(2 * std::numbers::pi * ti / 1.3) + 2);
+    slip.push_back(std::abs(std::cos(2 * std::numbers::pi * ti / 1.3)));
+  }
+  const OscillationSummary a = summarizeOscillation(t, x, slip);
+  const VectorSeries ts(t), xs(x), ss(slip);
+  const OscillationSummary b = summarizeOscillation(ts, xs, &ss);
+  EXPECT_NEAR(b.amplitude_pp, 1.0, 1e-6);
+  EXPECT_NEAR(b.period, 1.3, 1e-6);
+  EXPECT_NEAR(b.x_mean, 2.0, 1e-4);
+  EXPECT_EQ(a.amplitude_pp, b.amplitude_pp);
+  EXPECT_EQ(a.period, b.period);
+  EXPECT_EQ(a.time_to_98, b.time_to_98);
+  EXPECT_EQ(a.stuck_fraction, b.stuck_fraction);
+  EXPECT_EQ(a.x_mean, b.x_mean);
+  ASSERT_EQ(a.cycles.size(), b.cycles.size());
+  for (std::size_t i = 0; i < a.cycles.size(); ++i) EXPECT_EQ(a.cycles[i].mean, b.cycles[i].mean);
+  // No cycle: a ramp; figures over the last half of the record.
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = 3 * t[i];
+  const OscillationSummary c = summarizeOscillation(ts, xs, nullptr);
+  EXPECT_FALSE(c.oscillating);
+  EXPECT_NEAR(c.amplitude_pp, 3 * (t.back() - t.back() / 2), 0.03 + 1e-9);
+  EXPECT_NEAR(c.x_mean, 3 * 0.75 * t.back(), 1e-6);
+  EXPECT_EQ(c.x_mean, summarizeOscillation(t, x, {}).x_mean);
+}
+
+// Collects streamed rows.
+struct Rows : RowSink {
+  std::vector<std::vector<double>> rows;
+  void row(std::span<const double> v) override { rows.emplace_back(v.begin(), v.end()); }
+};
+
+TEST(StreamedRun, WritesTheRowsAKeptRunHoldsAndTheSameSummary) {
+  const io::Scene scene = io::loadScene(kBelt, {"duration=4"});
+  const RunResult kept = runScene(scene);
+  Rows rows;
+  RunOptions options;
+  options.sink = &rows;
+  const fs::path dir = freshDir("streamed");
+  options.spill_dir = dir;
+  const RunResult streamed = runScene(scene, options);
+  ASSERT_TRUE(kept.complete);
+  ASSERT_TRUE(streamed.complete);
+  EXPECT_FALSE(streamed.trajectory.keepsRows());
+  EXPECT_EQ(streamed.trajectory.column(0).size(), 0u);  // nothing kept
+  ASSERT_EQ(rows.rows.size(), kept.trajectory.rows());
+  EXPECT_EQ(streamed.trajectory.rows(), kept.trajectory.rows());
+  for (std::size_t r = 0; r < rows.rows.size(); r += 97)
+    for (std::size_t c = 0; c < rows.rows[r].size(); ++c)
+      ASSERT_EQ(rows.rows[r][c], kept.trajectory.column(c)[r]) << r << " " << c;
+  EXPECT_TRUE(kept.summary.oscillating);
+  EXPECT_EQ(streamed.summary.amplitude_pp, kept.summary.amplitude_pp);
+  EXPECT_EQ(streamed.summary.period, kept.summary.period);
+  EXPECT_EQ(streamed.summary.stuck_fraction, kept.summary.stuck_fraction);
+  EXPECT_EQ(streamed.summary.x_mean, kept.summary.x_mean);
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+TEST(StreamedRun, AStopRequestEndsTheRunAtAnOutputRow) {
+  // Output every 10 steps; the stop comes at the first progress call, mid-interval.
+  const io::Scene scene =
+      io::loadScene(kBelt, {"duration=1000", "dt=0.001", "output_interval=0.01"});
+  std::atomic<bool> stop{false};
+  Rows rows;
+  RunOptions options;
+  options.sink = &rows;
+  options.stop = &stop;
+  options.progress_interval = 0.0;
+  int calls = 0;
+  options.progress = [&](double) {
+    ++calls;
+    stop = true;
+  };
+  const RunResult r = runScene(scene, options);
+  EXPECT_FALSE(r.complete);
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_EQ(calls, 1);
+  ASSERT_GE(rows.rows.size(), 2u);
+  EXPECT_EQ(rows.rows.back()[0], r.simulated_seconds);  // the last row is the last state
+  EXPECT_LT(r.simulated_seconds, 1.0);                  // 64 steps and the rest of one interval
+  EXPECT_NE(r.message.find("interrupted at t = "), std::string::npos) << r.message;
+}
+
+TEST(OutputBudget, RefusesWhatWouldNotFitAndNamesTheKeys) {
+  const io::Scene huge = io::loadScene(kBelt, {"duration=1e12", "dt=1"});
+  const OutputEstimate e = estimateOutput(huge);
+  EXPECT_DOUBLE_EQ(e.rows, 1e12 / 1.0 + 2);  // output.interval 1 ms < step: every step
+  EXPECT_EQ(e.columns, 1 + 2 * 8);           // the belt and the box
+  try {
+    checkOutputFitsDisk(huge, fs::temp_directory_path() / "tribo_no_such_folder" / "out");
+    ADD_FAILURE() << "1e12 rows fit the disk";
+  } catch (const OutputTooLarge& x) {
+    const std::string m = x.what();
+    EXPECT_NE(m.find("output.interval"), std::string::npos) << m;
+    EXPECT_NE(m.find("duration 1e+12 s"), std::string::npos) << m;
+    EXPECT_NE(m.find("free in '"), std::string::npos) << m;
+  }
+  EXPECT_THROW(checkOutputFitsMemory(huge), OutputTooLarge);
+  // A kept run checks before it allocates anything.
+  EXPECT_THROW(runScene(huge), OutputTooLarge);
+  const io::Scene small = io::loadScene(kBelt, {"duration=3"});
+  EXPECT_NO_THROW(checkOutputFitsDisk(small, fs::temp_directory_path()));
+  EXPECT_NO_THROW(checkOutputFitsMemory(small));
+}
+
+TEST(DirLock, ASecondLockOnTheFolderIsRefusedUntilTheFirstIsGone) {
+  const fs::path dir = freshDir("lock");
+  {
+    DirLock first(dir);
+    EXPECT_THROW(DirLock second(dir), DirLockedError);
+  }
+  EXPECT_NO_THROW(DirLock again(dir));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tribo::study
