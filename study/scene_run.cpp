@@ -129,6 +129,7 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   }
   for (const std::string& note : droppedEquationNotes(model)) result.warnings.push_back(note);
   Simulator sim(scene.model);
+  if (options.profile) sim.setProfiling(true);
   const auto start = std::chrono::steady_clock::now();
   result.trajectory.record(sim.state(), sim.current());
   double next_output = interval;

@@ -63,6 +63,8 @@ struct RunOptions {
   // Called about every `progress_interval` wall seconds with the simulated time [s].
   std::function<void(double)> progress;
   double progress_interval = 0.25;
+  // Time each stage of the step into RunResult::stats.profile (core/stage_profile.hpp).
+  bool profile = false;
 };
 
 // Throws OutputTooLarge (study/output_budget.hpp) when rows are kept and would not fit the

@@ -41,6 +41,30 @@ TEST_F(TriboCli, RunWritesTrajectoryAndSummary) {
   EXPECT_FALSE(fs::exists(dir_ / "trajectory.csv.partial"));
 }
 
+TEST_F(TriboCli, ProfilePrintsEveryStageAndItsShareOfTheStep) {
+  const Result r =
+      runTribo("run " + kBelt + " --out " + dir_.string() + " --set duration=1 --profile --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  // RK4 evaluates the forces four times a step.
+  EXPECT_NE(r.output.find("us a step, 4 evaluations a step"), std::string::npos) << r.output;
+  double shares = 0.0;
+  for (const char* stage :
+       {"poses", "detect", "contact_kinematics", "normal_force", "friction", "assemble",
+        "accelerations", "constraints", "friction_states", "integrator, checks"}) {
+    const auto at = r.output.find("  " + std::string(stage) + " ");
+    ASSERT_NE(at, std::string::npos) << stage << "\n" << r.output;
+    const auto line = r.output.substr(at, r.output.find('\n', at) - at);
+    const double share = std::stod(line.substr(line.rfind(' ', line.size() - 2) + 1));
+    EXPECT_GE(share, 0.0) << line;
+    shares += share;
+  }
+  EXPECT_NEAR(shares, 100.0, 0.6) << r.output;  // ten shares rounded to 0.1%
+  // Without --profile nothing is timed or printed.
+  const Result plain = runTribo("run " + kBelt + " --out " + (dir_ / "plain").string() +
+                                " --set duration=1 --quiet");
+  EXPECT_EQ(plain.output.find("stage profile"), std::string::npos) << plain.output;
+}
+
 TEST_F(TriboCli, SummaryNamesEveryNormalLawWithItsExponent) {
   // The ball-drop scene with its Hunt-Crossley material swapped for each other law: the
   // summary's materials carry the law's own name (not "linear" or "hunt_crossley" for all).
