@@ -20,6 +20,8 @@
 
 #include "friction/friction_law.hpp"
 #include "study/scene_run.hpp"
+#include "study/sweep/sweep_results.hpp"
+#include "study/sweep/sweep_runner.hpp"
 #include "support/scene_text.hpp"
 
 namespace tribo::study {
@@ -177,6 +179,33 @@ TEST(BeltModes, SimulationGrowsAndDecaysAtThePredictedRate) {
                 c, e.sigma, predicted, measured);
     EXPECT_NEAR(measured, predicted, 0.01 * std::abs(predicted)) << "c = " << c;
     EXPECT_NEAR(predicted, e.sigma, 1e-6 * std::abs(e.sigma));
+  }
+}
+
+TEST(BeltModes, SweepPointsGiveTheLeadingModeAndCount) {
+  SweepSpec spec;
+  spec.scene_path = kBelt;
+  spec.axes = {parseListAxis("v_b=0.005,1.5")};
+  spec.analysis = SweepAnalysis::kModes;
+  const SweepPlan plan = planSweep(spec);
+  const std::vector<std::string> columns = sweepColumns(plan.grid, SweepAnalysis::kModes);
+  EXPECT_EQ(columns,
+            (std::vector<std::string>{"point", "v_b", "status", "max_growth_rate", "frequency",
+                                      "unstable_modes", "warnings", "message"}));
+  for (std::size_t i = 0; i < 2; ++i) {
+    const PointOutcome o = runPoint(plan.setup, plan.grid.overrides(i));
+    ASSERT_EQ(o.status, PointStatus::kComplete) << o.message;
+    const double v_b = i == 0 ? 0.005 : 1.5;
+    const Expected e = expected("roh_yoo", v_b, 0.0);
+    if (i == 1) {  // unstable pair
+      EXPECT_NEAR(o.max_growth_rate, e.sigma, 1e-6 * e.sigma);
+      EXPECT_NEAR(o.growth_frequency, e.frequency, 1e-6 * e.frequency);
+      EXPECT_EQ(o.unstable_modes, 1);
+    } else {  // overdamped stick branch: the slower real root leads
+      EXPECT_NEAR(o.max_growth_rate, e.sigma + std::sqrt(e.sigma * e.sigma - kSpring / kMass),
+                  1e-6 * std::abs(e.sigma));
+      EXPECT_EQ(o.unstable_modes, 0);
+    }
   }
 }
 
