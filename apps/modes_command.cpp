@@ -143,11 +143,9 @@ int modesCommand(const std::vector<std::string>& args) {
   } catch (const study::NoSteadyState& e) {
     std::fprintf(stderr, "tribo modes: no steady state: %s\n", e.what());
     return kExitNoSteadyState;
-  } catch (const study::ModesError& e) {
-    const bool numeric = std::string(e.what()).find("not finite") != std::string::npos ||
-                         std::string(e.what()).find("did not converge") != std::string::npos;
+  } catch (const study::LinearizationFailure& e) {
     std::fprintf(stderr, "tribo modes: %s\n", e.what());
-    return numeric ? kExitEigenFailure : 2;
+    return kExitEigenFailure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo modes: %s\n", e.what());
     return 2;

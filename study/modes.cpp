@@ -46,14 +46,16 @@ Mode makeMode(std::complex<double> lambda, const Eigen::VectorXcd& vector,
 std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& coords,
                           double growth_tolerance) {
   if (!a.allFinite())
-    throw ModesError("the linearized system is not finite (a force is not differentiable here)");
+    throw LinearizationFailure(
+        "the linearized system is not finite (a force is not differentiable here)");
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, true);
   if (solver.info() != Eigen::Success)
-    throw ModesError("the eigenvalue problem did not converge (" + std::to_string(a.rows()) +
-                     " states)");
+    throw LinearizationFailure(std::string("the eigenvalue problem did not converge (")
+                                   .append(std::to_string(a.rows()))
+                                   .append(" states)"));
   const Eigen::VectorXcd values = solver.eigenvalues();
   const Eigen::MatrixXcd vectors = solver.eigenvectors();
-  if (!values.allFinite()) throw ModesError("the eigenvalues are not finite");
+  if (!values.allFinite()) throw LinearizationFailure("the eigenvalues are not finite");
   std::vector<Mode> modes;
   for (Eigen::Index i = 0; i < values.size(); ++i) {
     if (values(i).imag() < 0) continue;  // the conjugate of a pair reported once

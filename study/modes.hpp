@@ -32,6 +32,11 @@ class ModesError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+// The numbers failed: a non-finite linearization or an eigenproblem that did not converge.
+class LinearizationFailure : public ModesError {
+ public:
+  using ModesError::ModesError;
+};
 
 struct ModesSpec {
   SteadyStateOptions steady;

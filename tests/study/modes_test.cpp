@@ -209,6 +209,19 @@ TEST(BeltModes, SweepPointsGiveTheLeadingModeAndCount) {
   }
 }
 
+TEST(BeltModes, FreeBoxHasTheJointedBoxsPairAndStableRocking) {
+  // scenes/belt_free_box.yaml: the same box without its planar joint (six coordinates).
+  const io::Scene scene =
+      io::loadScene(std::string(TRIBO_SOURCE_DIR) + "/scenes/belt_free_box.yaml");
+  const ModesResult r = analyzeModes(scene);
+  EXPECT_EQ(r.coordinates, 6);
+  const Expected e = expected("roh_yoo", 1.5, 0.0);
+  EXPECT_EQ(r.unstable_count, 1);
+  EXPECT_EQ(r.leading().dominant, "box.x");
+  EXPECT_NEAR(r.leading().growth_rate, e.sigma, 1e-6 * e.sigma);
+  EXPECT_NEAR(r.leading().frequency, e.frequency, 1e-6 * e.frequency);
+}
+
 TEST(Modes, RefusesWhatItCannotAnalyse) {
   // A box on the belt with no spring: friction drags it along, nothing holds it.
   const std::string text = test::replaced(beltText(0.0), "stiffness: $k,", "stiffness: 0,");
