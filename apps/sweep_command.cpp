@@ -20,7 +20,7 @@ const char* const kSweepUsage =
     "usage: tribo sweep SCENE.yaml --out DIR (--grid NAME=START:STOP:COUNT | --list "
     "NAME=V1,V2,...)...\n"
     "                   [--set NAME=VALUE ...] [--settle TOL] [--settle-every SECONDS]\n"
-    "                   [--jobs N] [--keep-trajectories] [--quiet]\n"
+    "                   [--jobs N] [--keep-trajectories] [--quiet] [--analysis run|modes]\n"
     "\n"
     "  sweep   run the scene at every combination of the swept values; one row per point\n"
     "          in DIR/results.csv, written as each point finishes; run again with the same\n"
@@ -34,7 +34,9 @@ const char* const kSweepUsage =
     "  --settle-every SECONDS  simulated time between settle checks (default 5)\n"
     "  --jobs  threads per process (default: every core, shared among the ranks of a node)\n"
     "  --keep-trajectories  also write DIR/points/<point>/trajectory.csv and summary.json\n"
-    "  --quiet no progress line\n";
+    "  --quiet no progress line\n"
+    "  --analysis modes  per point the linear stability of the steady state instead of a run\n"
+    "          (tribo modes): columns max_growth_rate, frequency, unstable_modes\n";
 
 namespace {
 
@@ -106,7 +108,8 @@ int sweepCommand(const std::vector<std::string>& args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string& a = args[i];
       const bool takes_value = a == "--out" || a == "--set" || a == "--grid" || a == "--list" ||
-                               a == "--settle" || a == "--settle-every" || a == "--jobs";
+                               a == "--settle" || a == "--settle-every" || a == "--jobs" ||
+                               a == "--analysis";
       if (takes_value && i + 1 >= args.size()) return usage(a + " needs a value");
       if (a == "--out") {
         out = args[++i];
@@ -126,6 +129,10 @@ int sweepCommand(const std::vector<std::string>& args) {
         if (!v || *v < 1 || *v > 4096 || *v != static_cast<unsigned>(*v))
           return usage("--jobs: expected a whole number from 1 to 4096, found '" + args[i] + "'");
         jobs = static_cast<unsigned>(*v);
+      } else if (a == "--analysis") {
+        const auto v = study::kSweepAnalysisNames.find(args[++i]);
+        if (!v) return usage("--analysis: expected run or modes, found '" + args[i] + "'");
+        spec.analysis = *v;
       } else if (a == "--keep-trajectories") {
         spec.keep_trajectories = true;
       } else if (a == "--quiet") {

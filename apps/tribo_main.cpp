@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "apps/info_command.hpp"
+#include "apps/modes_command.hpp"
 #include "apps/sweep_command.hpp"
 #include "apps/tradeoff_command.hpp"
 #include "io/scene_loader.hpp"
@@ -259,5 +260,6 @@ int main(int argc, char** argv) {
   if (args[0] == "info") return tribo::app::runInfo({args.begin() + 1, args.end()});
   if (args[0] == "sweep") return tribo::app::sweepCommand({args.begin() + 1, args.end()});
   if (args[0] == "tradeoff") return tribo::app::tradeoffCommand({args.begin() + 1, args.end()});
+  if (args[0] == "modes") return tribo::app::modesCommand({args.begin() + 1, args.end()});
   return usage("unknown command '" + args[0] + "'");
 }

@@ -291,7 +291,7 @@ SweepReport runSweepDistributed(const MpiSession& mpi, const SweepSpec& spec, co
   if (mpi.rank() == 0) {
     try {
       plan.emplace(planSweep(spec, text));
-      results.emplace(out, plan->manifest, plan->grid);
+      results.emplace(out, plan->manifest, plan->grid, plan->setup.analysis);
     } catch (const std::exception& e) {
       failure = failureOf(e);
       message = e.what();

@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "io/scene_loader.hpp"
+#include "study/modes.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
 
@@ -34,6 +35,15 @@ PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& p
     std::vector<std::string> overrides = setup.fixed_overrides;
     overrides.insert(overrides.end(), point_overrides.begin(), point_overrides.end());
     const io::Scene scene = io::loadSceneFromString(setup.scene_text, setup.scene_path, overrides);
+    if (setup.analysis == SweepAnalysis::kModes) {
+      const ModesResult m = analyzeModes(scene);
+      out.status = PointStatus::kComplete;
+      out.max_growth_rate = m.leading().growth_rate;
+      out.growth_frequency = m.leading().frequency;
+      out.unstable_modes = m.unstable_count;
+      out.warnings = m.warnings;
+      return out;
+    }
     std::optional<SettleWatch> watch;
     if (setup.settle) watch.emplace(scene, *setup.settle);
     const RunResult r = runScene(scene, watch ? watch->monitor() : RunMonitor{});

@@ -18,12 +18,20 @@
 
 namespace tribo::study {
 
+// What a point computes: a run of the scene (the oscillation figures), or the linear
+// stability of its steady state (study/modes.hpp: largest growth rate, its frequency, the
+// number of unstable modes; milliseconds instead of a simulation).
+enum class SweepAnalysis { kRun, kModes };
+inline constexpr NameTable<SweepAnalysis, 2> kSweepAnalysisNames{
+    "analysis", {{{SweepAnalysis::kRun, "run"}, {SweepAnalysis::kModes, "modes"}}}};
+
 // What every point of one sweep shares.
 struct SweepSetup {
   std::string scene_path;                    // for messages and Scene::path
   std::string scene_text;                    // the scene's YAML, read once for all points
   std::vector<std::string> fixed_overrides;  // NAME=VALUE (--set), applied before the point's
   std::optional<SettleRule> settle;          // run each point until settled (duration: cap)
+  SweepAnalysis analysis = SweepAnalysis::kRun;
 };
 
 enum class PointStatus { kComplete, kDiverged, kError };
@@ -48,14 +56,19 @@ struct PointOutcome {
   int cycles = 0;             // cycles detected over the whole run
   double simulated = 0;       // simulated time actually run [s]
   bool settled = false;       // the run stopped because its oscillation settled
+  // SweepAnalysis::kModes only: the leading mode and the count of growing ones.
+  double max_growth_rate = 0;   // [1/s]
+  double growth_frequency = 0;  // of the leading mode [Hz]
+  int unstable_modes = 0;
   std::vector<std::string> warnings;
   std::string message;  // the scene error or the divergence, empty when complete
 };
 
 std::string pointStatusName(PointStatus status);
 
-// Runs one point. With `trajectory_dir`, also writes the run's trajectory.csv and
-// summary.json there (a write failure makes the point an error).
+// Runs one point (with SweepAnalysis::kModes: analyses it; a scene without a steady state
+// or whose eigenproblem fails is an error point). With `trajectory_dir`, also writes the run's
+// trajectory.csv and summary.json there (a write failure makes the point an error).
 PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& point_overrides,
                       const std::filesystem::path* trajectory_dir = nullptr);
 

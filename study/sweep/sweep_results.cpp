@@ -19,6 +19,9 @@ constexpr const char* kFigureColumns[] = {
     "status",   "amplitude_pp", "period",    "time_to_98", "rise_time", "stuck_fraction", "mean",
     "first_pp", "cycles",       "simulated", "settled",    "warnings",  "message"};
 
+constexpr const char* kModesColumns[] = {"status",         "max_growth_rate", "frequency",
+                                         "unstable_modes", "warnings",        "message"};
+
 std::string number(double v) { return csvNumber(v); }
 
 std::string join(const std::vector<std::string>& fields) { return csvLine(fields); }
@@ -42,24 +45,34 @@ bool isStatus(const std::string& s) { return kPointStatusNames.find(s).has_value
 
 }  // namespace
 
-std::vector<std::string> sweepColumns(const SweepGrid& grid) {
+std::vector<std::string> sweepColumns(const SweepGrid& grid, SweepAnalysis analysis) {
   std::vector<std::string> c{"point"};
   for (const auto& a : grid.axes()) c.push_back(a.name);
-  c.insert(c.end(), std::begin(kFigureColumns), std::end(kFigureColumns));
+  if (analysis == SweepAnalysis::kModes)
+    c.insert(c.end(), std::begin(kModesColumns), std::end(kModesColumns));
+  else
+    c.insert(c.end(), std::begin(kFigureColumns), std::end(kFigureColumns));
   return c;
 }
 
-std::string formatSweepRow(std::size_t index, const SweepGrid& grid, const PointOutcome& o) {
+std::string formatSweepRow(std::size_t index, const SweepGrid& grid, const PointOutcome& o,
+                           SweepAnalysis analysis) {
   std::vector<std::string> f{std::to_string(index)};
   for (auto& v : grid.values(index)) f.push_back(std::move(v));
   f.emplace_back(pointStatusName(o.status));
   const bool ok = o.status == PointStatus::kComplete;
-  for (const double v : {o.amplitude_pp, o.period, o.time_to_98, o.rise_time, o.stuck_fraction,
-                         o.x_mean, o.first_pp})
-    f.push_back(ok ? number(v) : "");
-  f.push_back(ok ? std::to_string(o.cycles) : "");
-  f.push_back(o.status == PointStatus::kError ? "" : number(o.simulated));
-  f.push_back(ok ? (o.settled ? "1" : "0") : "");
+  if (analysis == SweepAnalysis::kModes) {
+    f.push_back(ok ? number(o.max_growth_rate) : "");
+    f.push_back(ok ? number(o.growth_frequency) : "");
+    f.push_back(ok ? std::to_string(o.unstable_modes) : "");
+  } else {
+    for (const double v : {o.amplitude_pp, o.period, o.time_to_98, o.rise_time, o.stuck_fraction,
+                           o.x_mean, o.first_pp})
+      f.push_back(ok ? number(v) : "");
+    f.push_back(ok ? std::to_string(o.cycles) : "");
+    f.push_back(o.status == PointStatus::kError ? "" : number(o.simulated));
+    f.push_back(ok ? (o.settled ? "1" : "0") : "");
+  }
   std::string warnings;
   for (const auto& w : o.warnings) {
     if (!warnings.empty()) warnings += " | ";
@@ -97,7 +110,7 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 }
 
 SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manifest,
-                                   const SweepGrid& grid)
+                                   const SweepGrid& grid, SweepAnalysis analysis)
     : dir_(dir), results_(dir / "results.csv"), done_(grid.size(), false), lines_(grid.size()) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -111,7 +124,7 @@ SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manif
   } catch (const std::runtime_error& e) {
     throw SweepOutputError(Reason::kCannotWrite, e.what());
   }
-  header_ = join(sweepColumns(grid));
+  header_ = join(sweepColumns(grid, analysis));
   const fs::path manifest_file = dir / "sweep.json";
   const bool have_results = fs::exists(results_);
   if (fs::exists(manifest_file)) {
@@ -136,7 +149,7 @@ SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manif
                              "'" + results_.string() +
                                  "' does not start with this sweep's header; remove it to restart");
     std::size_t pos = header_.size();
-    const std::size_t n_columns = sweepColumns(grid).size();
+    const std::size_t n_columns = sweepColumns(grid, analysis).size();
     const std::size_t n_axes = grid.axes().size();
     while (pos < text.size()) {
       const std::size_t end = text.find('\n', pos);

@@ -5,6 +5,9 @@
 //                      point,<swept parameters...>,status,amplitude_pp,period,time_to_98,
 //                      rise_time,stuck_fraction,mean,first_pp,cycles,simulated,settled,
 //                      warnings,message
+//                    or, for --analysis modes,
+//                      point,<swept parameters...>,status,max_growth_rate,frequency,
+//                      unstable_modes,warnings,message
 //                    (figures as study/sweep/sweep_point.hpp; numbers with 10 significant digits);
 //                    status is complete, diverged or error; the figures are empty unless
 //                    complete (never NaN); text fields are quoted as CSV needs.
@@ -48,10 +51,12 @@ class SweepOutputError : public std::runtime_error {
 };
 
 // Header columns for a grid.
-std::vector<std::string> sweepColumns(const SweepGrid& grid);
+std::vector<std::string> sweepColumns(const SweepGrid& grid,
+                                      SweepAnalysis analysis = SweepAnalysis::kRun);
 
 // One results line (ending in '\n') for point `index` of `grid`.
-std::string formatSweepRow(std::size_t index, const SweepGrid& grid, const PointOutcome& outcome);
+std::string formatSweepRow(std::size_t index, const SweepGrid& grid, const PointOutcome& outcome,
+                           SweepAnalysis analysis = SweepAnalysis::kRun);
 
 // Fields of one CSV line (without its '\n'); quoted fields unquoted. Empty on a malformed
 // line (an unclosed quote).
@@ -63,7 +68,7 @@ class SweepResultsFile {
   // `manifest` to sweep.json and the header) or resumes the one there. Throws
   // SweepOutputError.
   SweepResultsFile(const std::filesystem::path& dir, const std::string& manifest,
-                   const SweepGrid& grid);
+                   const SweepGrid& grid, SweepAnalysis analysis = SweepAnalysis::kRun);
   ~SweepResultsFile();
   SweepResultsFile(const SweepResultsFile&) = delete;
   SweepResultsFile& operator=(const SweepResultsFile&) = delete;

@@ -49,7 +49,9 @@ std::string manifestFor(const SweepSpec& spec, const std::string& scene_text,
                    {"check_interval", spec.settle->check_interval}};
   else
     j["settle"] = nullptr;
-  j["columns"] = sweepColumns(grid);
+  // Written only for a modes sweep, so the manifests of run sweeps stay as they were.
+  if (spec.analysis != SweepAnalysis::kRun) j["analysis"] = kSweepAnalysisNames.name(spec.analysis);
+  j["columns"] = sweepColumns(grid, spec.analysis);
   return j.dump(2) + "\n";
 }
 
@@ -75,7 +77,11 @@ SweepPlan planSweep(const SweepSpec& spec) {
 }
 
 SweepPlan planSweep(const SweepSpec& spec, const std::string& scene_text) {
-  SweepPlan plan{{spec.scene_path, scene_text, spec.fixed_overrides, spec.settle},
+  if (spec.settle && spec.analysis == SweepAnalysis::kModes)
+    throw SweepSpecError("--settle applies to runs, not to --analysis modes");
+  if (spec.keep_trajectories && spec.analysis == SweepAnalysis::kModes)
+    throw SweepSpecError("--keep-trajectories applies to runs, not to --analysis modes");
+  SweepPlan plan{{spec.scene_path, scene_text, spec.fixed_overrides, spec.settle, spec.analysis},
                  SweepGrid(spec.axes),
                  "",
                  spec.keep_trajectories};
@@ -131,7 +137,8 @@ void runPointsOnThreads(const SweepPlan& plan, const fs::path& out, unsigned job
       const fs::path dir = pointDir(out, *index, plan.grid.size());
       const PointOutcome o = runPoint(plan.setup, plan.grid.overrides(*index),
                                       plan.keep_trajectories ? &dir : nullptr);
-      done({*index, formatSweepRow(*index, plan.grid, o), o.status != PointStatus::kComplete,
+      done({*index, formatSweepRow(*index, plan.grid, o, plan.setup.analysis),
+            o.status != PointStatus::kComplete,
             plan.setup.settle && o.status == PointStatus::kComplete && !o.settled});
     }
   };
@@ -144,7 +151,7 @@ void runPointsOnThreads(const SweepPlan& plan, const fs::path& out, unsigned job
 SweepReport runSweepLocally(const SweepPlan& plan, const fs::path& out,
                             const LocalRunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  SweepResultsFile results(out, plan.manifest, plan.grid);
+  SweepResultsFile results(out, plan.manifest, plan.grid, plan.setup.analysis);
   SweepReport report;
   report.points = plan.grid.size();
   report.resumed = results.doneCount();

@@ -22,10 +22,11 @@ namespace tribo::study {
 // What a sweep is, as the command line gives it.
 struct SweepSpec {
   std::string scene_path;
-  std::vector<std::string> fixed_overrides;  // --set NAME=VALUE
-  std::vector<SweepAxis> axes;               // --grid/--list, in order
-  std::optional<SettleRule> settle;          // --settle
-  bool keep_trajectories = false;            // DIR/points/<point>/{trajectory.csv,summary.json}
+  std::vector<std::string> fixed_overrides;      // --set NAME=VALUE
+  std::vector<SweepAxis> axes;                   // --grid/--list, in order
+  std::optional<SettleRule> settle;              // --settle
+  bool keep_trajectories = false;                // DIR/points/<point>/{trajectory.csv,summary.json}
+  SweepAnalysis analysis = SweepAnalysis::kRun;  // --analysis
 };
 
 // A checked sweep, ready to run anywhere.

@@ -1,0 +1,196 @@
+#include "apps/modes_command.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <optional>
+
+#include "io/scene_parameters.hpp"
+#include "study/modes_report.hpp"
+#include "study/stability_boundary.hpp"
+
+namespace tribo::app {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: tribo modes SCENE.yaml --out DIR [--set NAME=VALUE ...] [--settle]\n"
+    "                   [--boundary NAME=LO:HI] [--growth-tolerance X]\n"
+    "  linear stability of steady sliding: finds the steady state (dynamic bodies at rest,\n"
+    "  belts moving), linearizes about it and prints each mode's frequency, growth rate,\n"
+    "  damping ratio and what moves; writes DIR/modes.json and DIR/modes.csv\n"
+    "  --settle    a damped settling run before the steady-state search\n"
+    "  --boundary  bisect NAME over [LO, HI] for where the largest growth rate crosses zero;\n"
+    "              writes DIR/boundary.json\n"
+    "  --growth-tolerance  growth rate above which a mode counts as unstable (1e-6 1/s)\n"
+    "exit status: 0 stable, 1 usage, 2 bad scene, 4 output error, 8 unstable,\n"
+    "             9 no steady state, 10 linearization or eigenproblem failed\n";
+
+constexpr std::size_t kRowsShown = 12;
+
+struct Arguments {
+  std::string scene_path, out_dir;
+  std::vector<std::string> overrides;
+  study::ModesSpec spec;
+  std::optional<study::BoundarySpec> boundary;
+};
+
+double number(const std::string& option, const std::string& text) {
+  const auto v = io::parseNumber(text);
+  if (!v) throw std::invalid_argument(option + ": expected a number, found '" + text + "'");
+  return *v;
+}
+
+study::BoundarySpec parseBoundary(const std::string& text) {
+  const auto eq = text.find('='), colon = text.find(':', eq == std::string::npos ? 0 : eq);
+  if (eq == std::string::npos || colon == std::string::npos || eq == 0)
+    throw std::invalid_argument("--boundary: expected NAME=LO:HI, found '" + text + "'");
+  study::BoundarySpec b;
+  b.parameter = text.substr(0, eq);
+  b.lo = number("--boundary", text.substr(eq + 1, colon - eq - 1));
+  b.hi = number("--boundary", text.substr(colon + 1));
+  if (!(b.lo < b.hi)) throw std::invalid_argument("--boundary: expected LO < HI in '" + text + "'");
+  return b;
+}
+
+Arguments parse(const std::vector<std::string>& args) {
+  Arguments a;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& s = args[i];
+    const bool takes_value =
+        s == "--set" || s == "--out" || s == "--boundary" || s == "--growth-tolerance";
+    if (takes_value && i + 1 >= args.size()) throw std::invalid_argument(s + " needs a value");
+    if (s == "--set")
+      a.overrides.push_back(args[++i]);
+    else if (s == "--out")
+      a.out_dir = args[++i];
+    else if (s == "--boundary")
+      a.boundary = parseBoundary(args[++i]);
+    else if (s == "--growth-tolerance")
+      a.spec.growth_tolerance = number(s, args[++i]);
+    else if (s == "--settle")
+      a.spec.steady.settle = true;
+    else if (s.rfind("--", 0) == 0)
+      throw std::invalid_argument("unknown option '" + s + "'");
+    else if (a.scene_path.empty())
+      a.scene_path = s;
+    else
+      throw std::invalid_argument("more than one scene given");
+  }
+  if (a.scene_path.empty()) throw std::invalid_argument("no scene file given");
+  if (a.out_dir.empty()) throw std::invalid_argument("no output folder given (--out DIR)");
+  return a;
+}
+
+void printTable(const io::Scene& scene, const study::ModesResult& r) {
+  const Model& model = *scene.model;
+  std::printf("scene            %s\n", scene.path.c_str());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (model.bodies[b].kind != BodyKind::kDynamic) continue;
+    const Vec3& p = r.steady.state.bodies[b].position;
+    std::printf("steady state     %s at (%.6g, %.6g, %.6g) m\n", model.bodies[b].name.c_str(),
+                p.x(), p.y(), p.z());
+  }
+  std::printf("newton           %d iterations, largest acceleration %.2g%s\n", r.steady.iterations,
+              r.steady.residual, r.steady.settled_for > 0 ? " (after a settling run)" : "");
+  std::printf(
+      "coordinates      %d independent, %d states; steps %.2g (position), %.2g "
+      "(velocity), check %.2g\n",
+      r.coordinates, 2 * r.coordinates, r.steps.position, r.steps.velocity, r.worst_disagreement);
+  std::printf("\n%-5s %-15s %-15s %-14s %-9s %s\n", "mode", "frequency [Hz]", "growth [1/s]",
+              "damping ratio", "unstable", "moves");
+  for (std::size_t i = 0; i < r.modes.size() && i < kRowsShown; ++i) {
+    const study::Mode& m = r.modes[i];
+    std::printf("%-5zu %-15.7g %-15.7g %-14.5g %-9s %s\n", i + 1, m.frequency, m.growth_rate,
+                m.damping_ratio, m.unstable ? "YES" : "no", m.dominant.c_str());
+  }
+  if (r.modes.size() > kRowsShown)
+    std::printf("... %zu more modes in modes.csv\n", r.modes.size() - kRowsShown);
+  const study::Mode& lead = r.leading();
+  if (r.unstable_count > 0)
+    std::printf(
+        "\nverdict          UNSTABLE: %d mode%s grow%s; leading %.6g Hz, growth rate %.6g "
+        "1/s (%s)\n",
+        r.unstable_count, r.unstable_count > 1 ? "s" : "", r.unstable_count > 1 ? "" : "s",
+        lead.frequency, lead.growth_rate, lead.dominant.c_str());
+  else
+    std::printf("\nverdict          stable: largest growth rate %.6g 1/s\n", lead.growth_rate);
+  std::printf(
+      "time             steady state %.3g ms, linearization + eigenvalues %.3g ms "
+      "(%d evaluations)\n",
+      1e3 * r.steady_seconds, 1e3 * r.linearize_seconds, r.evaluations);
+}
+
+}  // namespace
+
+int modesCommand(const std::vector<std::string>& args) {
+  for (const auto& s : args)
+    if (s == "--help" || s == "-h") {
+      std::printf("%s", kUsage);
+      return 0;
+    }
+  Arguments a;
+  try {
+    a = parse(args);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo modes: %s\n\n%s", e.what(), kUsage);
+    return 1;
+  }
+  io::Scene scene;
+  study::ModesResult result;
+  try {
+    scene = io::loadScene(a.scene_path, a.overrides);
+    result = study::analyzeModes(scene, a.spec);
+  } catch (const study::NoSteadyState& e) {
+    std::fprintf(stderr, "tribo modes: no steady state: %s\n", e.what());
+    return kExitNoSteadyState;
+  } catch (const study::LinearizationFailure& e) {
+    std::fprintf(stderr, "tribo modes: %s\n", e.what());
+    return kExitEigenFailure;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo modes: %s\n", e.what());
+    return 2;
+  }
+  for (const auto& n : scene.notes) std::fprintf(stderr, "tribo modes: note: %s\n", n.c_str());
+  for (const auto& w : result.warnings)
+    std::fprintf(stderr, "tribo modes: warning: %s\n", w.c_str());
+  const std::filesystem::path out(a.out_dir);
+  try {
+    study::writeModesJson(out / "modes.json", scene, result);
+    study::writeModesCsv(out / "modes.csv", result);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo modes: %s\n", e.what());
+    return 4;
+  }
+  printTable(scene, result);
+  if (a.boundary) {
+    study::BoundarySpec& b = *a.boundary;
+    b.scene_path = a.scene_path;
+    b.overrides = a.overrides;
+    b.modes = a.spec;
+    study::BoundaryResult br;
+    try {
+      br = study::findBoundary(b);
+    } catch (const study::NoSteadyState& e) {
+      std::fprintf(stderr, "tribo modes: --boundary: no steady state: %s\n", e.what());
+      return kExitNoSteadyState;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tribo modes: --boundary: %s\n", e.what());
+      return 2;
+    }
+    try {
+      study::writeBoundaryJson(out / "boundary.json", b, br);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tribo modes: %s\n", e.what());
+      return 4;
+    }
+    std::printf(
+        "boundary         %s = %.10g (unstable %s; bracket [%.10g, %.10g], %d analyses; "
+        "%.6g Hz at onset)\n",
+        b.parameter.c_str(), br.critical, br.unstable_above ? "above" : "below", br.lo, br.hi,
+        br.analyses, br.frequency_unstable);
+  }
+  std::printf("results          %s\n", out.string().c_str());
+  return result.unstable_count > 0 ? kExitUnstable : 0;
+}
+
+}  // namespace tribo::app

@@ -1,0 +1,23 @@
+// `tribo modes SCENE.yaml --out DIR [--set NAME=VALUE ...] [--settle] [--boundary NAME=LO:HI]
+//  [--growth-tolerance X]`: will steady sliding squeal? Finds the scene's steady state,
+// linearizes about it and prints its modes (study/modes.hpp says how); writes
+// DIR/modes.json and DIR/modes.csv (study/modes_report.hpp) and, with --boundary, bisects
+// the parameter NAME over [LO, HI] for the value where the largest growth rate crosses zero
+// (study/stability_boundary.hpp) into DIR/boundary.json.
+// Exit status: 0 stable, 1 usage, 2 bad scene or parameter (also: stateful friction, nothing
+// dynamic, a --boundary bracket without a crossing), 4 output error, 8 unstable (some mode
+// grows), 9 no steady state found, 10 the linearization or the eigenproblem failed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tribo::app {
+
+inline constexpr int kExitUnstable = 8;
+inline constexpr int kExitNoSteadyState = 9;
+inline constexpr int kExitEigenFailure = 10;
+
+int modesCommand(const std::vector<std::string>& args);
+
+}  // namespace tribo::app

@@ -1,0 +1,53 @@
+// The linearized equations of motion about a state, by central finite differences of
+// Dynamics::evaluate in independent coordinates (study/reduced_coordinates.hpp):
+//   q'' = g(q, u),   K = dg/dq,   C = dg/du  at q = u = 0,
+//   column j of K ~ (g(h e_j, 0) - g(-h e_j, 0)) / (2 h)   (error O(h^2), rounding O(eps/h))
+// and the first-order system  y' = A y,  y = (q, u),  A = [[0, I], [K, C]].
+// Everything the evaluation contains is differentiated at once: springs, penalty contact
+// normal forces and their damping, the friction law's slope at the steady slip, gyroscopic
+// terms, joint elements and the constraint forces' geometric stiffness.
+// Steps (chooseSteps): positions and rotations h_q = min(1e-7, depth / 100) [m or rad] with
+// `depth` the shallowest contact at the state (the step stays inside the penalty regime);
+// velocities h_u = min(1e-6, v_stick / 100) [m/s or rad/s] with v_stick the smallest stick
+// speed of the laws in contact (the step stays on one branch of a regularized law). Each
+// column is computed again with 4 h: for a smooth function the two differ by about 15 times
+// the error of the first; a relative difference above `check_tolerance` is a warning that
+// names the coordinate (a kink, a contact opening or closing within the step).
+// Not here: stateful friction's internal states (not linearized; study/modes.cpp refuses
+// them), analytic derivatives, choosing the state (study/steady_state.hpp).
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "core/dynamics.hpp"
+#include "study/reduced_coordinates.hpp"
+
+namespace tribo::study {
+
+struct DifferenceSteps {
+  double position = 1e-7;  // [m or rad]
+  double velocity = 1e-6;  // [m/s or rad/s]
+};
+
+// Steps for the state `at` (see the header comment); evaluates it once.
+DifferenceSteps chooseSteps(Dynamics& dynamics, const State& at);
+
+struct Linearization {
+  Eigen::MatrixXd stiffness;        // K = dq''/dq
+  Eigen::MatrixXd damping;          // C = dq''/du (empty when not asked for)
+  double worst_disagreement = 0.0;  // largest relative difference of a column between h and 4 h
+  std::vector<std::string> warnings;
+  int evaluations = 0;
+};
+
+// K (and C when `velocities`) at `at`. With check_tolerance > 0 every column is checked
+// against the step 4 h.
+Linearization linearize(Dynamics& dynamics, const ReducedCoordinates& coords, const State& at,
+                        const DifferenceSteps& steps, bool velocities, double check_tolerance);
+
+// A = [[0, I], [K, C]].
+Eigen::MatrixXd firstOrderMatrix(const Linearization& lin);
+
+}  // namespace tribo::study

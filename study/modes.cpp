@@ -1,0 +1,102 @@
+#include "study/modes.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace tribo::study {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Mode makeMode(std::complex<double> lambda, const Eigen::VectorXcd& vector,
+              const ReducedCoordinates& coords, double growth_tolerance) {
+  Mode mode;
+  mode.eigenvalue = lambda;
+  mode.growth_rate = lambda.real();
+  mode.frequency = std::abs(lambda.imag()) / (2 * std::numbers::pi);
+  const double size = std::abs(lambda);
+  mode.damping_ratio = size > 0 ? -lambda.real() / size : 0.0;
+  mode.unstable = lambda.real() > growth_tolerance;
+  const Eigen::VectorXcd shape =
+      coords.basis().cast<std::complex<double>>() * vector.head(coords.size());
+  Eigen::Index big = 0;
+  const double largest = shape.cwiseAbs().maxCoeff(&big);
+  const std::complex<double> ref = largest > 0 ? shape(big) : 1.0;
+  std::vector<int> order;
+  for (int i = 0; i < coords.fullSize(); ++i) {
+    const std::complex<double> z = shape(i) / ref;
+    mode.shape.push_back({coords.fullName(i), largest > 0 ? std::abs(z) : 0.0,
+                          std::arg(z) * 180.0 / std::numbers::pi});
+    if (mode.shape.back().magnitude >= 0.1) order.push_back(i);
+  }
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return mode.shape[a].magnitude > mode.shape[b].magnitude; });
+  for (int i : order)
+    mode.dominant += (mode.dominant.empty() ? "" : " ") + mode.shape[i].coordinate;
+  return mode;
+}
+
+}  // namespace
+
+std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& coords,
+                          double growth_tolerance) {
+  if (!a.allFinite())
+    throw LinearizationFailure(
+        "the linearized system is not finite (a force is not differentiable here)");
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, true);
+  if (solver.info() != Eigen::Success)
+    throw LinearizationFailure(std::string("the eigenvalue problem did not converge (")
+                                   .append(std::to_string(a.rows()))
+                                   .append(" states)"));
+  const Eigen::VectorXcd values = solver.eigenvalues();
+  const Eigen::MatrixXcd vectors = solver.eigenvectors();
+  if (!values.allFinite()) throw LinearizationFailure("the eigenvalues are not finite");
+  std::vector<Mode> modes;
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    if (values(i).imag() < 0) continue;  // the conjugate of a pair reported once
+    modes.push_back(makeMode(values(i), vectors.col(i), coords, growth_tolerance));
+  }
+  std::stable_sort(modes.begin(), modes.end(),
+                   [](const Mode& x, const Mode& y) { return x.growth_rate > y.growth_rate; });
+  return modes;
+}
+
+ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
+  const Model& model = *scene.model;
+  for (const contact::Material& material : model.materials)
+    if (material.friction->stateful())
+      throw ModesError("friction law '" + std::string(material.friction->name()) +
+                       "' keeps per-contact state, which the linearization does not cover: "
+                       "use a memoryless law for the stability analysis");
+  if (model.dynamicBodyCount() == 0)
+    throw ModesError("the scene has no dynamic body: there is nothing to linearize");
+  ModesResult out;
+  Dynamics dynamics(scene.model);
+  auto start = std::chrono::steady_clock::now();
+  try {
+    out.steady = findSteadyState(dynamics, spec.steady);
+  } catch (const std::invalid_argument& e) {
+    throw ModesError(e.what());
+  }
+  out.steady_seconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const State& x = out.steady.state;
+  ReducedCoordinates coords(model, x);
+  out.coordinates = coords.size();
+  out.steps = chooseSteps(dynamics, x);
+  const Linearization lin = linearize(dynamics, coords, x, out.steps, true, spec.check_tolerance);
+  out.modes = modesOf(firstOrderMatrix(lin), coords, spec.growth_tolerance);
+  out.linearize_seconds = secondsSince(start);
+  out.worst_disagreement = lin.worst_disagreement;
+  out.warnings = lin.warnings;
+  out.evaluations = out.steady.evaluations + lin.evaluations + 1;
+  for (const Mode& m : out.modes) out.unstable_count += m.unstable ? 1 : 0;
+  return out;
+}
+
+}  // namespace tribo::study
