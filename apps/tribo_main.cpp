@@ -42,6 +42,8 @@ constexpr const char* kUsage =
     "(see tribo sweep --help)\n"
     "       tribo tradeoff SCENE.yaml [--out DIR] (integrators vs a converged reference; "
     "see tribo tradeoff --help)\n"
+    "       tribo modes SCENE.yaml --out DIR (stability of steady sliding; see tribo modes "
+    "--help)\n"
     "\n"
     "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
     "  --out   output folder (created if missing)\n"
