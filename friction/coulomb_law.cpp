@@ -23,17 +23,7 @@ double signOf(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : v * 0.0); }
 }  // namespace
 
 std::string_view toString(CoulombRegularization regularization) {
-  switch (regularization) {
-    case CoulombRegularization::kNone:
-      return "none";
-    case CoulombRegularization::kLinear:
-      return "linear";
-    case CoulombRegularization::kTanh:
-      return "tanh";
-    case CoulombRegularization::kHavsin:
-      return "havsin";
-  }
-  return "unknown";
+  return kCoulombRegularizationNames.view(regularization);
 }
 
 CoulombLaw::CoulombLaw(const CoulombParams& params)

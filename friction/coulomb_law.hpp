@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "friction/friction_law.hpp"
+#include "friction/name_table.hpp"
 #include "friction/smooth_step.hpp"
 
 namespace tribo::friction {
@@ -23,6 +24,12 @@ namespace tribo::friction {
 enum class CoulombRegularization { kNone, kLinear, kTanh, kHavsin };
 
 // Scene spelling of a regularization ("none", "linear", "tanh", "havsin").
+inline constexpr NameTable<CoulombRegularization, 4> kCoulombRegularizationNames{
+    "regularization",
+    {{{CoulombRegularization::kNone, "none"},
+      {CoulombRegularization::kLinear, "linear"},
+      {CoulombRegularization::kTanh, "tanh"},
+      {CoulombRegularization::kHavsin, "havsin"}}}};
 std::string_view toString(CoulombRegularization regularization);
 
 struct CoulombParams {

@@ -90,20 +90,12 @@ std::unique_ptr<const FrictionLaw> makeCoulomb(const LawSpec& spec) {
   params.v_eps = reader.optional("v_eps", params.v_eps);
   const std::string regularization = reader.option("regularization");
   if (!regularization.empty()) {
-    bool found = false;
-    for (const auto r : {CoulombRegularization::kNone, CoulombRegularization::kLinear,
-                         CoulombRegularization::kTanh, CoulombRegularization::kHavsin}) {
-      if (toString(r) == regularization) {
-        params.regularization = r;
-        found = true;
-      }
-    }
-    if (!found) {
-      throw FrictionParameterError(
-          "coulomb: regularization must be one of none, linear, tanh, "
-          "havsin (got '" +
-          regularization + "')");
-    }
+    const auto r = kCoulombRegularizationNames.find(regularization);
+    if (!r)
+      throw FrictionParameterError("coulomb: regularization must be one of " +
+                                   kCoulombRegularizationNames.names() + " (got '" +
+                                   regularization + "')");
+    params.regularization = *r;
   }
   return std::make_unique<CoulombLaw>(params);
 }

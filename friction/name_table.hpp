@@ -21,12 +21,14 @@ class NameTable {
   constexpr NameTable(std::string_view what, std::array<std::pair<Enum, std::string_view>, N> rows)
       : what_(what), rows_(rows) {}
 
-  // The name of `value`; "unknown" for a value the table lacks (a cast integer).
-  std::string name(Enum value) const {
+  // The name of `value`; "unknown" for a value the table lacks (a cast integer). The view
+  // refers to the string literals the table was made from.
+  constexpr std::string_view view(Enum value) const {
     for (const auto& [v, n] : rows_)
-      if (v == value) return std::string(n);
+      if (v == value) return n;
     return "unknown";
   }
+  std::string name(Enum value) const { return std::string(view(value)); }
   std::optional<Enum> find(std::string_view name) const {
     for (const auto& [v, n] : rows_)
       if (n == name) return v;
