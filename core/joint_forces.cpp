@@ -10,7 +10,28 @@ constexpr int kMaxFrictionIterations = 20;
 constexpr double kFrictionTolerance = 1e-12;
 }  // namespace
 
+double coordinateInertia(const Model& model, int joint) {
+  const Joint& j = model.joints[joint];
+  const bool angular = jointCoordinate(j).angular;
+  auto side = [&](BodyIndex b, const Vec3& anchor_local, const Mat3& axes_local) {
+    if (b.isWorld() || model.bodies[b.value].kind != BodyKind::kDynamic)
+      return std::numeric_limits<double>::infinity();
+    const Body& body = model.bodies[b.value];
+    if (!angular) return body.mass;
+    const Mat3 r = body.orientation.normalized().toRotationMatrix();
+    const Vec3 axis = r * axes_local.col(2);
+    const Vec3 offset = -r * anchor_local;  // centre of mass from the anchor
+    const double d2 = (offset - offset.dot(axis) * axis).squaredNorm();
+    return axis.dot(r * body.inertia * r.transpose() * axis) + body.mass * d2;
+  };
+  const double c = side(j.child, j.anchor_in_child, j.axes_in_child);
+  return std::isinf(c) ? side(j.parent, j.anchor_in_parent, j.axes_in_parent) : c;
+}
+
 JointForces::JointForces(const Model& model) : model_(model) {
+  const IntegratorType integrator = model.options.integrator;
+  const bool fixed_step =
+      integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
     const Joint& joint = model.joints[j];
     if (!hasScalarCoordinate(joint.type) || !joint.elements.hasForces()) continue;
@@ -18,6 +39,8 @@ JointForces::JointForces(const Model& model) : model_(model) {
     e.joint = j;
     e.coordinate = jointCoordinate(joint);
     e.elements = &joint.elements;
+    if (fixed_step && model.options.time_step > 0.0)
+      e.max_slope = coordinateInertia(model, j) / model.options.time_step;
     entries_.push_back(e);
     const auto& f = joint.elements.friction;
     if (f && f->load == JointFrictionLoad::kReaction)
@@ -40,7 +63,7 @@ double JointForces::frictionTorque(const Entry& e, double load) const {
   const JointFriction& f = *e.elements->friction;
   const double r = e.coordinate.angular ? f.radius : 1.0;
   const Vec3 slip(r * e.value.rate, 0.0, 0.0);
-  return r * friction::tangentialForce(*f.law, slip, load).x();
+  return capped(r * friction::tangentialForce(*f.law, slip, load).x(), e.value.rate, e.max_slope);
 }
 
 void JointForces::accumulate(const State& state, Workspace& ws) {
@@ -54,7 +77,7 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
     e.reaction_torque = 0.0;
     const JointElements& el = *e.elements;
     const double q = e.value.q, rate = e.value.rate;
-    double tau = el.effort - el.damping * rate;
+    double tau = el.effort + capped(-el.damping * rate, rate, e.max_slope);
     if (el.spring) {
       const double stretch = q - el.spring->reference;
       tau -= el.spring->stiffness * (e.coordinate.angular ? wrapAngle(stretch) : stretch);

@@ -15,9 +15,21 @@
 // pendulum's pin with mu r <= 0.015 m, 13 at mu r = 0.06 m; the map contracts by about mu r m d /
 // I_pivot. Reaction load: revolute |F| (radial and axial; moments are not turned into load);
 // prismatic |F - (F.z) z| (the part normal to the slide).
+// Dissipative elements at small speeds (fixed-step integrators): the damper's and the
+// friction's torque is held within c_max |q'|, c_max = I_q / h (I_q: the coordinate's inertia,
+// coordinateInertia below; h: the time step). The friction's regularized sign then widens from
+// v_eps to the speed N r h / I_q where that is larger; the torque never exceeds the law's,
+// always opposes the motion, and its slope c_max keeps h c/I_q <= 1, where RK4 and
+// semi-implicit Euler damp the motion without overshoot (RK4 is stable to 2.785): a damper or
+// friction can never add energy, however light the link (friction of 5 N m on a finger of
+// 1e-6 kg m^2 would otherwise need h < 6e-10 s at v_eps 1e-3). That is the implicit (backward
+// Euler) answer's scale: within one step a fully damped coordinate stops. bdf and dopri5 get
+// the elements as written (they choose their own steps).
 // Not here: the drive constraints (core/constraint_rows.hpp), contact friction.
 #pragma once
 
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "core/constraint_rows.hpp"
@@ -27,6 +39,14 @@
 #include "core/workspace.hpp"
 
 namespace tribo {
+
+// Inertia of joint `joint`'s coordinate at the model's initial pose [kg m^2 or kg]: revolute,
+// the child's moment about the joint axis (I_com about the axis plus m d^2, d the centre of
+// mass's distance from the axis); prismatic, the child's mass (the parent's when the child is
+// not dynamic). As for the derived limit gains (ModelBuilder), the parent counts as held:
+// bodies beyond the child only add inertia; a light parent free to turn about the same axis
+// would lower it (not counted).
+double coordinateInertia(const Model& model, int joint);
 
 class JointForces {
  public:
@@ -49,7 +69,13 @@ class JointForces {
     CoordinateValue value;         // at the last accumulate()
     Vec3 axis = Vec3::UnitZ();     // world joint axis at the last accumulate()
     double reaction_torque = 0.0;  // friction with the reaction load, last applied
+    double max_slope = std::numeric_limits<double>::infinity();  // c_max [N m s/rad or N s/m]
   };
+  // Holds a dissipative torque within c_max |q'| (see the header comment).
+  static double capped(double tau, double rate, double max_slope) {
+    const double bound = max_slope * std::abs(rate);
+    return std::clamp(tau, -bound, bound);
+  }
   void addGeneralized(const Entry& e, double tau, std::vector<Wrench>& out) const;
   double frictionTorque(const Entry& e, double load) const;
 
