@@ -29,8 +29,8 @@
 // (L: the smallest size of the body's geometries; V_b: the fastest kinematic body, surface
 // or prismatic drive, plus the fastest turning kinematic body's spin times its distance to
 // the body; W: the fastest spin of a kinematic body or revolute drive; I_max: the body's
-// largest principal moment). A body with no geometry and a driver that turns it (a flywheel
-// driven through a spring) thus has a floor on the scale of what the driver gives it. A
+// largest moment about its own axes). A body with no geometry and a driver that turns it (a
+// flywheel driven through a spring) thus has a floor on the scale of what the driver gives it. A
 // divergence grows exponentially past any such bound within a few steps, while
 // the energy error of a stable step (semi-implicit Euler near its limit, a coarse step
 // across the first touch of a contact) stays below it. The body named is the one whose

@@ -425,7 +425,8 @@ StabilityReport estimateStableStep(const Model& model) {
     consider(s.stiffness / m, s.damping / m, [&] { return "spring '" + s.name + "'"; });
   }
   // Joint elements on the coordinate's inertia (core/joint_forces.hpp): spring and limit
-  // stiffness, damping and the friction's sticking slope (both held to I_q / h at fixed steps).
+  // stiffness, damping and the friction's sticking slope (both held to I_q / (2 h) at fixed
+  // steps).
   const bool fixed_step =
       integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
   const double h = model.options.time_step;
@@ -435,8 +436,8 @@ StabilityReport estimateStableStep(const Model& model) {
     if (!hasScalarCoordinate(joint.type) || !el.hasForces()) continue;
     const double inertia = coordinateInertia(model, ji);
     if (!(inertia > 0.0) || std::isinf(inertia)) continue;
-    const double cap =
-        fixed_step && h > 0.0 ? inertia / h : std::numeric_limits<double>::infinity();
+    const double cap = fixed_step && h > 0.0 ? kDissipativeSlopeShare * inertia / h
+                                             : std::numeric_limits<double>::infinity();
     double slope = 0.0;  // friction: d tau / d q' at sticking [N m s/rad or N s/m]
     if (el.friction) {
       const JointFriction& f = *el.friction;

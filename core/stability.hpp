@@ -47,7 +47,7 @@
 //                  core/joint_forces.hpp, a light link's few 1e-6 kg m^2 included), k = the
 //                  spring's and the limit's stiffness, c = damping plus the friction's
 //                  sticking slope mu'(v) N r^2 (N: the constant load, or the child's weight
-//                  for a reaction load), c held to m / h at a fixed step as the joint forces
+//                  for a reaction load), c held to m / (2 h) at a fixed step as the joint forces
 //                  hold it (so it never bounds the step there; for dopri5 it does).
 // The limit is the largest h for which the integrator's one-step matrix for that system has
 // spectral radius <= 1 (undamped: RK4 h w < 2 sqrt(2), semi-implicit Euler h w < 2; real
