@@ -13,6 +13,7 @@
 #include "apps/tradeoff_command.hpp"
 #include "core/constraint_rows.hpp"
 #include "io/scene_loader.hpp"
+#include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
@@ -22,7 +23,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: tribo run SCENE.yaml --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
-    "       tribo info FILE.urdf [--package-path DIR ...]\n"
+    "                [--strict] [--verbose]\n"
+    "       tribo info FILE.urdf [--package-path DIR ...] [--strict] [--verbose]\n"
     "       tribo sweep SCENE.yaml --out DIR --grid NAME=START:STOP:COUNT | --list NAME=V1,... "
     "(see tribo sweep --help)\n"
     "       tribo tradeoff SCENE.yaml [--out DIR] (integrators vs a converged reference; "
@@ -31,7 +33,11 @@ constexpr const char* kUsage =
     "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
     "  --out   output folder (created if missing)\n"
     "  --set   override a value of the scene's parameters: section (repeatable)\n"
-    "  info    print a URDF robot's tree, masses, joint types and model checks\n";
+    "  info    print a URDF robot's tree, masses, joint types, model checks and what run "
+    "would do\n"
+    "  --strict   refuse URDF that urdfdom refuses (a joint without <limit>, an undeclared "
+    "world)\n"
+    "  --verbose  list every note (default: one line per kind, with a count)\n";
 
 int usage(const std::string& problem) {
   std::fprintf(stderr, "tribo: %s\n\n%s", problem.c_str(), kUsage);
@@ -86,9 +92,13 @@ int run(const std::vector<std::string>& args) {
   std::string out_dir;
   std::vector<std::string> overrides;
   std::vector<std::string> package_paths;
+  tribo::io::UrdfReadOptions read;
+  bool verbose = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--out" || a == "--set" || a == "--package-path") {
+    if (a == "--strict" || a == "--verbose") {
+      (a == "--strict" ? read.strict : verbose) = true;
+    } else if (a == "--out" || a == "--set" || a == "--package-path") {
       if (i + 1 >= args.size()) return usage(a + " needs a value");
       if (a == "--out")
         out_dir = args[++i];
@@ -109,16 +119,17 @@ int run(const std::vector<std::string>& args) {
 
   tribo::io::Scene scene;
   try {
-    const bool urdf = scene_path.size() > 5 && scene_path.substr(scene_path.size() - 5) == ".urdf";
-    scene = urdf ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides)
-                 : tribo::io::loadScene(scene_path, overrides, package_paths);
+    // A URDF by its content (an XML <robot> root), whatever the extension (.URDF, .xml).
+    scene = tribo::io::looksLikeUrdf(scene_path)
+                ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides, read)
+                : tribo::io::loadScene(scene_path, overrides, package_paths);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;
   }
+  tribo::app::printGrouped(stderr, "note", scene.notes, verbose);  // before the run: why
   const tribo::study::RunResult result = tribo::study::runScene(scene);
-  for (const auto& n : scene.notes) std::fprintf(stderr, "tribo: note: %s\n", n.c_str());
-  for (const auto& w : result.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
+  tribo::app::printGrouped(stderr, "warning", result.warnings, verbose);
   try {
     tribo::study::writeResults(out_dir, scene, result);
   } catch (const std::exception& e) {
