@@ -1,6 +1,7 @@
 // The `tribo` command: parse arguments, load the scene (io), run it (core via io), write
 // results, print a short summary. Exit status: 0 success, 1 usage error, 2 bad scene or
 // parameters, 3 the run diverged (partial results written and marked so), 4 output error.
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -119,8 +120,11 @@ int run(const std::vector<std::string>& args) {
 
   tribo::io::Scene scene;
   try {
-    // A URDF by its content (an XML <robot> root), whatever the extension (.URDF, .xml).
-    scene = tribo::io::looksLikeUrdf(scene_path)
+    // A URDF by its content (an XML <robot> root), whatever the extension (.URDF, .xml), or
+    // by its name when its content is not even XML (the reader then says what it is).
+    std::string ext = std::filesystem::path(scene_path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    scene = tribo::io::looksLikeUrdf(scene_path) || ext == ".urdf"
                 ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides, read)
                 : tribo::io::loadScene(scene_path, overrides, package_paths);
   } catch (const std::exception& e) {

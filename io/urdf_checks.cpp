@@ -50,13 +50,7 @@ void checkUrdfRobot(UrdfRobot& robot) {
       issue(S::kError, l.name, "inertia is not finite");
       continue;
     }
-    if (i.isZero(0.0)) {
-      issue(S::kWarning, l.name,
-            "has mass " + numberText(l.mass) +
-                " kg but no inertia: it gets the inertia of its collision geometry at that mass "
-                "(of a 5 cm sphere without geometry)");
-      continue;
-    }
+    if (i.isZero(0.0)) continue;  // given its geometry's inertia, noted by io/urdf_model.hpp
     const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
     if (p.minCoeff() <= 0.0) {
       issue(S::kWarning, l.name,

@@ -160,8 +160,10 @@ class Reader {
   // The first characters of a file, printable, for a message.
   static std::string opening(const std::string& text) {
     std::string out;
-    for (char c : text.substr(text.find_first_not_of(" \t\r\n"), 24))
+    for (char c : text.substr(text.find_first_not_of(" \t\r\n"), 24)) {
+      if (c == '\n' || c == '\r') break;
       out += (c >= 32 && c < 127) ? c : '?';
+    }
     return out;
   }
 
@@ -433,8 +435,8 @@ class Reader {
       l.collisions.push_back(u);
     }
     r.issues.push_back({UrdfIssue::Severity::kWarning, "link '" + l.name + "'",
-                        "collision elements read by Tribo: urdfdom dropped them (it does not "
-                        "know every geometry used here, e.g. <capsule>)"});
+                        "collision elements read by Tribo: urdfdom dropped some (a geometry it "
+                        "does not know, such as <capsule>, or a sphere of radius 0)"});
   }
 
   void readGazebo(UrdfRobot& r, const TiXmlElement* robot) {

@@ -271,6 +271,15 @@ TEST_F(TriboCli, UrdfByContentWithGroupedNotesAndInfoSayingWhatRunDoes) {
   std::istringstream all(verbose.output);
   while (std::getline(all, line)) listed += line.find("mimic ignored") != std::string::npos;
   EXPECT_EQ(listed, kMimics);
+  // A .urdf that is not XML is refused by the URDF reader's words, not the scene loader's.
+  const fs::path text = dir_ / "ROBOT.URDF";
+  std::ofstream(text) << "links: [a, b]\n";
+  const Result refused = runTribo("run " + text.string() + " --out " + (dir_ / "out2").string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(
+      refused.output.find("ROBOT.URDF:1: not an XML document: it starts with 'links: [a, b]'"),
+      std::string::npos)
+      << refused.output;
 }
 
 }  // namespace
