@@ -158,7 +158,7 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
       } else {
         builder.options().time_step = floor;
         why << "running at min_dt, which may diverge (use --set integrator=bdf, or stiffen the "
-               "link's inertia or soften that element)";
+               "link's mass or soften that element)";
       }
       notes.push_back(why.str());
     }

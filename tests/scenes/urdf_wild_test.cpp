@@ -404,5 +404,36 @@ TEST_F(UrdfWild, StepFarAboveTheLimitStillStops) {
   }
 }
 
+// The step floor: a light link on a very stiff contact (Gazebo kp) needs a step far below
+// min_dt. The automatic settings say so before the run, naming the element, and take bdf;
+// with rk4 asked for, the run goes at min_dt with the same explanation.
+TEST_F(UrdfWild, AStepBelowTheFloorIsExplainedAndTakesBdf) {
+  for (const double kp : {1e9, 1e11}) {
+    const double m = 0.001;
+    const std::string path = write(
+        "stiff.urdf", "<robot name=\"s\"><link name=\"pebble\">" + inertial(m, 1e-8, 1e-8, 1e-8) +
+                          "<collision><geometry><sphere radius=\"0.005\"/></geometry></collision>"
+                          "</link><gazebo reference=\"pebble\"><kp>" +
+                          num(kp) + "</kp></gazebo></robot>");
+    const io::Scene scene = io::sceneFromUrdf(path, {}, {});
+    EXPECT_EQ(scene.model->options.integrator, IntegratorType::kBdf);
+    bool explained = false;
+    for (const auto& n : scene.notes)
+      explained |= n.find("set by contact pair (ground, pebble_collision)") != std::string::npos &&
+                   n.find("running with bdf instead") != std::string::npos;
+    EXPECT_TRUE(explained);
+    const io::Scene forced = io::sceneFromUrdf(path, {}, {"integrator=rk4"});
+    EXPECT_EQ(forced.model->options.integrator, IntegratorType::kRk4);
+    EXPECT_DOUBLE_EQ(forced.model->options.time_step, 1e-5);
+    const double limit = estimateStableStep(*forced.model).limit.max_step;
+    // Critically damped (kp without kd): a double real eigenvalue -w, w = sqrt(4 k / m) on the
+    // estimate's four points, so the limit is RK4's real-axis bound z / w, z the real root of
+    // R(-z) = 1: z^3 - 4 z^2 + 12 z - 24 = 0 (Newton from 3).
+    double z = 3.0;
+    for (int i = 0; i < 50; ++i) z -= (((z - 4) * z + 12) * z - 24) / ((3 * z - 8) * z + 12);
+    EXPECT_NEAR(limit, z / std::sqrt(4 * kp / m), 1e-6 * limit);
+  }
+}
+
 }  // namespace
 }  // namespace tribo
