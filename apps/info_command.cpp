@@ -1,10 +1,13 @@
 #include "apps/info_command.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <map>
 
+#include "core/stability.hpp"
 #include "io/urdf_reader.hpp"
+#include "io/urdf_scene.hpp"
 
 namespace tribo::app {
 
@@ -33,13 +36,66 @@ void printTree(const io::UrdfRobot& r) {
   visit(r.root, 0, nullptr);
 }
 
+// A note's kind: its text with quoted names and numbers set aside.
+std::string kindOf(const std::string& line) {
+  std::string kind;
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '\'') {
+      quoted = !quoted;
+      if (quoted) kind += "'*'";
+      continue;
+    }
+    if (quoted) continue;
+    const bool digit = (c >= '0' && c <= '9') || ((c == '-' || c == '.') && i + 1 < line.size() &&
+                                                  line[i + 1] >= '0' && line[i + 1] <= '9');
+    if (digit) {
+      if (kind.empty() || kind.back() != '#') kind += '#';
+      continue;
+    }
+    kind += c;
+  }
+  return kind;
+}
+
 }  // namespace
+
+void printGrouped(std::FILE* out, const char* label, const std::vector<std::string>& lines,
+                  bool verbose) {
+  if (verbose) {
+    for (const auto& l : lines) std::fprintf(out, "tribo: %s: %s\n", label, l.c_str());
+    return;
+  }
+  std::vector<std::pair<std::string, int>> kinds;  // first line of each kind, count
+  std::map<std::string, std::size_t> index;
+  for (const auto& l : lines) {
+    const auto [it, fresh] = index.try_emplace(kindOf(l), kinds.size());
+    if (fresh)
+      kinds.emplace_back(l, 1);
+    else
+      ++kinds[it->second].second;
+  }
+  for (const auto& [first, count] : kinds) {
+    if (count == 1)
+      std::fprintf(out, "tribo: %s: %s\n", label, first.c_str());
+    else
+      std::fprintf(out, "tribo: %s: %s (and %d more like it; --verbose lists them)\n", label,
+                   first.c_str(), count - 1);
+  }
+}
 
 int runInfo(const std::vector<std::string>& args) {
   std::string file;
   std::vector<std::string> package_paths;
+  io::UrdfReadOptions read;
+  bool verbose = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--package-path") {
+    if (args[i] == "--strict") {
+      read.strict = true;
+    } else if (args[i] == "--verbose") {
+      verbose = true;
+    } else if (args[i] == "--package-path") {
       if (i + 1 >= args.size()) {
         std::fprintf(stderr, "tribo: --package-path needs a folder\n");
         return 1;
@@ -53,12 +109,13 @@ int runInfo(const std::vector<std::string>& args) {
     }
   }
   if (file.empty()) {
-    std::fprintf(stderr, "usage: tribo info FILE.urdf [--package-path DIR ...]\n");
+    std::fprintf(stderr,
+                 "usage: tribo info FILE.urdf [--package-path DIR ...] [--strict] [--verbose]\n");
     return 1;
   }
   io::UrdfRobot robot;
   try {
-    robot = io::readUrdf(file, io::PackagePaths::withEnvironment(package_paths));
+    robot = io::readUrdf(file, io::PackagePaths::withEnvironment(package_paths), read);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;
@@ -74,12 +131,39 @@ int runInfo(const std::vector<std::string>& args) {
               types.empty() ? "" : ")", robot.totalMass());
   std::printf("tree:\n");
   printTree(robot);
-  std::printf("checks: %s\n", robot.issues.empty() ? "no findings" : "");
+  int errors = 0;
+  for (const auto& i : robot.issues) errors += i.severity == io::UrdfIssue::Severity::kError;
+  std::printf("checks: %s\n", errors ? "" : "no errors");
   for (const auto& i : robot.issues)
-    std::printf("  %s: %s: %s\n",
-                i.severity == io::UrdfIssue::Severity::kError ? "error" : "warning",
-                i.where.c_str(), i.message.c_str());
-  return robot.hasErrors() ? 2 : 0;
+    if (i.severity == io::UrdfIssue::Severity::kError)
+      std::printf("  error: %s: %s\n", i.where.c_str(), i.message.c_str());
+  if (errors) return 2;
+  // The scene `tribo run FILE` would build, with its notes (the reader's included).
+  io::Scene scene;
+  try {
+    scene = io::sceneFromUrdf(file, package_paths, {}, read);
+  } catch (const std::exception& e) {
+    std::printf("run: refused: %s\n", e.what());
+    return 2;
+  }
+  const auto& o = scene.model->options;
+  const StabilityReport stability = estimateStableStep(*scene.model);
+  std::string k, points;
+  for (const auto& [name, value] : scene.parameters) {
+    if (name == "stiffness") k = value;
+    if (name == "support_points") points = value;
+  }
+  std::printf("run: %s, step %g s, contact stiffness %s N/m on %s support points\n",
+              integratorName(o.integrator).c_str(), o.time_step, k.c_str(), points.c_str());
+  if (std::isinf(stability.limit.max_step))
+    std::printf("stable step: no explicit limit\n");
+  else
+    std::printf("stable step: < %.4g s (%s)\n", stability.limit.max_step,
+                stability.limit.element.c_str());
+  std::fflush(stdout);
+  printGrouped(stdout, "note", scene.notes, verbose);
+  printGrouped(stdout, "note", stability.notes, verbose);
+  return 0;
 }
 
 }  // namespace tribo::app

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -24,6 +25,7 @@
 #include "apps/sweep_command.hpp"
 #include "apps/tradeoff_command.hpp"
 #include "io/scene_loader.hpp"
+#include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
 #include "study/dir_lock.hpp"
 #include "study/output_budget.hpp"
@@ -37,7 +39,8 @@ constexpr const char* kUsage =
     "usage: tribo run SCENE.yaml --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "                [--quiet | --progress] [--profile]\n"
     "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
-    "       tribo info FILE.urdf [--package-path DIR ...]\n"
+    "                [--strict] [--verbose]\n"
+    "       tribo info FILE.urdf [--package-path DIR ...] [--strict] [--verbose]\n"
     "       tribo sweep SCENE.yaml --out DIR --grid NAME=START:STOP:COUNT | --list NAME=V1,... "
     "(see tribo sweep --help)\n"
     "       tribo tradeoff SCENE.yaml [--out DIR] (integrators vs a converged reference; "
@@ -51,7 +54,11 @@ constexpr const char* kUsage =
     "  --progress  show the progress line of a long run even when stderr is not a terminal\n"
     "  --quiet     never show it\n"
     "  --profile   time each stage of the step and print the share of each\n"
-    "  info    print a URDF robot's tree, masses, joint types and model checks\n";
+    "  info    print a URDF robot's tree, masses, joint types, model checks and what run "
+    "would do\n"
+    "  --strict   refuse URDF that urdfdom refuses (a joint without <limit>, an undeclared "
+    "world)\n"
+    "  --verbose  list every note (default: one line per kind, with a count)\n";
 
 // Set by the first SIGINT or SIGTERM; the run stops at its next output row.
 std::atomic<bool> g_stop{false};
@@ -146,9 +153,13 @@ int run(const std::vector<std::string>& args) {
   std::vector<std::string> overrides;
   std::vector<std::string> package_paths;
   bool quiet = false, progress = false, profile = false;
+  tribo::io::UrdfReadOptions read;
+  bool verbose = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--quiet") {
+    if (a == "--strict" || a == "--verbose") {
+      (a == "--strict" ? read.strict : verbose) = true;
+    } else if (a == "--quiet") {
       quiet = true;
     } else if (a == "--progress") {
       progress = true;
@@ -176,13 +187,18 @@ int run(const std::vector<std::string>& args) {
 
   tribo::io::Scene scene;
   try {
-    const bool urdf = scene_path.size() > 5 && scene_path.substr(scene_path.size() - 5) == ".urdf";
-    scene = urdf ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides)
-                 : tribo::io::loadScene(scene_path, overrides, package_paths);
+    // A URDF by its content (an XML <robot> root), whatever the extension (.URDF, .xml), or
+    // by its name when its content is not even XML (the reader then says what it is).
+    std::string ext = std::filesystem::path(scene_path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    scene = tribo::io::looksLikeUrdf(scene_path) || ext == ".urdf"
+                ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides, read)
+                : tribo::io::loadScene(scene_path, overrides, package_paths);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;
   }
+  tribo::app::printGrouped(stderr, "note", scene.notes, verbose);  // before the run: why
   namespace study = tribo::study;
   const std::filesystem::path out(out_dir);
   try {
@@ -227,8 +243,7 @@ int run(const std::vector<std::string>& args) {
   }
   progress_line.finish();
   const study::RunResult& result = *run_result;
-  for (const auto& n : scene.notes) std::fprintf(stderr, "tribo: note: %s\n", n.c_str());
-  for (const auto& w : result.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
+  tribo::app::printGrouped(stderr, "warning", result.warnings, verbose);
   try {
     csv->commit();
     study::writeSummaryJson(out / "summary.json", scene, result);

@@ -27,6 +27,7 @@ double Shape::size() const {
     case ShapeType::kBox:
       return half_extents.minCoeff();
     case ShapeType::kSphere:
+      return radius > 0.0 ? radius : std::numeric_limits<double>::infinity();
     case ShapeType::kCapsule:
       return radius;
     case ShapeType::kCylinder:
@@ -39,6 +40,12 @@ double Shape::size() const {
       return std::numeric_limits<double>::infinity();
   }
   return 0.0;
+}
+
+double Shape::extent(const Eigen::Vector3d& n) const {
+  if (type == ShapeType::kHalfSpace || type == ShapeType::kTriangleMesh || isPoint())
+    return std::numeric_limits<double>::infinity();
+  return 0.5 * (support(n) + support(-n));
 }
 
 double Shape::support(const Eigen::Vector3d& d) const {
@@ -75,7 +82,8 @@ void Shape::validate() const {
         throw std::invalid_argument("box half extents must be > 0");
       return;
     case ShapeType::kSphere:
-      if (!positive(radius)) throw std::invalid_argument("sphere radius must be > 0");
+      if (!(std::isfinite(radius) && radius >= 0.0))
+        throw std::invalid_argument("sphere radius must be >= 0 (0: a contact point)");
       return;
     case ShapeType::kCylinder:
     case ShapeType::kCapsule:

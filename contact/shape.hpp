@@ -1,7 +1,9 @@
 // Collision shapes attached to bodies, described in the geometry's own frame.
 //
 //   box:           centred on the origin, half extents (hx, hy, hz) [m]
-//   sphere:        centred on the origin, radius r
+//   sphere:        centred on the origin, radius r; r = 0 is a contact point (a point of the
+//                  body that touches surfaces, as Gazebo, Drake and PyBullet treat a
+//                  zero-radius collision sphere: no volume, no inertia)
 //   cylinder:      axis z, centred, radius r, length 2 h (faces at z = -h and z = +h)
 //   capsule:       the segment z in [-h, h] swept by a sphere of radius r
 //   cone:          axis z, base disc of radius r at z = -h, apex at z = +h (FCL's convention)
@@ -75,10 +77,15 @@ struct Shape {
     return meshShape(ShapeType::kTriangleMesh, std::move(mesh));
   }
 
-  // Characteristic size [m]: the depth beyond which a contact has failed (the run is
-  // unstable). Smallest half dimension for solids; infinite for a half-space and for a
-  // triangle mesh (a surface has no thickness to measure against).
+  // Characteristic size [m]: the smallest half dimension for solids; infinite for a
+  // half-space, a triangle mesh (a surface has no thickness to measure against) and a point.
   double size() const;
+  // Half the shape's width along the unit direction n (geometry frame) [m]:
+  // (h(n) + h(-n)) / 2, the depth at which a contact along n has gone through the middle of
+  // the shape (a cylinder on its rim: its radius; on a face: half its length). Infinite for
+  // a half-space, a triangle mesh and a point.
+  double extent(const Eigen::Vector3d& n) const;
+  bool isPoint() const { return type == ShapeType::kSphere && radius == 0.0; }
   // The shape's points farthest along -n would be the first to touch a plane with outward
   // normal n: its support distance h(d) = max over the shape of d . x (geometry frame).
   double support(const Eigen::Vector3d& d) const;

@@ -72,12 +72,28 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
 
 EnergyGuard::EnergyGuard(const Model& model, double modified_step)
     : model_(&model), floor_(kFloor), modified_step_(modified_step) {
-  double speed = 0.0;
-  for (const Body& b : model.bodies)
-    if (b.kind == BodyKind::kKinematic)
+  // The motion sources impose: the fastest kinematic body or surface (linear), the fastest
+  // turning kinematic body and velocity of a joint drive (angular; drives of a prismatic
+  // joint count as linear).
+  double speed = 0.0, spin = 0.0;
+  for (const Body& b : model.bodies) {
+    if (b.kind == BodyKind::kKinematic) {
       speed = std::max({speed, b.velocity.norm(), b.surface_velocity.norm()});
-    else
+      spin = std::max(spin, b.angular_velocity.norm());
+    } else {
       speed = std::max(speed, b.surface_velocity.norm());
+    }
+  }
+  for (const Joint& j : model.joints) {
+    if (!j.elements.drive) continue;
+    const DriveFunction& f = j.elements.drive->function;
+    const double t = model.options.duration;
+    const double rate = j.elements.drive->mode == DriveMode::kPosition
+                            ? std::abs(f.slope) + std::abs(f.amplitude * f.frequency)
+                            : std::abs(f.constant) + std::abs(f.slope) * t + std::abs(f.amplitude);
+    (j.type == JointType::kPrismatic ? speed : spin) =
+        std::max(j.type == JointType::kPrismatic ? speed : spin, rate);
+  }
   std::vector<double> size(model.bodies.size(), 0.0);
   for (const Geometry& g : model.geometries) {
     const double half = g.shape.size();
@@ -86,9 +102,18 @@ EnergyGuard::EnergyGuard(const Model& model, double modified_step)
     s = s > 0.0 ? std::min(s, half) : half;
   }
   const double g = model.options.gravity.norm();
-  for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    if (model.bodies[b].kind == BodyKind::kDynamic)
-      floor_ += model.bodies[b].mass * (g * size[b] + 0.5 * speed * speed);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.kind != BodyKind::kDynamic) continue;
+    // A turning source drives a body at up to spin |x_b - x_K| through whatever links them.
+    double reach = 0.0;
+    for (const Body& k : model.bodies)
+      if (k.kind == BodyKind::kKinematic)
+        reach = std::max(reach, k.angular_velocity.norm() * (body.position - k.position).norm());
+    const double v = speed + reach;
+    floor_ += body.mass * (g * size[b] + 0.5 * v * v) +
+              0.5 * body.inertia.diagonal().maxCoeff() * spin * spin;
+  }
 }
 
 void EnergyGuard::markMinimum(double t, double net, const EnergyAccount& a) {

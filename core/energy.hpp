@@ -24,9 +24,14 @@
 // stability limit the plain energy of a stable step swings by a factor (2 + hw)/(2 - hw).
 // The guard stops the run when E_net has risen by more than the energy available since s,
 // i.e. more than doubling what the system had and received, plus a floor on the scale of the
-// scene, E_0 = sum over dynamic bodies m (|g| L + V^2 / 2) + 1e-9 J (L: the smallest size of
-// the body's geometries, the scale of the penetration guard; V: the fastest kinematic body or
-// surface). A divergence grows exponentially past any such bound within a few steps, while
+// scene and of the energy its sources move through it,
+//   E_0 = sum over dynamic bodies [m (|g| L + V_b^2 / 2) + I_max W^2 / 2] + 1e-9 J
+// (L: the smallest size of the body's geometries; V_b: the fastest kinematic body, surface
+// or prismatic drive, plus the fastest turning kinematic body's spin times its distance to
+// the body; W: the fastest spin of a kinematic body or revolute drive; I_max: the body's
+// largest moment about its own axes). A body with no geometry and a driver that turns it (a
+// flywheel driven through a spring) thus has a floor on the scale of what the driver gives it. A
+// divergence grows exponentially past any such bound within a few steps, while
 // the energy error of a stable step (semi-implicit Euler near its limit, a coarse step
 // across the first touch of a contact) stays below it. The body named is the one whose
 // kinetic plus gravitational energy rose most since s.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace tribo {
 
@@ -10,7 +11,55 @@ constexpr int kMaxFrictionIterations = 20;
 constexpr double kFrictionTolerance = 1e-12;
 }  // namespace
 
+double coordinateInertia(const Model& model, int joint) {
+  const Joint& j = model.joints[joint];
+  const bool angular = jointCoordinate(j).angular;
+  const auto dynamic = [&](BodyIndex b) {
+    return !b.isWorld() && model.bodies[b.value].kind == BodyKind::kDynamic;
+  };
+  // A body's inertia about (revolute) or along (prismatic) the world axis through the world
+  // point `anchor`.
+  auto about = [&](BodyIndex b, const Vec3& anchor, const Vec3& axis) {
+    const Body& body = model.bodies[b.value];
+    if (!angular) return body.mass;
+    const Mat3 r = body.orientation.normalized().toRotationMatrix();
+    const Vec3 offset = body.position - anchor;
+    const double d2 = (offset - offset.dot(axis) * axis).squaredNorm();
+    return axis.dot(r * body.inertia * r.transpose() * axis) + body.mass * d2;
+  };
+  auto pose = [&](BodyIndex b, const Vec3& local_point, const Vec3& local_axis) {
+    if (b.isWorld()) return std::pair<Vec3, Vec3>(local_point, local_axis);
+    const Body& body = model.bodies[b.value];
+    const Mat3 r = body.orientation.normalized().toRotationMatrix();
+    return std::pair<Vec3, Vec3>(body.position + r * local_point, r * local_axis);
+  };
+  const auto [anchor, axis] = pose(j.child, j.anchor_in_child, j.axes_in_child.col(2));
+  if (!dynamic(j.child)) {
+    if (!dynamic(j.parent)) return std::numeric_limits<double>::infinity();
+    return about(j.parent, anchor, axis);
+  }
+  const double c = about(j.child, anchor, axis);
+  if (!dynamic(j.parent)) return c;
+  // The parent gives way when it is free, or turns (slides) on a joint of its own along a
+  // parallel axis (a chain of fingers): then the pair's reduced inertia.
+  const Joint* below = nullptr;
+  for (const Joint& k : model.joints)
+    if (k.child == j.parent) below = &k;
+  double p = std::numeric_limits<double>::infinity();
+  if (!below) {
+    p = angular ? about(j.parent, model.bodies[j.parent.value].position, axis)
+                : model.bodies[j.parent.value].mass;
+  } else if (below->type == j.type) {
+    const auto [a2, axis2] = pose(j.parent, below->anchor_in_child, below->axes_in_child.col(2));
+    if (std::abs(axis2.dot(axis)) > 0.99) p = about(j.parent, a2, axis2);
+  }
+  return std::isinf(p) ? c : p * c / (p + c);
+}
+
 JointForces::JointForces(const Model& model) : model_(model) {
+  const IntegratorType integrator = model.options.integrator;
+  const bool fixed_step =
+      integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
     const Joint& joint = model.joints[j];
     if (!hasScalarCoordinate(joint.type) || !joint.elements.hasForces()) continue;
@@ -18,6 +67,8 @@ JointForces::JointForces(const Model& model) : model_(model) {
     e.joint = j;
     e.coordinate = jointCoordinate(joint);
     e.elements = &joint.elements;
+    if (fixed_step && model.options.time_step > 0.0)
+      e.max_slope = kDissipativeSlopeShare * coordinateInertia(model, j) / model.options.time_step;
     entries_.push_back(e);
     const auto& f = joint.elements.friction;
     if (f && f->load == JointFrictionLoad::kReaction)
@@ -40,7 +91,9 @@ double JointForces::frictionTorque(const Entry& e, double load) const {
   const JointFriction& f = *e.elements->friction;
   const double r = e.coordinate.angular ? f.radius : 1.0;
   const Vec3 slip(r * e.value.rate, 0.0, 0.0);
-  return r * friction::tangentialForce(*f.law, slip, load).x();
+  // Damping and friction share one slope budget (core/joint_forces.hpp).
+  const double budget = e.max_slope - std::min(e.elements->damping, e.max_slope);
+  return capped(r * friction::tangentialForce(*f.law, slip, load).x(), e.value.rate, budget);
 }
 
 void JointForces::accumulate(const State& state, Workspace& ws) {
@@ -54,7 +107,7 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
     e.reaction_torque = 0.0;
     const JointElements& el = *e.elements;
     const double q = e.value.q, rate = e.value.rate;
-    double tau = el.effort - el.damping * rate;
+    double tau = el.effort + capped(-el.damping * rate, rate, e.max_slope);
     if (el.spring) {
       const double stretch = q - el.spring->reference;
       tau -= el.spring->stiffness * (e.coordinate.angular ? wrapAngle(stretch) : stretch);

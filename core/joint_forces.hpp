@@ -15,9 +15,23 @@
 // pendulum's pin with mu r <= 0.015 m, 13 at mu r = 0.06 m; the map contracts by about mu r m d /
 // I_pivot. Reaction load: revolute |F| (radial and axial; moments are not turned into load);
 // prismatic |F - (F.z) z| (the part normal to the slide).
-// Not here: the drive constraints (core/constraint_rows.hpp), contact friction.
+// Dissipative elements at small speeds (fixed-step integrators): the damper's torque and the
+// friction's together are held within c_max |q'| (the damper first, the friction within what
+// it leaves), c_max = I_q / (2 h) (I_q: the coordinate's
+// inertia, coordinateInertia below; h: the time step; the 1/2 for a chain of light links,
+// whose coupled dampers reach twice one joint's rate). The friction's regularized sign then
+// widens from v_eps to the speed 2 N r h / I_q where that is larger; the torque never exceeds
+// the law's, always opposes the motion, and its slope keeps h c / I_q <= 1 for the chain,
+// where RK4 and semi-implicit Euler damp the motion without overshoot (RK4 is stable to
+// 2.785): a damper or friction can never add energy, however light the link (friction of 5 N m on a
+// finger of 1e-6 kg m^2 would otherwise need h < 6e-10 s at v_eps 1e-3). That is the implicit
+// (backward Euler) answer's scale: within one step a fully damped coordinate stops. bdf and dopri5
+// get the elements as written (they choose their own steps). Not here: the drive constraints
+// (core/constraint_rows.hpp), contact friction.
 #pragma once
 
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "core/constraint_rows.hpp"
@@ -27,6 +41,17 @@
 #include "core/workspace.hpp"
 
 namespace tribo {
+
+// Inertia of joint `joint`'s coordinate at the model's initial pose [kg m^2 or kg]: revolute,
+// the child's moment about the joint axis (I_com about the axis plus m d^2, d the centre of
+// mass's distance from the axis); prismatic, the child's mass. The parent counts as held
+// (bodies beyond the child only add inertia) unless it gives way about the same axis: a
+// free parent, or one on a joint of the same type along a parallel axis (a chain of light
+// fingers), makes it the pair's reduced inertia I_p I_c / (I_p + I_c).
+double coordinateInertia(const Model& model, int joint);
+
+// c_max = kDissipativeSlopeShare I_q / h (see above).
+constexpr double kDissipativeSlopeShare = 0.5;
 
 class JointForces {
  public:
@@ -49,7 +74,13 @@ class JointForces {
     CoordinateValue value;         // at the last accumulate()
     Vec3 axis = Vec3::UnitZ();     // world joint axis at the last accumulate()
     double reaction_torque = 0.0;  // friction with the reaction load, last applied
+    double max_slope = std::numeric_limits<double>::infinity();  // c_max [N m s/rad or N s/m]
   };
+  // Holds a dissipative torque within c_max |q'| (see the header comment).
+  static double capped(double tau, double rate, double max_slope) {
+    const double bound = max_slope * std::abs(rate);
+    return std::clamp(tau, -bound, bound);
+  }
   void addGeneralized(const Entry& e, double tau, std::vector<Wrench>& out) const;
   double frictionTorque(const Entry& e, double load) const;
 

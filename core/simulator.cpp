@@ -114,17 +114,22 @@ StepStatus Simulator::check() {
   const Workspace& ws = current();
   for (const auto& c : ws.contacts) {
     const ContactPair& pair = m.contact_pairs[c.point.pair];
+    // Deeper than the geometry's half width along the normal: a warning (recorded here,
+    // worded after the run), not a stop; a contact that is failing shows as energy rising.
     for (int g : {pair.geometry_a, pair.geometry_b}) {
-      const double size = m.geometries[g].shape.size();
-      if (c.point.depth > size) {
-        const BodyIndex b = m.geometries[g].body;
-        const std::string body = b.isWorld() ? "world" : m.bodies[b.value].name;
-        std::ostringstream s;
-        s << "body '" << body << "' penetration " << c.point.depth << " m into geometry '"
-          << m.geometries[g].name << "' exceeds its size " << size
-          << " m (contact too soft or step too large)";
-        return failed(body, "penetration", s.str());
+      const Geometry& geometry = m.geometries[g];
+      const Mat3 r = geometry.body.isWorld()
+                         ? geometry.local_pose.linear()
+                         : Mat3(ws.rotation[geometry.body.value] * geometry.local_pose.linear());
+      const double extent = geometry.shape.extent(r.transpose() * c.point.normal);
+      if (c.point.depth > extent && c.point.depth / extent > stats_.deepest_ratio) {
+        if (stats_.deep_penetrations == 0) stats_.first_deep_time = state_.time;
+        stats_.deepest_ratio = c.point.depth / extent;
+        stats_.deepest_geometry = g;
+        stats_.deepest_depth = c.point.depth;
+        stats_.deepest_extent = extent;
       }
+      if (c.point.depth > extent) ++stats_.deep_penetrations;
     }
     if (!std::isfinite(c.normal_force) || !c.friction_force.allFinite()) {
       const BodyIndex b = m.geometries[pair.geometry_b].body;
@@ -141,6 +146,11 @@ StepStatus Simulator::check() {
       << "less the work of sources rose by " << energy.rise << " J since t = " << energy.since
       << " s, more than the " << energy.available
       << " J the system had and received (step too large for the stiffest element?)";
+    if (stats_.deep_penetrations > 0) {
+      const Geometry& g = m.geometries[stats_.deepest_geometry];
+      s << "; geometry '" << g.name << "' penetrated " << stats_.deepest_depth << " m, deeper "
+        << "than its half width " << stats_.deepest_extent << " m along the contact normal";
+    }
     return failed(energy.body, "energy", s.str());
   }
   if (!ws.joint_friction_converged && stats_.joint_friction_unconverged++ == 0)

@@ -5,8 +5,13 @@
 // divergence checks -> advance friction states. The checks, in order:
 //   the integrator's own failure (too much work, error test, non-finite derivative);
 //   non-finite position, orientation, velocity or angular velocity of a body;
-//   a contact penetrating deeper than its geometry's size, or a non-finite contact force;
+//   a non-finite contact force;
 //   energy rising without a source (core/energy.hpp).
+// A contact deeper than its geometry's half width along the contact normal
+// (contact::Shape::extent: a wheel on its rim, its radius) is not a stop by itself: a small
+// sensor sphere on a heavy body may be pushed through while the run is right. It is
+// counted in StepStats (the deepest, by its ratio to that width) for a warning after the run,
+// and named in the message when the energy guard stops the run.
 // A step returns a status; it never throws and never lets a NaN through: on divergence the
 // state stays at the last good step and the status names the step, time, body and quantity.
 // With profiling on (setProfiling), StepStats::profile holds the time per stage of the step
@@ -52,6 +57,14 @@ struct StepStats {
   // Steps whose state's joint friction (reaction load) did not settle within the iteration
   // cap (core/joint_forces.hpp), and the time of the first.
   long joint_friction_unconverged = 0;
+  // Contact points deeper than their geometry's half width along the normal (point-steps),
+  // the time of the first, and the deepest relative to that width.
+  long deep_penetrations = 0;
+  double first_deep_time = std::numeric_limits<double>::quiet_NaN();         // [s]
+  double deepest_ratio = 0.0;                                                // depth / half width
+  int deepest_geometry = -1;                                                 // geometry index
+  double deepest_depth = 0.0;                                                // [m]
+  double deepest_extent = 0.0;                                               // [m]
   double first_unconverged_time = std::numeric_limits<double>::quiet_NaN();  // [s]
   // Time per stage since Simulator::setProfiling(true); all zero while profiling is off.
   // With profiling on from the start, profile.evaluations == evaluations.

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/constraint_rows.hpp"
+#include "core/joint_forces.hpp"
 
 namespace tribo {
 
@@ -422,6 +423,51 @@ StabilityReport estimateStableStep(const Model& model) {
   for (const SpringDamper& s : model.springs) {
     const double m = reducedMass(model, s.body_a, s.body_b);
     consider(s.stiffness / m, s.damping / m, [&] { return "spring '" + s.name + "'"; });
+  }
+  // Joint elements on the coordinate's inertia (core/joint_forces.hpp): spring and limit
+  // stiffness, damping and the friction's sticking slope (both held to I_q / (2 h) at fixed
+  // steps).
+  const bool fixed_step =
+      integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
+  const double h = model.options.time_step;
+  for (int ji = 0; ji < static_cast<int>(model.joints.size()); ++ji) {
+    const Joint& joint = model.joints[ji];
+    const JointElements& el = joint.elements;
+    if (!hasScalarCoordinate(joint.type) || !el.hasForces()) continue;
+    const double inertia = coordinateInertia(model, ji);
+    if (!(inertia > 0.0) || std::isinf(inertia)) continue;
+    const double cap = fixed_step && h > 0.0 ? kDissipativeSlopeShare * inertia / h
+                                             : std::numeric_limits<double>::infinity();
+    double slope = 0.0;  // friction: d tau / d q' at sticking [N m s/rad or N s/m]
+    if (el.friction) {
+      const JointFriction& f = *el.friction;
+      const double r = isAngular(joint.type) ? f.radius : 1.0;
+      double load = f.load == JointFrictionLoad::kConstant ? f.normal_force : 0.0;
+      if (f.load == JointFrictionLoad::kReaction) {
+        // The reaction carries at least the child's weight.
+        load = model.bodies[joint.child.value].mass * g;
+      }
+      double mu_slope = f.law->slope(0.0);
+      const double stick = f.law->stickSpeed();
+      for (int i = 1; i <= kSlopeSamples; ++i)
+        mu_slope = std::max(mu_slope, f.law->slope(r * stick * i / kSlopeSamples));
+      if (std::isfinite(mu_slope)) slope = mu_slope * load * r * r;
+    }
+    const double damping = std::min(el.damping + slope, cap);
+    auto who = [&](const char* what) {
+      std::ostringstream e;
+      e << "joint '" << joint.name << "' " << what << " on body '"
+        << model.bodies[joint.child.value].name << "' (coordinate inertia " << inertia << ")";
+      return e.str();
+    };
+    if (el.spring)
+      consider(el.spring->stiffness / inertia, damping / inertia, [&] { return who("spring"); });
+    if (el.limit && el.limit->stiffness > 0.0)
+      consider(el.limit->stiffness / inertia, el.limit->damping / inertia,
+               [&] { return who("limit"); });
+    if (damping > 0.0)
+      consider(0.0, damping / inertia,
+               [&] { return who(el.friction ? "damping and friction" : "damping"); });
   }
   return report;
 }

@@ -42,7 +42,13 @@
 //   friction:      c/m = g mu'(v) (the sticking slope of the law under the body's weight), at
 //                  the steepest of 16 samples over [0, stick speed]; for a law whose slope is
 //                  unbounded at zero slip (roh_yoo with beta < 1) the slope at the stick speed,
-//                  so that at the limit the numerical chatter stays below the stick speed.
+//                  so that at the limit the numerical chatter stays below the stick speed;
+//   joint elements (revolute, prismatic): m = the coordinate's inertia (coordinateInertia in
+//                  core/joint_forces.hpp, a light link's few 1e-6 kg m^2 included), k = the
+//                  spring's and the limit's stiffness, c = damping plus the friction's
+//                  sticking slope mu'(v) N r^2 (N: the constant load, or the child's weight
+//                  for a reaction load), c held to m / (2 h) at a fixed step as the joint forces
+//                  hold it (so it never bounds the step there; for dopri5 it does).
 // The limit is the largest h for which the integrator's one-step matrix for that system has
 // spectral radius <= 1 (undamped: RK4 h w < 2 sqrt(2), semi-implicit Euler h w < 2; real
 // axis: RK4 2.785, Dormand-Prince 5(4) 3.307). For dopri5 it bounds the internal steps the

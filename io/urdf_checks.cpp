@@ -14,6 +14,24 @@ void checkUrdfRobot(UrdfRobot& robot) {
   };
   using S = UrdfIssue::Severity;
   for (const UrdfLink& l : robot.links) {
+    for (const UrdfCollision& c : l.collisions) {
+      auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+      using K = UrdfCollision::Kind;
+      if (c.kind == K::kSphere && c.radius == 0.0) {
+        issue(S::kNote, l.name,
+              "collision sphere of radius 0 at (" + numberText(c.origin.translation().x()) + ", " +
+                  numberText(c.origin.translation().y()) + ", " +
+                  numberText(c.origin.translation().z()) + "): a contact point");
+      } else if (c.kind == K::kBox && !(c.size.allFinite() && c.size.minCoeff() > 0.0)) {
+        issue(S::kError, l.name, "collision box size must be > 0");
+      } else if (c.kind != K::kBox && c.kind != K::kMesh && !positive(c.radius)) {
+        issue(S::kError, l.name,
+              "collision radius must be > 0 (got " + numberText(c.radius) +
+                  (c.kind == K::kSphere ? "; 0 makes a contact point)" : ")"));
+      } else if ((c.kind == K::kCylinder || c.kind == K::kCapsule) && !positive(c.length)) {
+        issue(S::kError, l.name, "collision length must be > 0 (got " + numberText(c.length) + ")");
+      }
+    }
     if (!l.has_inertial) {
       if (!l.collisions.empty())
         issue(S::kWarning, l.name, "has collision geometry but no <inertial>: it is massless");
@@ -32,10 +50,7 @@ void checkUrdfRobot(UrdfRobot& robot) {
       issue(S::kError, l.name, "inertia is not finite");
       continue;
     }
-    if (i.isZero(0.0)) {
-      issue(S::kWarning, l.name, "has mass " + numberText(l.mass) + " kg but zero inertia");
-      continue;
-    }
+    if (i.isZero(0.0)) continue;  // given its geometry's inertia, noted by io/urdf_model.hpp
     const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
     if (p.minCoeff() <= 0.0) {
       issue(S::kWarning, l.name,

@@ -1,8 +1,11 @@
 // Checks on a read URDF robot that decide whether it can be simulated meaningfully:
-//   errors:   negative or non-finite mass, a collision mesh that cannot be found;
+//   errors:   negative or non-finite mass, a collision mesh that cannot be found, a
+//             collision shape without positive dimensions (a sphere of radius 0 is a note:
+//             a contact point);
 //   warnings: zero mass, inertia not positive definite or violating the triangle
-//             inequality (I1 + I2 >= I3 for the principal moments), positive mass with zero
-//             inertia, a link without <inertial> that carries collision geometry.
+//             inequality (I1 + I2 >= I3 for the principal moments), a link without
+//             <inertial> that carries collision geometry. (Positive mass with no inertia is
+//             not a finding here: io/urdf_model.hpp gives it its geometry's inertia, noted.)
 // Appends to robot.issues. Not here: parsing, tree structure (urdfdom rejects bad trees).
 #pragma once
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "contact/shape_inertia.hpp"
 #include "core/number_text.hpp"
 #include "friction/friction_law.hpp"
 #include "io/mesh_loader.hpp"
@@ -47,6 +48,56 @@ contact::Shape shapeOf(const UrdfCollision& c, const std::string& link) {
   throw std::invalid_argument("link '" + link + "': unsupported collision geometry");
 }
 
+// The inertia (about the centre of mass, inertial frame) of a link that has a mass and no
+// inertia: its collision solids sharing the mass by volume (a mesh that is not a closed solid
+// by its bounding box), moved to the centre of mass with the parallel-axis theorem; without a
+// solid, a sphere of that mass at the density of water. Sets `what` to say which.
+Eigen::Matrix3d inertiaFromGeometry(const UrdfLink& l, std::string& what) {
+  struct Part {
+    contact::MassProperties unit;  // for unit mass
+    Eigen::Isometry3d pose;        // geometry frame in the link frame
+  };
+  std::vector<Part> parts;
+  double volume = 0.0;
+  for (const UrdfCollision& c : l.collisions) {
+    contact::Shape shape = shapeOf(c, l.name);
+    if (shape.isPoint()) continue;
+    contact::MassProperties unit;
+    try {
+      unit = contact::solidMassProperties(shape, 1.0);
+    } catch (const std::invalid_argument&) {  // an open mesh: its bounding box
+      Eigen::Vector3d lo, hi;
+      for (int i = 0; i < 3; ++i) {
+        hi(i) = shape.support(Eigen::Vector3d::Unit(i));
+        lo(i) = -shape.support(-Eigen::Vector3d::Unit(i));
+      }
+      const contact::Shape box = contact::Shape::box(0.5 * (hi - lo));
+      unit = contact::solidMassProperties(box, 1.0);
+      unit.centroid = 0.5 * (hi + lo);
+    }
+    if (!(unit.volume > 0.0)) continue;
+    volume += unit.volume;
+    parts.push_back({unit, c.origin});
+  }
+  const Eigen::Vector3d com = l.inertial_origin.translation();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+  if (parts.empty()) {
+    const double radius = std::cbrt(3.0 * l.mass / (4.0 * M_PI * 1000.0));
+    what = "a sphere of that mass at the density of water (radius " + numberText(radius) + " m)";
+    return Eigen::Matrix3d::Identity() * (0.4 * l.mass * radius * radius);
+  }
+  for (const Part& p : parts) {
+    const double m = l.mass * p.unit.volume / volume;
+    const Eigen::Matrix3d r = p.pose.linear();
+    const Eigen::Vector3d d = p.pose * p.unit.centroid - com;
+    inertia += m * (r * p.unit.inertia * r.transpose()) +
+               m * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  }
+  what = "its collision geometry at that mass";
+  const Eigen::Matrix3d in = l.inertial_origin.linear();
+  return in.transpose() * inertia * in;
+}
+
 JointType jointTypeOf(const UrdfJoint& j) {
   if (j.type == "revolute" || j.type == "continuous") return JointType::kRevolute;
   if (j.type == "prismatic") return JointType::kPrismatic;
@@ -56,14 +107,27 @@ JointType jointTypeOf(const UrdfJoint& j) {
 
 }  // namespace
 
-UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& robot,
+UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& read,
                              const UrdfPlacement& placement) {
-  if (robot.hasErrors()) {
-    for (const auto& i : robot.issues)
+  if (read.hasErrors()) {
+    for (const auto& i : read.issues)
       if (i.severity == UrdfIssue::Severity::kError)
-        throw std::invalid_argument(robot.path + ": " + i.where + ": " + i.message);
+        throw std::invalid_argument(read.path + ": " + i.where + ": " + i.message);
   }
   UrdfModelResult result;
+  // A link with a mass and no inertia gets one from its geometry (never a silently tiny one).
+  UrdfRobot robot = read;
+  for (UrdfLink& l : robot.links) {
+    if (!l.has_inertial || !(l.mass > 0.0) || !l.inertia.isZero(0.0)) continue;
+    std::string what;
+    l.inertia = inertiaFromGeometry(l, what);
+    const Eigen::Vector3d p =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(l.inertia).eigenvalues();
+    result.notes.push_back("link '" + l.name + "' has mass " + numberText(l.mass) +
+                           " kg and no inertia: given the inertia of " + what +
+                           " (principal moments " + numberText(p(0)) + ", " + numberText(p(1)) +
+                           ", " + numberText(p(2)) + " kg m^2)");
+  }
   // Joints whose range excludes 0 start at the nearest limit unless a position is given.
   std::map<std::string, double> positions = placement.joint_positions;
   for (const auto& j : robot.joints) {

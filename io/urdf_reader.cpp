@@ -94,25 +94,41 @@ struct XmlIndex {
 
 class Reader {
  public:
-  Reader(const std::string& path, const PackagePaths& packages)
-      : path_(path), packages_(packages) {}
+  Reader(const std::string& path, const PackagePaths& packages, const UrdfReadOptions& options)
+      : path_(path), packages_(packages), options_(options) {}
 
   UrdfRobot read() {
     std::ifstream in(path_);
     if (!in) throw UrdfError("cannot open URDF file '" + path_ + "'");
     std::stringstream buffer;
     buffer << in.rdbuf();
-    const std::string xml = buffer.str();
+    const std::string text = buffer.str();
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+      throw UrdfError(at(0) + "the file is empty (expected a <robot> XML document)");
 
     TiXmlDocument doc;
-    doc.Parse(xml.c_str());
+    doc.Parse(text.c_str());
+    if (doc.Error() && doc.ErrorId() == TiXmlBase::TIXML_ERROR_DOCUMENT_EMPTY)
+      // TinyXML's words for "no element found": the text does not start with '<'.
+      throw UrdfError(at(1) + "not an XML document: it starts with '" + opening(text) +
+                      "' (expected a <robot> XML document)");
     if (doc.Error())
       throw UrdfError(at(doc.ErrorRow()) + "malformed XML: " + doc.ErrorDesc() + " (column " +
                       std::to_string(doc.ErrorCol()) + ")");
-    const TiXmlElement* robot = doc.RootElement();
+    TiXmlElement* robot = doc.RootElement();
     if (!robot || std::string(robot->Value()) != "robot")
-      throw UrdfError(at(robot ? robot->Row() : 0) + "expected a <robot> root element");
+      throw UrdfError(at(robot ? robot->Row() : 0) + "expected a <robot> root element, found <" +
+                      (robot ? robot->Value() : "") + ">");
+    std::vector<UrdfIssue> repairs;
+    std::set<std::string> unlimited;
+    if (!options_.strict) repair(robot, repairs, unlimited);
     const XmlIndex index = indexAndCheck(robot);
+    std::string xml = text;
+    if (!repairs.empty()) {
+      TiXmlPrinter printer;
+      doc.Accept(&printer);
+      xml = printer.CStr();
+    }
 
     std::vector<std::string> messages;
     const urdf::ModelInterfaceSharedPtr model = parseCollecting(xml, messages);
@@ -129,7 +145,10 @@ class Reader {
     if (!root) throw UrdfError(at(0) + "no root link");
     r.root = root->name;
     addLink(r, root, index);
+    for (auto& j : r.joints)
+      if (unlimited.count(j.name)) j.has_limits = false;
     readGazebo(r, robot);
+    r.issues.insert(r.issues.begin(), repairs.begin(), repairs.end());
     checkUrdfRobot(r);
     return r;
   }
@@ -141,6 +160,61 @@ class Reader {
     if (line > 0) s << ':' << line;
     s << ": ";
     return s.str();
+  }
+
+  // The first characters of a file, printable, for a message.
+  static std::string opening(const std::string& text) {
+    std::string out;
+    for (char c : text.substr(text.find_first_not_of(" \t\r\n"), 24)) {
+      if (c == '\n' || c == '\r') break;
+      out += (c >= 32 && c < 127) ? c : '?';
+    }
+    return out;
+  }
+
+  // What other tools accept and urdfdom refuses, repaired in the document before urdfdom
+  // parses it: a revolute or prismatic joint without <limit> gets a placeholder (the joint is
+  // then read as unlimited), and an undeclared parent link named `world` is declared (a
+  // massless root: the world frame).
+  void repair(TiXmlElement* robot, std::vector<UrdfIssue>& repairs,
+              std::set<std::string>& unlimited) const {
+    std::set<std::string> links;
+    for (const TiXmlElement* e = robot->FirstChildElement("link"); e;
+         e = e->NextSiblingElement("link"))
+      if (e->Attribute("name")) links.insert(e->Attribute("name"));
+    bool world_used = false;
+    for (TiXmlElement* e = robot->FirstChildElement("joint"); e;
+         e = e->NextSiblingElement("joint")) {
+      const char* name = e->Attribute("name");
+      const char* type = e->Attribute("type");
+      if (!name || !type) continue;
+      const std::string t = type;
+      if ((t == "revolute" || t == "prismatic") && !e->FirstChildElement("limit")) {
+        TiXmlElement limit("limit");
+        for (const char* key : {"lower", "upper", "effort", "velocity"})
+          limit.SetAttribute(key, "0");
+        e->InsertEndChild(limit);
+        unlimited.insert(name);
+        repairs.push_back({UrdfIssue::Severity::kNote, "joint '" + std::string(name) + "'",
+                           "line " + std::to_string(e->Row()) + ": " + t +
+                               " joint without <limit>: loaded as unlimited (--strict refuses "
+                               "it, as urdfdom does)"});
+      }
+      const TiXmlElement* parent = e->FirstChildElement("parent");
+      const char* link = parent ? parent->Attribute("link") : nullptr;
+      if (link && std::string(link) == "world" && !links.count("world") && !world_used) {
+        world_used = true;
+        repairs.push_back({UrdfIssue::Severity::kNote, "link 'world'",
+                           "line " + std::to_string(parent->Row()) +
+                               ": parent 'world' is not declared: taken as the world frame "
+                               "(--strict refuses it, as urdfdom does)"});
+      }
+    }
+    if (world_used) {
+      TiXmlElement world("link");
+      world.SetAttribute("name", "world");
+      robot->InsertEndChild(world);
+    }
   }
 
   // Locates links and joints and checks what urdfdom would only report without a line.
@@ -366,8 +440,8 @@ class Reader {
       l.collisions.push_back(u);
     }
     r.issues.push_back({UrdfIssue::Severity::kWarning, "link '" + l.name + "'",
-                        "collision elements read by Tribo: urdfdom dropped them (it does not "
-                        "know every geometry used here, e.g. <capsule>)"});
+                        "collision elements read by Tribo: urdfdom dropped some (a geometry it "
+                        "does not know, such as <capsule>, or a sphere of radius 0)"});
   }
 
   void readGazebo(UrdfRobot& r, const TiXmlElement* robot) {
@@ -399,6 +473,7 @@ class Reader {
 
   std::string path_;
   const PackagePaths& packages_;
+  UrdfReadOptions options_;
 };
 
 }  // namespace
@@ -427,8 +502,35 @@ bool UrdfRobot::hasErrors() const {
   return false;
 }
 
-UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages) {
-  return Reader(path, packages).read();
+UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages,
+                   const UrdfReadOptions& options) {
+  return Reader(path, packages, options).read();
+}
+
+bool looksLikeUrdf(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::size_t i = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // UTF-8 byte-order mark
+  while (i < head.size()) {
+    i = head.find_first_not_of(" \t\r\n", i);
+    if (i == std::string::npos || head[i] != '<') return false;
+    if (head.compare(i, 4, "<!--") == 0) {
+      i = head.find("-->", i);
+      if (i == std::string::npos) return false;
+      i += 3;
+    } else if (head.compare(i, 2, "<?") == 0 || head.compare(i, 2, "<!") == 0) {
+      i = head.find('>', i);
+      if (i == std::string::npos) return false;
+      ++i;
+    } else {
+      const std::size_t end = head.find_first_of(" \t\r\n/>", i + 1);
+      return head.substr(i + 1, end == std::string::npos ? end : end - i - 1) == "robot";
+    }
+  }
+  return false;
 }
 
 }  // namespace tribo::io

@@ -3,9 +3,14 @@
 // capsule collisions (urdfdom 3 drops every collision of a link after one it does not
 // know). Collision mesh references are resolved with PackagePaths. The model checks run
 // here too (io/urdf_checks.hpp) and land in UrdfRobot::issues.
-// Errors that leave nothing to simulate (unreadable file, malformed XML, unknown joint
-// type, missing link, no single root) throw UrdfError "FILE:LINE: what, expected what";
-// everything else is an issue, so `tribo info` can show all findings at once.
+// Errors that leave nothing to simulate (unreadable or empty file, not XML, malformed XML,
+// unknown joint type, missing link, no single root) throw UrdfError "FILE:LINE: what,
+// expected what"; everything else is an issue, so `tribo info` can show all findings at once.
+// Lenient by default, as Drake, Gazebo and PyBullet are where urdfdom refuses: a revolute or
+// prismatic joint without <limit> loads as unlimited, and a parent link named `world` that is
+// not declared is the world frame (each said in a note). UrdfReadOptions::strict keeps
+// urdfdom's refusal. A collision <sphere radius="0"> is kept: a contact point.
+// Not here: turning the robot into bodies (io/urdf_model.hpp).
 #pragma once
 
 #include <stdexcept>
@@ -21,6 +26,15 @@ class UrdfError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages = {});
+struct UrdfReadOptions {
+  bool strict = false;  // refuse what urdfdom refuses (no lenient repairs)
+};
+
+UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages = {},
+                   const UrdfReadOptions& options = {});
+
+// True when the file's first element is <robot> (after an XML declaration, comments and a
+// byte-order mark), whatever its name ends with: how `tribo run` tells a URDF from a scene.
+bool looksLikeUrdf(const std::string& path);
 
 }  // namespace tribo::io

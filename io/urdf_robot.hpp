@@ -57,7 +57,9 @@ struct UrdfJoint {
 };
 
 struct UrdfIssue {
-  enum class Severity { kWarning, kError } severity = Severity::kWarning;
+  // note: something read leniently or repaired (said, not a problem); warning: dubious data
+  // the model changes to simulate; error: refused.
+  enum class Severity { kNote, kWarning, kError } severity = Severity::kWarning;
   std::string where;  // "link 'x'" or "joint 'y'"
   std::string message;
 };

@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
 
+#include "contact/primitive_contacts.hpp"
+#include "core/number_text.hpp"
 #include "core/stability.hpp"
 #include "friction/friction_law.hpp"
 #include "io/scene_parameters.hpp"
@@ -22,13 +25,39 @@ contact::Material groundMaterial(double mu, double stiffness, double damping) {
   return m;
 }
 
+// Contact points of the moving `geometries` (of `model`, at its initial pose) below the
+// plane z = level, at most 8 per geometry as in the collision detector: with `level` the
+// lowest point plus the target depth, the points that carry the robot as it lands.
+int supportPoints(const Model& model, const std::vector<int>& geometries, double level) {
+  Eigen::Isometry3d plane = Eigen::Isometry3d::Identity();
+  plane.translation().z() = level;
+  std::vector<contact::ContactPoint> out;
+  for (int gi : geometries) {
+    const Geometry& g = model.geometries[gi];
+    Eigen::Isometry3d pose = g.local_pose;
+    if (!g.body.isWorld()) {
+      const Body& b = model.bodies[g.body.value];
+      Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
+      body.linear() = b.orientation.normalized().toRotationMatrix();
+      body.translation() = b.position;
+      pose = body * g.local_pose;
+      if (b.kind != BodyKind::kDynamic) continue;
+    } else {
+      continue;  // welded to the world: carries nothing
+    }
+    contact::halfSpaceContacts(g.shape, pose, plane, 0, 8, out);
+  }
+  return static_cast<int>(out.size());
+}
+
 }  // namespace
 
 Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& package_paths,
-                    const std::vector<std::string>& overrides) {
+                    const std::vector<std::string>& overrides, const UrdfReadOptions& read) {
   std::map<std::string, std::string> settings{
-      {"duration", "1"}, {"dt", "auto"},        {"integrator", "rk4"}, {"drop", "0.05"},
-      {"mu", "0.8"},     {"stiffness", "auto"}, {"damping", "auto"},   {"base", "auto"}};
+      {"duration", "1"},       {"dt", "auto"},        {"integrator", "auto"}, {"drop", "0.05"},
+      {"mu", "0.8"},           {"stiffness", "auto"}, {"damping", "auto"},    {"base", "auto"},
+      {"penetration", "1e-3"}, {"min_dt", "1e-5"}};
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     const std::string name = o.substr(0, eq);
@@ -48,10 +77,15 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
     return *v;
   };
 
-  const UrdfRobot robot = readUrdf(path, PackagePaths::withEnvironment(package_paths));
+  const UrdfRobot robot = readUrdf(path, PackagePaths::withEnvironment(package_paths), read);
+  std::vector<std::string> notes;
+  for (const UrdfIssue& i : robot.issues)
+    if (i.severity != UrdfIssue::Severity::kError) notes.push_back(i.where + ": " + i.message);
+  const bool auto_integrator = settings["integrator"] == "auto";
   ModelBuilder builder;
   builder.options().duration = number("duration");
-  builder.options().integrator = integratorFromName(settings["integrator"]);
+  builder.options().integrator =
+      auto_integrator ? IntegratorType::kRk4 : integratorFromName(settings["integrator"]);
   builder.options().collision.broadphase = true;
 
   UrdfPlacement placement;
@@ -64,39 +98,70 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
     throw SceneError(path + ": --set base: expected auto, fixed or floating, got '" + base + "'");
 
   // Place it once to find its lowest point, then again lifted to `drop` above the ground.
+  const double drop = number("drop");
   {
     ModelBuilder probe;
     const double lowest = addUrdfRobot(probe, robot, placement).lowest_point;
-    placement.base.translation().z() = number("drop") - lowest;
+    placement.base.translation().z() = drop - lowest;
   }
   const UrdfModelResult added = addUrdfRobot(builder, robot, placement);
+  for (const std::string& n : added.notes) notes.push_back(n);
   const int ground = builder.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace());
   builder.setGeometrySurface(ground, "ground");
 
-  // Contact per link: a stiffness that carries the robot's weight on 8 points at 1 mm, and a
-  // damping critical for the link's own body on 4 points (so light links are not overdamped,
-  // which would bound the explicit step far below what the stiffness needs).
-  const double mass = std::max(robot.totalMass(), 1e-3);
+  // Contact stiffness per point: the weight the ground carries (every moving body's) shared
+  // by the points within `penetration` of the lowest at the initial pose (a wheel on its rim
+  // touches at 2, a box foot at 4, a mesh at up to 8), each at that depth: k = W / (n d).
+  // Damping: critical for the link's own body on 4 points (so light links are not
+  // overdamped, which would bound the explicit step far below what the stiffness needs).
   const double g = builder.options().gravity.norm();
-  constexpr double kPoints = 8.0, kDepth = 1e-3;
+  const double depth = number("penetration");
+  if (!(depth > 0.0)) throw SceneError(path + ": --set penetration: expected a depth > 0 [m]");
+  double moving = 0.0;
+  for (const Body& b : builder.bodies()) moving += b.kind == BodyKind::kDynamic ? b.mass : 0.0;
+  const int points = supportPoints(*builder.build(), added.geometries, drop + depth);
+  const double weight = std::max(moving, 1e-6) * g;
   const bool auto_k = settings["stiffness"] == "auto", auto_c = settings["damping"] == "auto";
-  const double k = auto_k ? mass * g / (kPoints * kDepth) : number("stiffness");
+  const double k = auto_k ? weight / (std::max(points, 1) * depth) : number("stiffness");
   for (const auto& surface : added.surfaces) {
-    const double m = surface.body_mass > 0.0 ? surface.body_mass : mass;
-    const contact::Material base =
+    const double m = surface.body_mass > 0.0 ? surface.body_mass : moving;
+    const contact::Material base_material =
         groundMaterial(number("mu"), k, auto_c ? 2.0 * std::sqrt(k * m / 4.0) : number("damping"));
     builder.addSurfacePairMaterial(
         surface.name, "ground",
-        builder.addMaterial(withGazeboTags(base, surface.contact, m, auto_c)));
+        builder.addMaterial(withGazeboTags(base_material, surface.contact, m, auto_c)));
   }
   builder.setDefaultMaterial(builder.addMaterial(groundMaterial(
-      number("mu"), k, auto_c ? 2.0 * std::sqrt(k * mass / kPoints) : number("damping"))));
+      number("mu"), k,
+      auto_c ? 2.0 * std::sqrt(k * std::max(moving, 1e-6) / 8.0) : number("damping"))));
 
-  // dt auto: half the a-priori stable step of the stiffest element, at most 1 ms.
+  // dt auto: half the a-priori stable step of the stiffest element, at most 1 ms. Below the
+  // floor min_dt the explicit run would take too long: said before the run, and an automatic
+  // integrator becomes bdf (implicit: no step limit; dt is then its output interval).
   if (settings["dt"] == "auto") {
     builder.options().time_step = 1e-3;
-    const double limit = estimateStableStep(*builder.build()).limit.max_step;
-    builder.options().time_step = std::min(1e-3, 0.5 * limit);
+    const StabilityLimit limit = estimateStableStep(*builder.build()).limit;
+    const double needed = 0.5 * limit.max_step;
+    const double floor = number("min_dt");
+    builder.options().time_step = std::min(1e-3, needed);
+    if (needed < floor && builder.options().integrator != IntegratorType::kBdf) {
+      std::ostringstream why;
+      why << "the stable step of " << integratorName(builder.options().integrator) << " is "
+          << limit.max_step << " s, set by " << limit.element << ": a step of " << needed
+          << " s is below min_dt = " << floor << " s ("
+          << std::llround(builder.options().duration / needed) << " steps for the run); ";
+      if (auto_integrator) {
+        builder.options().integrator = IntegratorType::kBdf;
+        builder.options().time_step = 1e-3;
+        why << "running with bdf instead (implicit, no step limit; --set integrator=rk4 --set "
+               "dt=... forces the explicit run)";
+      } else {
+        builder.options().time_step = floor;
+        why << "running at min_dt, which may diverge (use --set integrator=bdf, or stiffen the "
+               "link's mass or soften that element)";
+      }
+      notes.push_back(why.str());
+    }
   } else {
     builder.options().time_step = number("dt");
   }
@@ -112,10 +177,12 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
       break;
     }
   }
-  settings["stiffness"] = std::to_string(k);
-  settings["dt"] = std::to_string(builder.options().time_step);
+  settings["stiffness"] = numberText(k);
+  settings["dt"] = numberText(builder.options().time_step);
+  settings["integrator"] = integratorName(builder.options().integrator);
+  settings["support_points"] = std::to_string(points);
   for (const auto& [name, value] : settings) scene.parameters.emplace_back(name, value);
-  scene.notes = added.notes;
+  scene.notes = notes;
   return scene;
 }
 

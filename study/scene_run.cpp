@@ -184,6 +184,18 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
          "against the joint's lever; see docs/joints.md)";
     result.warnings.push_back(w.str());
   }
+  if (result.stats.deep_penetrations > 0) {
+    const Geometry& g = model.geometries[result.stats.deepest_geometry];
+    const std::string body = g.body.isWorld() ? "world" : model.bodies[g.body.value].name;
+    std::ostringstream w;
+    w << "body '" << body << "': geometry '" << g.name << "' penetrated "
+      << result.stats.deepest_depth << " m, deeper than its half width "
+      << result.stats.deepest_extent
+      << " m along the contact normal (first at t = " << result.stats.first_deep_time
+      << " s; the energy stayed bounded, so the run went on): the contact is soft for it "
+         "(raise the stiffness) or it is a small feature on a heavier body";
+    result.warnings.push_back(w.str());
+  }
   result.trajectory.clearSinks();
   result.summary = keep    ? summarize(result.trajectory, model, scene.output.summary)
                    : spill ? spill->summarize(scene.output.summary)

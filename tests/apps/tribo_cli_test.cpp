@@ -256,4 +256,63 @@ TEST_F(TriboCli, InfoPrintsTheUrdfTreeAndRefusesAnInvalidOne) {
   EXPECT_NE(loop.output.find("no root link: joint"), std::string::npos) << loop.output;
 }
 
+// Issue #11 from the command line: an upper-case .URDF runs as a robot, a zero-radius foot
+// is a contact point that info and run agree on, and many notes of one kind are one line
+// (--verbose lists them) before the run's summary.
+TEST_F(TriboCli, UrdfByContentWithGroupedNotesAndInfoSayingWhatRunDoes) {
+  fs::create_directories(dir_);
+  std::string chain =
+      "<robot name=\"chain\"><link name=\"base\"><inertial><mass value=\"2\"/>"
+      "<inertia ixx=\"0.01\" iyy=\"0.01\" izz=\"0.01\" ixy=\"0\" ixz=\"0\" "
+      "iyz=\"0\"/></inertial><collision><geometry><sphere radius=\"0\"/>"
+      "</geometry></collision><collision><origin xyz=\"0.1 0 0\"/><geometry>"
+      "<box size=\"0.05 0.05 0.05\"/></geometry></collision></link>";
+  const int kMimics = 66;
+  for (int i = 0; i < kMimics; ++i) {
+    const std::string n = std::to_string(i);
+    chain += "<link name=\"l" + n +
+             "\"><inertial><mass value=\"0.1\"/><inertia ixx=\"1e-4\" iyy=\"1e-4\" izz=\"1e-4\" "
+             "ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link><joint name=\"j" +
+             n + "\" type=\"continuous\"><parent link=\"base\"/><child link=\"l" + n +
+             "\"/><axis xyz=\"0 0 1\"/><mimic joint=\"ghost" + n + "\"/></joint>";
+  }
+  chain += "</robot>";
+  const fs::path file = dir_ / "CHAIN.URDF";
+  std::ofstream(file) << chain;
+  const Result info = runTribo("info " + file.string());
+  EXPECT_EQ(info.status, 0) << info.output;
+  EXPECT_NE(info.output.find("a contact point"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("run: rk4, step"), std::string::npos) << info.output;
+  const Result run = runTribo("run " + file.string() + " --out " + (dir_ / "out").string());
+  EXPECT_EQ(run.status, 0) << run.output;
+  long mimic_lines = 0;
+  std::istringstream lines(run.output);
+  std::string line, last;
+  while (std::getline(lines, line)) {
+    mimic_lines += line.find("mimic ignored") != std::string::npos;
+    if (!line.empty()) last = line;
+  }
+  EXPECT_EQ(mimic_lines, 1) << run.output;
+  EXPECT_NE(run.output.find("(and " + std::to_string(kMimics - 1) + " more like it"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(last.rfind("results", 0), 0u) << run.output;  // the summary ends the output
+  const Result verbose =
+      runTribo("run " + file.string() + " --verbose --out " + (dir_ / "out").string());
+  EXPECT_EQ(verbose.status, 0) << verbose.output;
+  long listed = 0;
+  std::istringstream all(verbose.output);
+  while (std::getline(all, line)) listed += line.find("mimic ignored") != std::string::npos;
+  EXPECT_EQ(listed, kMimics);
+  // A .urdf that is not XML is refused by the URDF reader's words, not the scene loader's.
+  const fs::path text = dir_ / "ROBOT.URDF";
+  std::ofstream(text) << "links: [a, b]\n";
+  const Result refused = runTribo("run " + text.string() + " --out " + (dir_ / "out2").string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(
+      refused.output.find("ROBOT.URDF:1: not an XML document: it starts with 'links: [a, b]'"),
+      std::string::npos)
+      << refused.output;
+}
+
 }  // namespace

@@ -145,6 +145,51 @@ TEST(EnergyAccount, InputPowerOfAMovingKinematicBodyThroughASpring) {
   EXPECT_NEAR(a.elastic, 0.5 * k * 0.01, 1e-12);
 }
 
+// A flywheel on a revolute joint, without geometry, driven through a spring by a kinematic
+// driver turning at W about the same axis (issue #11): the guard's floor must reflect what
+// the driver moves through the system, not the flywheel's (absent) size. Small angles:
+// I th'' = k R^2 (W t - th), so th = W t - (W / w) sin(w t), w = R sqrt(k / I).
+TEST(EnergyGuard, FlywheelDrivenThroughASpringRunsAsTheClosedForm) {
+  struct Case {
+    double inertia, mass, radius, k, spin;
+  };
+  for (const Case& c : {Case{0.02, 1.0, 0.1, 2e4, 0.5}, Case{4.0, 50.0, 0.5, 1e5, 1.0},
+                        Case{1e-5, 0.01, 0.01, 1e3, 2.0}}) {
+    const double w = c.radius * std::sqrt(c.k / c.inertia);
+    ModelBuilder b;
+    b.options().gravity = Vec3::Zero();
+    b.options().time_step = 0.05 / w;  // RK4, far inside 2.8 / w
+    Body driver;
+    driver.name = "driver";
+    driver.kind = BodyKind::kKinematic;
+    driver.angular_velocity = Vec3(0, 0, c.spin);
+    const BodyIndex id = b.addBody(driver);
+    Body wheel;
+    wheel.name = "flywheel";
+    wheel.mass = c.mass;
+    wheel.inertia = Vec3(0.5 * c.inertia, 0.5 * c.inertia, c.inertia).asDiagonal();
+    const BodyIndex iw = b.addBody(wheel);
+    b.addJoint("axle", JointType::kRevolute, BodyIndex::world(), iw, Vec3::Zero(), Vec3::UnitZ());
+    // Tangential spring at rest: from the driver's point (R, -R, 0) to the wheel's (R, 0, 0).
+    b.addSpring("belt", id, Vec3(c.radius, -c.radius, 0), iw, Vec3(c.radius, 0, 0), c.k, 0.0, -1.0);
+    Simulator sim(b.build());
+    double worst = 0.0;
+    const int steps = static_cast<int>(std::ceil(4 * 2 * M_PI / w / b.options().time_step));
+    for (int i = 0; i < steps; ++i) {
+      const StepStatus status = sim.step();
+      ASSERT_TRUE(status.ok) << status.message;
+      const double t = sim.state().time;
+      const Quat q = sim.state().bodies[iw.value].orientation;
+      const double th = 2 * std::atan2(q.z(), q.w());
+      worst = std::max(worst, std::abs(th - (c.spin * t - c.spin / w * std::sin(w * t))));
+    }
+    // The linear model's error: the relative angle reaches phi = 2 W / w, and the spring's
+    // torque k R^2 phi (1 + O(phi)) is off by a share of order phi of it.
+    const double phi = 2 * c.spin / w;
+    EXPECT_LT(worst, phi * phi) << c.inertia;
+  }
+}
+
 TEST(AdaptiveFailure, UnreachableToleranceIsReportedAndTheStateKept) {
   for (IntegratorType type : {IntegratorType::kDopri5, IntegratorType::kBdf}) {
     ModelBuilder b = droppedBox(type, 0.01, 1e6, 0.3, 0.0, 0.0);

@@ -100,6 +100,90 @@ TEST_F(UrdfReader, TruncatedXmlNamesFileAndLine) {
   EXPECT_NE(e.find("malformed XML"), std::string::npos) << e;
 }
 
+TEST_F(UrdfReader, EmptyAndNonXmlFilesSayWhatTheyAre) {
+  const std::string empty = write("empty.urdf", "  \n\n");
+  EXPECT_NE(errorOf(empty).find(empty + ": the file is empty"), std::string::npos)
+      << errorOf(empty);
+  for (const std::string text : {"links: [a, b]\n<robot/>", "ROBOT arm\n", "\x01\x02garbage"}) {
+    const std::string path = write("text.urdf", text);
+    const std::string e = errorOf(path);
+    EXPECT_NE(e.find(path + ":1: not an XML document: it starts with '"), std::string::npos) << e;
+    EXPECT_EQ(e.find("document empty"), std::string::npos) << e;
+  }
+  const std::string sdf = write("w.urdf", "<?xml version=\"1.0\"?>\n<sdf version=\"1.6\"/>");
+  EXPECT_NE(errorOf(sdf).find(":2: expected a <robot> root element, found <sdf>"),
+            std::string::npos)
+      << errorOf(sdf);
+}
+
+TEST_F(UrdfReader, UrdfIsRecognisedByItsRootElement) {
+  const std::string robot = "<robot name=\"r\"><link name=\"l\"/></robot>";
+  EXPECT_TRUE(looksLikeUrdf(write("A.URDF", robot)));
+  EXPECT_TRUE(looksLikeUrdf(write("a.xml",
+                                  "\xEF\xBB\xBF<?xml version=\"1.0\"?>\n<!-- <sdf> -->\n"
+                                  "<!DOCTYPE robot>\n" +
+                                      robot)));
+  EXPECT_FALSE(looksLikeUrdf(write("s.yaml", "robots:\n  - file: a.urdf\n")));
+  EXPECT_FALSE(looksLikeUrdf(write("r.urdf", "<robots/>")));
+  EXPECT_FALSE(looksLikeUrdf((dir_ / "missing.urdf").string()));
+}
+
+// Drake, Gazebo and PyBullet load these; urdfdom refuses them (kept with --strict).
+TEST_F(UrdfReader, LenientJointsWithoutLimitsAndAnUndeclaredWorld) {
+  for (const std::string type : {"revolute", "prismatic"}) {
+    std::string text(kPendulum);
+    text.replace(text.find("type=\"revolute\""), 15, "type=\"" + type + "\"");
+    text.erase(text.find("<limit"), text.find("/>", text.find("<limit")) + 2 - text.find("<limit"));
+    text.replace(text.find("<link name=\"base\"/>"), 19, "");
+    text.replace(text.find("<parent link=\"base\"/>"), 21, "<parent link=\"world\"/>");
+    const std::string path = write("lenient.urdf", text);
+    const UrdfRobot r = readUrdf(path);
+    EXPECT_EQ(r.root, "world");
+    ASSERT_EQ(r.joints.size(), 1u);
+    EXPECT_EQ(r.joints[0].type, type);
+    EXPECT_FALSE(r.joints[0].has_limits);
+    int notes = 0;
+    for (const auto& i : r.issues) {
+      notes += i.severity == UrdfIssue::Severity::kNote;
+      if (i.where == "joint 'hinge'") {
+        EXPECT_NE(
+            i.message.find("line 12: " + type + " joint without <limit>: loaded as unlimited"),
+            std::string::npos)
+            << i.message;
+      }
+      if (i.where == "link 'world'") {
+        EXPECT_NE(i.message.find("parent 'world' is not declared: taken as the world frame"),
+                  std::string::npos)
+            << i.message;
+      }
+    }
+    EXPECT_EQ(notes, 2);
+    EXPECT_EQ(r.findLink("arm")->line, 4);  // lines are the file's
+    try {
+      readUrdf(path, {}, {true});
+      ADD_FAILURE() << "--strict must refuse what urdfdom refuses";
+    } catch (const UrdfError& e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST_F(UrdfReader, ZeroRadiusSphereIsAContactPointAndBadDimensionsAreErrors) {
+  std::string text(kPendulum);
+  text.replace(text.find("<box size=\"0.05 0.05 1.0\"/>"), 27, "<sphere radius=\"0\"/>");
+  const UrdfRobot point = readUrdf(write("point.urdf", text));
+  EXPECT_FALSE(point.hasErrors());
+  bool noted = false;
+  for (const auto& i : point.issues)
+    noted |= i.severity == UrdfIssue::Severity::kNote &&
+             i.message.find("collision sphere of radius 0 at (0, 0, -0.5): a contact point") !=
+                 std::string::npos;
+  EXPECT_TRUE(noted);
+  text.replace(text.find("radius=\"0\""), 10, "radius=\"-0.1\"");
+  const UrdfRobot bad = readUrdf(write("bad.urdf", text));
+  EXPECT_TRUE(bad.hasErrors());
+}
+
 TEST_F(UrdfReader, UnknownJointTypeNamesJointLineAndTheKnownTypes) {
   std::string text(kPendulum);
   text.replace(text.find("type=\"revolute\""), 15, "type=\"hinge\"");
