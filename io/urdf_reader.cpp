@@ -89,8 +89,10 @@ class Reader {
     if (!in) throw UrdfError("cannot open URDF file '" + path_ + "'");
     std::stringstream buffer;
     buffer << in.rdbuf();
-    const std::string xml = buffer.str();
+    return parse(buffer.str());
+  }
 
+  UrdfRobot parse(const std::string& xml) {
     TiXmlDocument doc;
     doc.Parse(xml.c_str());
     if (doc.Error())
@@ -424,6 +426,11 @@ bool UrdfRobot::hasErrors() const {
 
 UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages) {
   return Reader(path, packages).read();
+}
+
+UrdfRobot readUrdfFromString(const std::string& xml, const std::string& name_for_errors,
+                             const PackagePaths& packages) {
+  return Reader(name_for_errors, packages).parse(xml);
 }
 
 }  // namespace tribo::io

@@ -23,4 +23,9 @@ class UrdfError : public std::runtime_error {
 
 UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages = {});
 
+// The same from XML text; `name_for_errors` stands for the file name in messages and in
+// UrdfRobot::path, and relative mesh references resolve against its folder.
+UrdfRobot readUrdfFromString(const std::string& xml, const std::string& name_for_errors,
+                             const PackagePaths& packages = {});
+
 }  // namespace tribo::io

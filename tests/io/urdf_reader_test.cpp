@@ -92,6 +92,20 @@ TEST_F(UrdfReader, ReadsLinksJointsInertialsLimitsAndGazeboTags) {
   EXPECT_DOUBLE_EQ(r.totalMass(), 2.0);
 }
 
+TEST_F(UrdfReader, TextReadsAsTheFileDoesAndErrorsNameTheGivenName) {
+  const UrdfRobot r = readUrdfFromString(kPendulum, "mem/p.urdf");
+  EXPECT_EQ(r.path, "mem/p.urdf");
+  ASSERT_EQ(r.links.size(), 2u);
+  EXPECT_EQ(r.findLink("arm")->line, 4);
+  EXPECT_EQ(*r.findLink("arm")->contact.mu1, 0.7);
+  try {
+    readUrdfFromString("<robot name='x'><link name='a'>", "mem/cut.urdf");
+    ADD_FAILURE() << "truncated XML was read";
+  } catch (const UrdfError& e) {
+    EXPECT_NE(std::string(e.what()).find("mem/cut.urdf:"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(UrdfReader, TruncatedXmlNamesFileAndLine) {
   const std::string text(kPendulum);
   const std::string path = write("cut.urdf", text.substr(0, text.find("<joint")));
