@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds Tribo, and runs the whole test suite twice: in the
-# Release build, then in a build with AddressSanitizer and UBSan (benches left out).
+# Release build, then in a build with AddressSanitizer and UBSan (benches left out); then
+# the libFuzzer harnesses for a fixed number of inputs each (scripts/fuzz.sh --ci,
+# docs/fuzzing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -10,3 +12,4 @@ BUILD_DIR=build-sanitize \
   scripts/setup.sh
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)"
+scripts/fuzz.sh --ci
