@@ -114,10 +114,14 @@ StepStatus Simulator::check() {
   const EnergyVerdict energy = energy_.update(state_, ws);
   if (!energy.ok) {
     std::ostringstream s;
-    s << "body '" << energy.body << "' energy rising without a source: the mechanical energy "
-      << "less the work of sources rose by " << energy.rise << " J since t = " << energy.since
-      << " s, more than the " << energy.available
-      << " J the system had and received (step too large for the stiffest element?)";
+    if (!std::isfinite(energy.rise) || !std::isfinite(energy.available))  // never "nan J"
+      s << "body '" << energy.body << "' energy balance not finite since t = " << energy.since
+        << " s: a force or its work overflowed (step too large for the stiffest element?)";
+    else
+      s << "body '" << energy.body << "' energy rising without a source: the mechanical energy "
+        << "less the work of sources rose by " << energy.rise << " J since t = " << energy.since
+        << " s, more than the " << energy.available
+        << " J the system had and received (step too large for the stiffest element?)";
     return failed(energy.body, "energy", s.str());
   }
   if (!ws.joint_friction_converged && stats_.joint_friction_unconverged++ == 0)
