@@ -142,10 +142,14 @@ StepStatus Simulator::check() {
   const EnergyVerdict energy = energy_.update(state_, ws);
   if (!energy.ok) {
     std::ostringstream s;
-    s << "body '" << energy.body << "' energy rising without a source: the mechanical energy "
-      << "less the work of sources rose by " << energy.rise << " J since t = " << energy.since
-      << " s, more than the " << energy.available
-      << " J the system had and received (step too large for the stiffest element?)";
+    if (!std::isfinite(energy.rise) || !std::isfinite(energy.available))  // never "nan J"
+      s << "body '" << energy.body << "' energy balance not finite since t = " << energy.since
+        << " s: a force or its work overflowed (step too large for the stiffest element?)";
+    else
+      s << "body '" << energy.body << "' energy rising without a source: the mechanical energy "
+        << "less the work of sources rose by " << energy.rise << " J since t = " << energy.since
+        << " s, more than the " << energy.available
+        << " J the system had and received (step too large for the stiffest element?)";
     if (stats_.deep_penetrations > 0) {
       const Geometry& g = m.geometries[stats_.deepest_geometry];
       s << "; geometry '" << g.name << "' penetrated " << stats_.deepest_depth << " m, deeper "

@@ -59,32 +59,60 @@ void weld(MeshData& mesh) {
   mesh.triangles = std::move(triangles);
 }
 
+// The importer settings both entry points share.
+void configure(Assimp::Importer& importer) {
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_COLORS |
+                                                          aiComponent_TEXCOORDS |
+                                                          aiComponent_MATERIALS);
+}
+
+constexpr unsigned kSteps = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                            aiProcess_RemoveComponent | aiProcess_SortByPType;
+
+void checkScale(const std::string& name, const Eigen::Vector3d& scale) {
+  if (!scale.allFinite() || !(scale.minCoeff() > 0.0))
+    throw MeshError("mesh file '" + name + "': scale must be 3 numbers > 0");
+}
+
+// The merged, scaled, welded mesh of what assimp read (scene may be null on failure).
+std::shared_ptr<const MeshData> toMesh(const aiScene* scene, const Assimp::Importer& importer,
+                                       const std::string& name, const Eigen::Vector3d& scale) {
+  if (scene == nullptr || scene->mRootNode == nullptr)
+    throw MeshError("mesh file '" + name + "': cannot read it (" + importer.GetErrorString() + ")");
+  auto mesh = std::make_shared<MeshData>();
+  mesh->source = name;
+  collect(*scene, *scene->mRootNode, aiMatrix4x4(), *mesh);
+  if (mesh->triangles.empty())
+    throw MeshError("mesh file '" + name + "': expected at least one triangle, found none");
+  for (auto& v : mesh->vertices) v = v.cwiseProduct(scale);
+  weld(*mesh);
+  return mesh;
+}
+
 }  // namespace
 
 std::shared_ptr<const MeshData> loadMesh(const std::string& path, const Eigen::Vector3d& scale) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw MeshError("mesh file '" + path + "': cannot open (expected an STL, OBJ or DAE file)");
-  if (!scale.allFinite() || !(scale.minCoeff() > 0.0))
-    throw MeshError("mesh file '" + path + "': scale must be 3 numbers > 0");
+  checkScale(path, scale);
   Assimp::Importer importer;
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_COLORS |
-                                                          aiComponent_TEXCOORDS |
-                                                          aiComponent_MATERIALS);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                  aiProcess_RemoveComponent | aiProcess_SortByPType);
-  if (scene == nullptr || scene->mRootNode == nullptr)
-    throw MeshError("mesh file '" + path + "': cannot read it (" + importer.GetErrorString() + ")");
-  auto mesh = std::make_shared<MeshData>();
-  mesh->source = path;
-  collect(*scene, *scene->mRootNode, aiMatrix4x4(), *mesh);
-  if (mesh->triangles.empty())
-    throw MeshError("mesh file '" + path + "': expected at least one triangle, found none");
-  for (auto& v : mesh->vertices) v = v.cwiseProduct(scale);
-  weld(*mesh);
-  return mesh;
+  configure(importer);
+  return toMesh(importer.ReadFile(path, kSteps), importer, path, scale);
+}
+
+std::shared_ptr<const MeshData> loadMeshFromMemory(std::span<const unsigned char> bytes,
+                                                   const std::string& hint,
+                                                   const std::string& name_for_errors,
+                                                   const Eigen::Vector3d& scale) {
+  checkScale(name_for_errors, scale);
+  if (bytes.empty())
+    throw MeshError("mesh file '" + name_for_errors + "': cannot read it (no bytes)");
+  Assimp::Importer importer;
+  configure(importer);
+  return toMesh(importer.ReadFileFromMemory(bytes.data(), bytes.size(), kSteps, hint.c_str()),
+                importer, name_for_errors, scale);
 }
 
 }  // namespace tribo::io

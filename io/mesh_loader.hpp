@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "contact/mesh_shape.hpp"
@@ -17,5 +18,13 @@ namespace tribo::io {
 // Throws contact::MeshError naming the file when it cannot be read or holds no triangle.
 std::shared_ptr<const contact::MeshData> loadMesh(
     const std::string& path, const Eigen::Vector3d& scale = Eigen::Vector3d::Ones());
+
+// The same from the bytes of a file held in memory; `hint` is the format's file extension
+// ("stl", "obj", "dae"; assimp also sniffs the content). `name_for_errors` stands for the
+// file name in messages and in MeshData::source. Meshes a DAE or OBJ file references by name
+// (external files) are not found. Throws contact::MeshError.
+std::shared_ptr<const contact::MeshData> loadMeshFromMemory(
+    std::span<const unsigned char> bytes, const std::string& hint,
+    const std::string& name_for_errors, const Eigen::Vector3d& scale = Eigen::Vector3d::Ones());
 
 }  // namespace tribo::io

@@ -585,12 +585,12 @@ class Loader {
     if (default_material_.empty()) return;  // nothing to derive from; pairs need materials
     const contact::Material& base = material_values_.at(default_material_);
     for (const auto& [at, s] : gazebo_surfaces_) {
-      const contact::Material material =
-          guarded(at, [&] { return withGazeboTags(base, s.contact, std::max(s.body_mass, 1e-3)); });
+      const contact::Material material = guarded(
+          at, [&, &s = s] { return withGazeboTags(base, s.contact, std::max(s.body_mass, 1e-3)); });
       const int index = guarded(at, [&] { return builder_.addMaterial(material); });
       for (const std::string& other : body_surfaces_)
         if (!surface_pairs_.count({std::min(s.name, other), std::max(s.name, other)}))
-          guarded(at, [&] { builder_.addSurfacePairMaterial(s.name, other, index); });
+          guarded(at, [&, &s = s] { builder_.addSurfacePairMaterial(s.name, other, index); });
     }
   }
 
@@ -687,7 +687,7 @@ class Loader {
         v.fail("missing required key 'normal_force' (needed by load: constant)");
       }
       if (auto x = f.get("radius")) friction.radius = x->positive();
-      guarded(v, [&] { builder_.setJointFriction(joint, friction); });
+      guarded(v, [&, joint = joint] { builder_.setJointFriction(joint, friction); });
     }
     for (const auto& [joint, v] : pending_mimic_) {
       const Map mm(v, {"joint", "multiplier", "offset"});
@@ -702,7 +702,7 @@ class Loader {
       const auto multiplier = mm.get("multiplier");
       const auto offset = mm.get("offset");
       const std::string name = builder_.joints()[joint].name + " mimics " + leader_value.text();
-      guarded(v, [&] {
+      guarded(v, [&, joint = joint] {
         return builder_.addJointCoupling(name, *leader, joint,
                                          multiplier ? multiplier->number() : 1.0,
                                          offset ? offset->number() : 0.0);

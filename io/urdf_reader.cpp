@@ -4,6 +4,8 @@
 #include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -51,6 +53,28 @@ Eigen::Isometry3d toIsometry(const urdf::Pose& p) {
   p.rotation.getQuaternion(x, y, z, w);
   t.linear() = Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
   return t;
+}
+
+// Offset of the first byte of `text` that is not part of well-formed UTF-8 (or is a NUL),
+// npos when there is none. TinyXML 2.6 steps over a multi-byte character by its lead byte
+// alone, so a lead byte at the end of the text made it read past the buffer (found by
+// fuzz/urdf_fuzzer); the text is checked before it gets there.
+std::size_t badUtf8(const std::string& text) {
+  const auto* b = reinterpret_cast<const unsigned char*>(text.data());
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned char c = b[i];
+    const std::size_t n = c == 0             ? 0
+                          : c < 0x80         ? 1
+                          : (c >> 5) == 0x6  ? 2
+                          : (c >> 4) == 0xE  ? 3
+                          : (c >> 3) == 0x1E ? 4
+                                             : 0;
+    if (n == 0 || i + n > text.size()) return i;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((b[i + k] & 0xC0) != 0x80) return i;
+    i += n;
+  }
+  return std::string::npos;
 }
 
 std::optional<double> number(const char* text) {
@@ -102,10 +126,19 @@ class Reader {
     if (!in) throw UrdfError("cannot open URDF file '" + path_ + "'");
     std::stringstream buffer;
     buffer << in.rdbuf();
-    const std::string text = buffer.str();
+    return parse(buffer.str());
+  }
+
+  UrdfRobot parse(const std::string& text) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos)
       throw UrdfError(at(0) + "the file is empty (expected a <robot> XML document)");
-
+    const std::string& xml = text;
+    if (const std::size_t bad = badUtf8(xml); bad != std::string::npos) {
+      const int line = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + bad, '\n'));
+      char byte[8];
+      std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(xml[bad]));
+      throw UrdfError(at(line) + "expected UTF-8 text, found byte " + byte);
+    }
     TiXmlDocument doc;
     doc.Parse(text.c_str());
     if (doc.Error() && doc.ErrorId() == TiXmlBase::TIXML_ERROR_DOCUMENT_EMPTY)
@@ -531,6 +564,11 @@ bool looksLikeUrdf(const std::string& path) {
     }
   }
   return false;
+}
+
+UrdfRobot readUrdfFromString(const std::string& xml, const std::string& name_for_errors,
+                             const PackagePaths& packages, const UrdfReadOptions& options) {
+  return Reader(name_for_errors, packages, options).parse(xml);
 }
 
 }  // namespace tribo::io

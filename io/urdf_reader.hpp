@@ -37,4 +37,10 @@ UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages = {},
 // byte-order mark), whatever its name ends with: how `tribo run` tells a URDF from a scene.
 bool looksLikeUrdf(const std::string& path);
 
+// The same from XML text; `name_for_errors` stands for the file name in messages and in
+// UrdfRobot::path, and relative mesh references resolve against its folder.
+UrdfRobot readUrdfFromString(const std::string& xml, const std::string& name_for_errors,
+                             const PackagePaths& packages = {},
+                             const UrdfReadOptions& options = {});
+
 }  // namespace tribo::io

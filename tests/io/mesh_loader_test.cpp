@@ -1,6 +1,6 @@
 // Mesh files through assimp: the same unit cube written as ASCII STL, OBJ and COLLADA must
 // load as the same closed solid (8 vertices, 12 triangles, volume 1); scaling, convexity
-// checks and unreadable files give what the header promises.
+// checks and unreadable files give what the header promises; bytes in memory read the same.
 #include "io/mesh_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -94,6 +94,29 @@ TEST(MeshLoader, StlObjAndDaeGiveTheSameClosedCube) {
     EXPECT_DOUBLE_EQ(x_max, 2.0) << name;
     fs::remove(path);
   }
+}
+
+TEST(MeshLoader, BytesInMemoryReadAsTheFileDoes) {
+  for (const auto& [hint, text] : std::vector<std::pair<std::string, std::string>>{
+           {"stl", stl()}, {"obj", obj()}, {"dae", dae()}}) {
+    const std::vector<unsigned char> bytes(text.begin(), text.end());
+    const auto mesh = io::loadMeshFromMemory(bytes, hint, "mem." + hint, {2.0, 1.0, 1.0});
+    EXPECT_EQ(mesh->source, "mem." + hint);
+    EXPECT_EQ(mesh->vertices.size(), 8u) << hint;
+    EXPECT_EQ(mesh->triangles.size(), 12u) << hint;
+    double x_max = 0;
+    for (const auto& v : mesh->vertices) x_max = std::max(x_max, v.x());
+    EXPECT_DOUBLE_EQ(x_max, 2.0) << hint;
+  }
+  const std::string junk = "this is not a mesh\n";
+  const std::vector<unsigned char> bytes(junk.begin(), junk.end());
+  try {
+    io::loadMeshFromMemory(bytes, "stl", "mem.stl");
+    ADD_FAILURE() << "junk read as a mesh";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("mem.stl"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(io::loadMeshFromMemory({}, "obj", "empty.obj"), MeshError);
 }
 
 TEST(MeshLoader, ConvexityIsCheckedAndInwardFacesAreTurned) {

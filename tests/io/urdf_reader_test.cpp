@@ -92,6 +92,38 @@ TEST_F(UrdfReader, ReadsLinksJointsInertialsLimitsAndGazeboTags) {
   EXPECT_DOUBLE_EQ(r.totalMass(), 2.0);
 }
 
+TEST_F(UrdfReader, TextReadsAsTheFileDoesAndErrorsNameTheGivenName) {
+  const UrdfRobot r = readUrdfFromString(kPendulum, "mem/p.urdf");
+  EXPECT_EQ(r.path, "mem/p.urdf");
+  ASSERT_EQ(r.links.size(), 2u);
+  EXPECT_EQ(r.findLink("arm")->line, 4);
+  EXPECT_EQ(*r.findLink("arm")->contact.mu1, 0.7);
+  try {
+    readUrdfFromString("<robot name='x'><link name='a'>", "mem/cut.urdf");
+    ADD_FAILURE() << "truncated XML was read";
+  } catch (const UrdfError& e) {
+    EXPECT_NE(std::string(e.what()).find("mem/cut.urdf:"), std::string::npos) << e.what();
+  }
+}
+
+// fuzz/regressions/urdf_fuzzer/crash-utf8-lead-byte-at-end: TinyXML read past the text after
+// a UTF-8 lead byte at its end (AddressSanitizer: heap-buffer-overflow).
+TEST_F(UrdfReader, TextThatIsNotUtf8IsRefusedWithItsLine) {
+  for (const std::string& text :
+       {std::string("<robot name=\"a\xdf"),
+        std::string("<robot name=\"a\">\n<link name=\"\x95\"/>"),
+        std::string("<robot name=\"a\">\n\n<link name=\"b") + '\0' + "\"/>"}) {
+    try {
+      readUrdfFromString(text, "mem.urdf");
+      ADD_FAILURE() << "read: " << text;
+    } catch (const UrdfError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected UTF-8 text"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(readUrdfFromString("<robot name=\"\xc3\xa9t\xc3\xa9\"><link name=\"a\"/></robot>",
+                                     "utf8.urdf"));
+}
+
 TEST_F(UrdfReader, TruncatedXmlNamesFileAndLine) {
   const std::string text(kPendulum);
   const std::string path = write("cut.urdf", text.substr(0, text.find("<joint")));

@@ -23,6 +23,18 @@ TEST(SweepGrid, GridSpansCountValuesWithBothEnds) {
   EXPECT_EQ(parseGridAxis("mu_s=0.31:0.5:20").values.back(), "0.5");
 }
 
+// fuzz/regressions/cli_values_fuzzer/timeout-grid-count-3913919: a grid of millions of values
+// took over 10 s (a set of every value's text to find duplicates); equal texts of a grid are
+// neighbours, so one pass finds them.
+TEST(SweepGrid, ManyValuesParseInOnePassAndCloseValuesStillCollide) {
+  const SweepAxis a = parseGridAxis("a=0:1:3913919");
+  ASSERT_EQ(a.values.size(), 3913919u);
+  EXPECT_EQ(a.values.front(), "0");
+  EXPECT_EQ(a.values.back(), "1");
+  // Steps below the 12 significant digits of the text give neighbours with the same text.
+  EXPECT_THROW(parseGridAxis("a=1:1.000000000001:5"), SweepSpecError);
+}
+
 TEST(SweepGrid, ListKeepsTheValuesAsWritten) {
   const SweepAxis a = parseListAxis("friction=roh_yoo,recurdyn");
   EXPECT_EQ(a.name, "friction");

@@ -1,0 +1,60 @@
+// Replays every committed fuzzing seed and regression input (fuzz/corpus/HARNESS/,
+// fuzz/regressions/HARNESS/) through the same code the libFuzzer harnesses run
+// (fuzz/fuzz_inputs.hpp), in every build: the defects fuzzing found stay fixed in the
+// Release and sanitizer builds, not only in the clang fuzz build. An input fails the test by
+// throwing anything but its loader's typed error, or by crashing (docs/fuzzing.md).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "fuzz/fuzz_inputs.hpp"
+
+// assimp 5.2.5 (Debian 12) leaks about 2.5 kB when its ASCII STL reader throws on a malformed
+// file (fuzz/regressions/mesh_fuzzer/leak-stl-bad-keyword): a defect of the library, which
+// Tribo cannot free; the input still has to end in contact::MeshError. LeakSanitizer reads
+// this function's suppressions (a no-op in builds without it).
+extern "C" const char* __lsan_default_suppressions() { return "leak:libassimp.so\n"; }
+
+namespace tribo::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every input of a harness, in name order.
+std::vector<fs::path> inputsOf(const std::string& harness) {
+  std::vector<fs::path> out;
+  for (const char* dir : {"corpus", "regressions"}) {
+    const fs::path folder = fs::path(TRIBO_SOURCE_DIR) / "fuzz" / dir / harness;
+    if (!fs::is_directory(folder)) continue;
+    for (const auto& e : fs::directory_iterator(folder))
+      if (e.is_regular_file() && e.path().filename().string().front() != '.')
+        out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void replay(const std::string& harness, void (*feed)(const std::uint8_t*, std::size_t)) {
+  const auto inputs = inputsOf(harness);
+  EXPECT_FALSE(inputs.empty()) << "no seeds for " << harness;
+  for (const auto& path : inputs) {
+    SCOPED_TRACE(path.string());
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
+    EXPECT_NO_THROW(feed(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+  }
+}
+
+TEST(FuzzRegressions, SceneYaml) { replay("scene_yaml_fuzzer", sceneYaml); }
+TEST(FuzzRegressions, Urdf) { replay("urdf_fuzzer", urdf); }
+TEST(FuzzRegressions, Mesh) { replay("mesh_fuzzer", mesh); }
+TEST(FuzzRegressions, CliValues) { replay("cli_values_fuzzer", cliValues); }
+
+}  // namespace
+}  // namespace tribo::fuzz
