@@ -132,11 +132,10 @@ class Reader {
   UrdfRobot parse(const std::string& text) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos)
       throw UrdfError(at(0) + "the file is empty (expected a <robot> XML document)");
-    const std::string& xml = text;
-    if (const std::size_t bad = badUtf8(xml); bad != std::string::npos) {
-      const int line = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + bad, '\n'));
+    if (const std::size_t bad = badUtf8(text); bad != std::string::npos) {
+      const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + bad, '\n'));
       char byte[8];
-      std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(xml[bad]));
+      std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[bad]));
       throw UrdfError(at(line) + "expected UTF-8 text, found byte " + byte);
     }
     TiXmlDocument doc;

@@ -47,9 +47,11 @@ flags() {
   esac
 }
 
-# The committed input folders of a harness that exist.
+# The committed input folders of a harness that exist; the URDF harness also starts from the
+# real robots beside the checkout (../shared/urdf) when they are there.
 inputs() {
   for d in "fuzz/corpus/$1" "fuzz/regressions/$1"; do [ -d "$d" ] && echo "$d"; done
+  if [ "$1" = urdf_fuzzer ] && [ -d ../shared/urdf ]; then echo ../shared/urdf; fi
 }
 
 # Every seed and regression once: the fixed defects stay fixed.
