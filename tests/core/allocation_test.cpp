@@ -130,6 +130,11 @@ void* rawAligned(std::size_t alignment, std::size_t n) {
 
 // The replaced global allocation functions: count, then allocate with the C allocator (the
 // matching deletes free with std::free, which takes glibc's memory from both).
+// GCC sees std::free applied to what operator new returned once it inlines them and warns
+// (-Wmismatched-new-delete); here the pairing is by design, every new above is malloc.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void* operator new(std::size_t n) {
   noteNew();
   if (void* p = rawAlloc(n)) return p;
