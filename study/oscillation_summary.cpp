@@ -189,13 +189,14 @@ Extremum refine(const S& t, const S& x, std::size_t k, bool is_max) {
   return {k, is_max, t[k], x[k]};
 }
 
-// First index i with t[i] > a (std::upper_bound by index).
-template <class S>
-std::size_t upperBound(const S& t, double a) {
+// First index i at which `before(t[i])` turns false (std::partition_point by index, for
+// series that are read by index rather than iterated).
+template <class S, class Before>
+std::size_t partitionPoint(const S& t, Before before) {
   std::size_t lo = 0, n = t.size();
   while (n > 0) {
     const std::size_t half = n / 2;
-    if (!(a < t[lo + half])) {
+    if (before(t[lo + half])) {
       lo += half + 1;
       n -= half + 1;
     } else {
@@ -205,20 +206,16 @@ std::size_t upperBound(const S& t, double a) {
   return lo;
 }
 
+// First index i with t[i] > a (std::upper_bound by index).
+template <class S>
+std::size_t upperBound(const S& t, double a) {
+  return partitionPoint(t, [a](double v) { return !(a < v); });
+}
+
 // First index i with t[i] >= a (std::lower_bound by index).
 template <class S>
 std::size_t lowerBound(const S& t, double a) {
-  std::size_t lo = 0, n = t.size();
-  while (n > 0) {
-    const std::size_t half = n / 2;
-    if (t[lo + half] < a) {
-      lo += half + 1;
-      n -= half + 1;
-    } else {
-      n = half;
-    }
-  }
-  return lo;
+  return partitionPoint(t, [a](double v) { return v < a; });
 }
 
 // Integral of the piecewise linear x(t) from t[0]: cumulative trapezoids plus interpolation.
