@@ -8,6 +8,7 @@
 #include "friction/adams_law.hpp"
 #include "friction/coulomb_law.hpp"
 #include "friction/elastic_stick_law.hpp"
+#include "friction/lugre_law.hpp"
 #include "friction/recurdyn_law.hpp"
 #include "friction/roh_yoo_law.hpp"
 #include "friction/stribeck_law.hpp"
@@ -80,6 +81,7 @@ constexpr std::string_view kCoulombOptions[] = {"regularization"};
 constexpr std::string_view kStepLawKeys[] = {"mu_s", "mu_k", "v_s", "v_d"};
 constexpr std::string_view kRohYooKeys[] = {"mu_s", "mu_k", "v_s", "a", "beta"};
 constexpr std::string_view kStribeckKeys[] = {"mu_s", "mu_k", "v_st", "delta", "viscous", "v_eps"};
+constexpr std::string_view kLuGreKeys[] = {"sigma0", "sigma1", "sigma2", "mu_c", "mu_s", "v_s"};
 constexpr std::string_view kElasticStickKeys[] = {"mu_s", "mu_k", "stiffness", "damping",
                                                   "stick_speed"};
 
@@ -106,6 +108,18 @@ TwoStepParams twoStepParams(const LawSpec& spec) {
           .mu_k = reader.required("mu_k"),
           .v_s = reader.required("v_s"),
           .v_d = reader.required("v_d")};
+}
+
+std::unique_ptr<const FrictionLaw> makeLuGre(const LawSpec& spec) {
+  const SpecReader reader(spec, kLuGreKeys);
+  LuGreParams p;
+  p.sigma0 = reader.optional("sigma0", p.sigma0);
+  p.sigma1 = reader.optional("sigma1", p.sigma1);
+  p.sigma2 = reader.optional("sigma2", p.sigma2);
+  p.mu_c = reader.optional("mu_c", p.mu_c);
+  p.mu_s = reader.optional("mu_s", p.mu_s);
+  p.v_s = reader.optional("v_s", p.v_s);
+  return std::make_unique<LuGreLaw>(p);
 }
 
 std::unique_ptr<const FrictionLaw> makeRecurDyn(const LawSpec& spec) {
@@ -166,9 +180,11 @@ std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec) {
   if (spec.name == "roh_yoo") return makeRohYoo(spec);
   if (spec.name == "stribeck") return makeStribeck(spec);
   if (spec.name == "elastic_stick") return makeElasticStick(spec);
+  if (spec.name == "lugre") return makeLuGre(spec);
   std::string known;
   for (const std::string& name : knownFrictionLaws()) known += (known.empty() ? "" : ", ") + name;
   for (const std::string& name : knownStatefulFrictionLaws()) known += ", " + name;
+  for (const std::string& name : knownDynamicFrictionLaws()) known += ", " + name;
   throw FrictionParameterError("unknown friction law '" + spec.name + "' (known laws: " + known +
                                ")");
 }
@@ -181,6 +197,11 @@ const std::vector<std::string>& knownFrictionLaws() {
 
 const std::vector<std::string>& knownStatefulFrictionLaws() {
   static const std::vector<std::string> names = {"elastic_stick"};
+  return names;
+}
+
+const std::vector<std::string>& knownDynamicFrictionLaws() {
+  static const std::vector<std::string> names = {"lugre"};
   return names;
 }
 

@@ -3,7 +3,9 @@
 //
 //   F_t = -mu(|s|) * F_n * s / |s|      (s: slip velocity of body B relative to A, F_n >= 0)
 //
-// Stateful laws (stateful() == true, e.g. elastic_stick_law.hpp) also see a view of their
+// Laws with internal state integrated with the motion (LuGre, rate-and-state...) derive from
+// DynamicFrictionLaw (friction/dynamic_law.hpp); this interface is then their steady-state
+// curve. Stateful laws (stateful() == true, e.g. elastic_stick_law.hpp) also see a view of their
 // contact's state: the elongation of a tangential spring anchored where the contact stuck,
 // and whether it was sliding. The contact stage keeps that state between steps (keyed by a
 // persistent contact key) and calls advance() once after each step; memoryless laws ignore
@@ -43,9 +45,16 @@ struct StickUpdate {
   Eigen::Vector3d elongation = Eigen::Vector3d::Zero();
 };
 
+class DynamicFrictionLaw;  // friction/dynamic_law.hpp
+
 class FrictionLaw {
  public:
   virtual ~FrictionLaw() = default;
+
+  // Laws with internal state integrated with the motion (friction/dynamic_law.hpp) return
+  // themselves; memoryless laws and elastic_stick nullptr. For a dynamic law the functions
+  // below describe its steady-state curve.
+  virtual const DynamicFrictionLaw* dynamic() const { return nullptr; }
 
   // Coefficient at signed slip speed v [m/s]. Odd: coefficient(-v) == -coefficient(v).
   virtual double coefficient(double v) const = 0;
@@ -87,6 +96,9 @@ std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec);
 const std::vector<std::string>& knownFrictionLaws();
 // Names of the stateful laws accepted by makeFrictionLaw ("elastic_stick").
 const std::vector<std::string>& knownStatefulFrictionLaws();
+// Names of the laws with internal state integrated with the motion (friction/dynamic_law.hpp)
+// accepted by makeFrictionLaw, in a stable order.
+const std::vector<std::string>& knownDynamicFrictionLaws();
 
 // Tangential force on body B (slip s = velocity of B's material point relative to A's, in
 // the tangent plane) for normal force fn >= 0. Zero at zero slip. Optionally returns mu.

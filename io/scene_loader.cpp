@@ -774,6 +774,7 @@ class Loader {
   void readFrictionLaws(const Value& v) {
     Keys known = friction::knownFrictionLaws();
     for (const auto& name : friction::knownStatefulFrictionLaws()) known.push_back(name);
+    for (const auto& name : friction::knownDynamicFrictionLaws()) known.push_back(name);
     known.push_back("tabulated");  // built here from its file (tabulatedLaw)
     const Map laws(v, {});
     for (const auto& [law, entry] : laws.entries()) {
