@@ -17,6 +17,9 @@
 //      where that anchor was set; two points claiming one anchor: the first in contact order
 //      keeps it, the other starts a new one;
 //   3. otherwise the contact is new: stuck, zero elongation, a fresh key of its pair.
+// Dynamic friction laws use the same records and identity rules for their per-contact
+// internal state (State::friction_states), with the state's place in State::friction_values
+// instead of material points.
 // Anchors are kept sorted by key; keys are (pair << 32) | slot, slot = feature for 1 and
 // 2^31 + n for 2 and 3. Not here: the law's decisions (friction/), the step loop (core/).
 #pragma once
@@ -38,6 +41,12 @@ struct StickAnchor {
   Eigen::Vector3d anchor_b = Eigen::Vector3d::Zero();  // material point, geometry B frame [m]
   double time = 0.0;                                   // when set [s]
   bool sliding = false;
+  // Dynamic friction laws (friction/dynamic_law.hpp) only: where the contact's internal
+  // state starts in State::friction_values and how many numbers it has (-1, 0: none), and
+  // the contact normal its tangent vectors are expressed against (world, unit).
+  int state = -1;
+  int state_size = 0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
 
   bool operator==(const StickAnchor&) const = default;
 };

@@ -1,6 +1,10 @@
 #include "core/dynamics.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "contact/dynamic_friction.hpp"
 
 namespace tribo {
 
@@ -73,6 +77,8 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   for (const auto& material : model_->materials) {
     stateful_material_.push_back(material.friction->stateful() ? 1 : 0);
     any_stateful_ = any_stateful_ || material.friction->stateful();
+    dynamic_law_.push_back(material.friction->dynamic());
+    any_dynamic_ = any_dynamic_ || material.friction->dynamic() != nullptr;
   }
 }
 
@@ -174,9 +180,34 @@ void Dynamics::normalForces() {
 
 void Dynamics::friction(const State& state) {
   const Model& m = *model_;
-  for (contact::ContactRecord& rec : ws_.contacts) {
+  if (any_dynamic_) {
+    ws_.friction_state_rate.assign(state.friction_values.size(), 0.0);
+    ws_.friction_state_contact.assign(state.friction_states.size(), -1);
+  }
+  std::array<double, contact::kMaxFrictionState> z, zdot, back;
+  for (std::size_t i = 0; i < ws_.contacts.size(); ++i) {
+    contact::ContactRecord& rec = ws_.contacts[i];
     const ContactPair& pair = m.contact_pairs[rec.point.pair];
     const contact::Material& material = m.materials[pair.material];
+    if (const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material]) {
+      const contact::StickAnchor* record =
+          contact::findAnchor(state.friction_states, rec.point, m.options.collision.match_radius);
+      if (record == nullptr) {
+        law->initialState(z.data());  // a contact new within the step: not integrated yet
+        contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
+        continue;
+      }
+      contact::transportState(*law, &state.friction_values[record->state], record->normal,
+                              rec.point.normal, z.data());
+      contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
+      const auto r = static_cast<std::size_t>(record - state.friction_states.data());
+      if (ws_.friction_state_contact[r] >= 0) continue;  // the first point using it drives it
+      ws_.friction_state_contact[r] = static_cast<int>(i);
+      contact::transportState(*law, zdot.data(), record->normal, rec.point.normal, back.data(),
+                              true);
+      std::copy_n(back.data(), record->state_size, &ws_.friction_state_rate[record->state]);
+      continue;
+    }
     if (!stateful_material_[pair.material]) {
       contact::frictionForce(material, rec);
       continue;
@@ -285,6 +316,71 @@ bool Dynamics::advanceFrictionStates(State& state) {
   const bool changed = anchor_book_.finish(state.stick_anchors);
   clock.lap(Stage::kFrictionStates);
   return changed;
+}
+
+bool Dynamics::registerFrictionStates(State& state) {
+  if (!any_dynamic_) return false;
+  StageClock clock(profiling_ ? &profile_ : nullptr);
+  const Model& m = *model_;
+  const double cos_rebase = std::cos(kRebaseAngle);
+  bool forces_changed = false;
+  state_book_.begin(state.friction_states);
+  next_values_.clear();
+  for (const contact::ContactRecord& rec : ws_.contacts) {
+    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
+    if (law == nullptr) continue;
+    const contact::StickAnchor* old =
+        contact::findAnchor(state.friction_states, rec.point, m.options.collision.match_radius);
+    contact::StickAnchor next;
+    next.key = state_book_.claim(rec.point, old);
+    next.position = rec.point.position;
+    next.time = state.time;
+    next.state = static_cast<int>(next_values_.size());
+    next.state_size = law->stateSize();
+    next_values_.resize(next_values_.size() + static_cast<std::size_t>(next.state_size));
+    double* z = &next_values_[static_cast<std::size_t>(next.state)];
+    if (old != nullptr && old->key == next.key) {
+      const double* stored = &state.friction_values[static_cast<std::size_t>(old->state)];
+      if (old->normal.dot(rec.point.normal) < cos_rebase) {
+        contact::transportState(*law, stored, old->normal, rec.point.normal, z);
+        next.normal = rec.point.normal;
+        forces_changed = forces_changed || law->tangentVectors() > 0;
+      } else {
+        std::copy_n(stored, next.state_size, z);
+        next.normal = old->normal;
+      }
+    } else {
+      law->initialState(z);
+      next.normal = rec.point.normal;
+      // The evaluation gave this point the state of a record another point continues.
+      forces_changed = forces_changed || old != nullptr;
+    }
+    state_book_.add(next);
+  }
+  state_book_.finish(state.friction_states);
+  state.friction_values.swap(next_values_);
+  if (!forces_changed) friction(state);  // same forces; the rates for the new records
+  clock.lap(Stage::kFrictionStates);
+  return forces_changed;
+}
+
+void Dynamics::stepFrictionStates(State& state, double h) const {
+  const Model& m = *model_;
+  std::array<double, contact::kMaxFrictionState> z, back;
+  for (std::size_t r = 0; r < state.friction_states.size(); ++r) {
+    if (r >= ws_.friction_state_contact.size() || ws_.friction_state_contact[r] < 0) continue;
+    const contact::ContactRecord& rec =
+        ws_.contacts[static_cast<std::size_t>(ws_.friction_state_contact[r])];
+    const friction::DynamicFrictionLaw& law =
+        *dynamic_law_[m.contact_pairs[rec.point.pair].material];
+    const contact::StickAnchor& record = state.friction_states[r];
+    double* stored = &state.friction_values[static_cast<std::size_t>(record.state)];
+    contact::transportState(law, stored, record.normal, rec.point.normal, z.data());
+    law.stableStep(z.data(), rec.slip, rec.normal_force, h);
+    contact::transportState(law, z.data(), record.normal, rec.point.normal, back.data(), true);
+    std::copy_n(back.data(), record.state_size, stored);
+  }
 }
 
 }  // namespace tribo

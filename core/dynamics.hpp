@@ -5,7 +5,9 @@
 //   contactKinematics  per contact point: depth rate, slip (contact/contact_force.hpp)
 //   normalForces       per contact point: penalty normal force
 //   friction           per contact point: the pair's friction law (stateful laws: anchor
-//                      lookup and state view, contact/stick_anchor.hpp)
+//                      lookup and state view, contact/stick_anchor.hpp; dynamic laws: the
+//                      internal state's record, force and state rate,
+//                      contact/dynamic_friction.hpp)
 //   assemble           wrenches by source: contacts, spring-dampers, joint forces
 //                      (core/joint_forces.hpp)
 //   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations
@@ -28,6 +30,7 @@
 #include "core/stage_profile.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
+#include "friction/dynamic_law.hpp"
 
 namespace tribo {
 
@@ -52,6 +55,22 @@ class Dynamics {
   // state.stick_anchors (contact/stick_anchor.hpp); returns true when they changed.
   bool hasStatefulFriction() const { return any_stateful_; }
   bool advanceFrictionStates(State& state);
+
+  // Dynamic friction (friction/dynamic_law.hpp): true when some material's law carries an
+  // internal state integrated with the motion.
+  bool hasDynamicFriction() const { return any_dynamic_; }
+  // Before a step, with the workspace evaluated at `state`: gives every contact point under
+  // a dynamic law its record in state.friction_states (continuing the one it matched, a new
+  // one from the law's initial state, ended contacts forgotten), turning stored tangent
+  // vectors to the current normal once it has turned by more than kRebaseAngle. Returns
+  // true when a force of the evaluation may have changed (a state was turned or a record
+  // shared by two points was split), so the caller must evaluate again; otherwise it
+  // refreshes the workspace's state rates for the new records itself.
+  bool registerFrictionStates(State& state);
+  // Semi-implicit Euler's update of the internal states over h at the slip and load of the
+  // workspace's evaluation (DynamicFrictionLaw::stableStep): bounded for stiff bristles.
+  void stepFrictionStates(State& state, double h) const;
+  static constexpr double kRebaseAngle = 1e-3;  // [rad]
 
   // Time per stage (core/stage_profile.hpp). Switching profiling on starts the profile from
   // zero; switching it off keeps the totals. Off by default.
@@ -82,6 +101,10 @@ class Dynamics {
   std::vector<char> stateful_material_;  // per material: its friction law keeps state
   bool any_stateful_ = false;
   contact::AnchorBook anchor_book_;
+  std::vector<const friction::DynamicFrictionLaw*> dynamic_law_;  // per material, or nullptr
+  bool any_dynamic_ = false;
+  contact::AnchorBook state_book_;
+  std::vector<double> next_values_;
   bool profiling_ = false;
   StageProfile profile_;
   double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on

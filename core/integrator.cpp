@@ -21,6 +21,7 @@ class SemiImplicitEuler final : public Integrator {
       s.position += h * s.velocity;
       s.orientation = rotateBy(s.angular_velocity, h, s.orientation);
     }
+    if (dynamics.hasDynamicFriction()) dynamics.stepFrictionStates(state, h);
     state.time += h;
     ++counters_.steps;
     return {};
@@ -30,7 +31,7 @@ class SemiImplicitEuler final : public Integrator {
 
 class RungeKutta4 final : public Integrator {
  public:
-  explicit RungeKutta4(std::size_t n) : stage_(), rates_(4, std::vector<Rate>(n)) {}
+  explicit RungeKutta4(std::size_t n) : stage_(), rates_(4, std::vector<Rate>(n)), z_rates_(4) {}
 
   IntegratorStatus step(Dynamics& dynamics, State& state, double h,
                         bool start_is_evaluated) override {
@@ -38,7 +39,7 @@ class RungeKutta4 final : public Integrator {
     static constexpr double kWeight[4] = {1.0 / 6.0, 2.0 / 6.0, 2.0 / 6.0, 1.0 / 6.0};
     stage_ = state;
     for (int k = 0; k < 4; ++k) {
-      if (k > 0) makeStage(state, rates_[k - 1], kStageTime[k] * h);
+      if (k > 0) makeStage(state, rates_[k - 1], z_rates_[k - 1], kStageTime[k] * h);
       const State& at = k == 0 ? state : stage_;
       const bool reuse = k == 0 && start_is_evaluated;
       if (!reuse) ++counters_.evaluations;
@@ -48,7 +49,12 @@ class RungeKutta4 final : public Integrator {
         rates_[k][b] = {s.velocity, quaternionRate(s.angular_velocity, s.orientation),
                         ws.linear_acceleration[b], ws.angular_acceleration[b]};
       }
+      // Dynamic friction states: their records are those of `state` in every stage.
+      z_rates_[k].assign(ws.friction_state_rate.begin(), ws.friction_state_rate.end());
     }
+    for (std::size_t i = 0; i < state.friction_values.size(); ++i)
+      state.friction_values[i] += h * (kWeight[0] * z_rates_[0][i] + kWeight[1] * z_rates_[1][i] +
+                                       kWeight[2] * z_rates_[2][i] + kWeight[3] * z_rates_[3][i]);
     for (std::size_t b = 0; b < state.bodies.size(); ++b) {
       BodyState& s = state.bodies[b];
       Rate sum{};
@@ -78,8 +84,11 @@ class RungeKutta4 final : public Integrator {
     Vec3 dw = Vec3::Zero();
   };
 
-  void makeStage(const State& base, const std::vector<Rate>& rate, double dt) {
+  void makeStage(const State& base, const std::vector<Rate>& rate,
+                 const std::vector<double>& z_rate, double dt) {
     stage_.time = base.time + dt;
+    for (std::size_t i = 0; i < base.friction_values.size(); ++i)
+      stage_.friction_values[i] = base.friction_values[i] + dt * z_rate[i];
     for (std::size_t b = 0; b < base.bodies.size(); ++b) {
       const BodyState& s = base.bodies[b];
       BodyState& o = stage_.bodies[b];
@@ -93,6 +102,7 @@ class RungeKutta4 final : public Integrator {
 
   State stage_;
   std::vector<std::vector<Rate>> rates_;
+  std::vector<std::vector<double>> z_rates_;  // per stage, dz/dt of State::friction_values
 };
 
 }  // namespace

@@ -158,7 +158,7 @@ void ModelBuilder::setJointFriction(int joint, const JointFriction& friction) {
   Joint& j = checkedJoint(joint, "friction", true);
   const std::string who = jointWho(j.name) + " friction";
   if (!friction.law) throw ModelError(who + ": no friction law");
-  if (friction.law->stateful())
+  if (friction.law->stateful() || friction.law->dynamic() != nullptr)
     throw ModelError(who + ": law " + std::string(friction.law->name()) +
                      " keeps per-contact state; joint friction takes memoryless laws only");
   if (!std::isfinite(friction.radius) || friction.radius <= 0.0)

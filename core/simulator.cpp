@@ -53,6 +53,12 @@ StepStatus Simulator::advance() {
   const ScopedFlushDenormals flush;  // core/flush_denormals.hpp: why
   if (!energy_.started()) energy_.reset(state_, current());
   last_good_ = state_;
+  // Dynamic friction: every contact point of the evaluation at the step's start gets its
+  // internal state's record before the integrator carries the states with the bodies.
+  if (dynamics_.hasDynamicFriction()) {
+    current();
+    if (dynamics_.registerFrictionStates(state_)) evaluated_ = false;
+  }
   const IntegratorStatus integrated =
       integrator_->step(dynamics_, state_, model().options.time_step, evaluated_);
   if (integrated.ok) dynamics_.projectConstraints(state_);  // no-op unless enabled
@@ -110,6 +116,17 @@ StepStatus Simulator::check() {
       std::replace(words.begin(), words.end(), '_', ' ');
       return failed(name, quantity, "body '" + name + "' " + words + " is not finite");
     }
+  }
+  for (const contact::StickAnchor& record : state_.friction_states) {
+    const double* z = &state_.friction_values[static_cast<std::size_t>(record.state)];
+    if (std::all_of(z, z + record.state_size, [](double x) { return std::isfinite(x); })) continue;
+    const ContactPair& pair = m.contact_pairs[contact::keyPair(record.key)];
+    const Geometry& g = m.geometries[pair.geometry_b];
+    const std::string name = g.body.isWorld() ? "world" : m.bodies[g.body.value].name;
+    return failed(name, "friction_state",
+                  "the internal state of friction law '" +
+                      std::string(m.materials[pair.material].friction->name()) +
+                      "' at a contact of body '" + name + "' is not finite");
   }
   const Workspace& ws = current();
   for (const auto& c : ws.contacts) {

@@ -49,6 +49,14 @@ class ArkodeDopri5 final : public SundialsStepper {
     if (!ok) fail("setting up ARKODE failed");
   }
 
+  void discard() override {
+    if (memory_) ERKStepFree(&memory_);
+    if (error_) N_VDestroy(error_);
+    if (weight_) N_VDestroy(weight_);
+    memory_ = nullptr;
+    error_ = weight_ = nullptr;
+  }
+
   Advance advance(double tout, double& t) override {
     last_flag_ = ERKStepEvolve(memory_, tout, y_, &t, ARK_NORMAL);
     if (last_flag_ == ARK_SUCCESS) return Advance::kReached;

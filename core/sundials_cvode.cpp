@@ -64,6 +64,18 @@ class CvodeBdf final : public SundialsStepper {
     if (!ok) fail("setting up CVODE failed");
   }
 
+  void discard() override {
+    if (memory_) CVodeFree(&memory_);
+    if (solver_) SUNLinSolFree(solver_);
+    if (matrix_) SUNMatDestroy(matrix_);
+    if (error_) N_VDestroy(error_);
+    if (weight_) N_VDestroy(weight_);
+    memory_ = nullptr;
+    solver_ = nullptr;
+    matrix_ = nullptr;
+    error_ = weight_ = nullptr;
+  }
+
   Advance advance(double tout, double& t) override {
     last_flag_ = CVode(memory_, tout, y_, &t, CV_NORMAL);
     if (last_flag_ == CV_SUCCESS) return Advance::kReached;

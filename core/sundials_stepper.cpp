@@ -1,5 +1,6 @@
 #include "core/sundials_stepper.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,8 +11,19 @@ namespace {
 
 constexpr double kQuaternionDrift = 1e-6;  // restart from a normalized q beyond this
 
+// The records of dynamic friction states, by what y depends on (not where they were set).
+bool sameRecords(const std::vector<contact::StickAnchor>& a,
+                 const std::vector<contact::StickAnchor>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
+    return x.key == y.key && x.state == y.state && x.state_size == y.state_size &&
+           x.normal == y.normal;
+  });
+}
+
 bool sameState(const State& a, const State& b) {
-  if (a.time != b.time || a.bodies.size() != b.bodies.size() || a.stick_anchors != b.stick_anchors)
+  if (a.time != b.time || a.bodies.size() != b.bodies.size() ||
+      a.stick_anchors != b.stick_anchors || a.friction_values != b.friction_values ||
+      !sameRecords(a.friction_states, b.friction_states))
     return false;
   for (std::size_t i = 0; i < a.bodies.size(); ++i) {
     const BodyState& s = a.bodies[i];
@@ -119,6 +131,16 @@ IntegratorStatus SundialsStepper::step(Dynamics& dynamics, State& state, double 
     running_ = false;
   }
   if (!running_ || !sameState(state, last_out_) || system_.quaternionDrift(y) > kQuaternionDrift) {
+    if (N_VGetLength(y_) != system_.sizeFor(state)) {  // friction-state records came or went
+      const Stats s = statistics();
+      done_.steps += s.steps;
+      done_.rejected += s.rejected;
+      discard();
+      N_VDestroy(y_);
+      y_ = N_VNew_Serial(static_cast<sunindextype>(system_.sizeFor(state)), context_);
+      if (!y_) throw std::runtime_error(name_ + ": cannot allocate the SUNDIALS state vector");
+      y = N_VGetArrayPointer(y_);
+    }
     if (!start_is_evaluated) ++counters_.evaluations;
     const Workspace& ws = start_is_evaluated ? dynamics.workspace() : dynamics.evaluate(state);
     system_.begin(state, ws, y);

@@ -53,6 +53,8 @@ class SundialsStepper : public Integrator {
   // Creates (first time) or re-initializes the method at (t0, y_), with a first internal step
   // of initial_step (0: the method's own estimate).
   virtual void start(double t0, double initial_step) = 0;
+  // Frees the method's memory so that the next start() creates it for a y of a new length.
+  virtual void discard() = 0;
   // The last internal step taken [s] (0 before the first).
   virtual double lastStep() = 0;
   // Integrates towards tout; y_ then holds y(t).

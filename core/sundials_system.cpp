@@ -43,6 +43,11 @@ OdeSystem::OdeSystem(const Model& model, bool events) : model_(model), events_(e
 void OdeSystem::begin(const State& state, const Workspace& ws, double* y) {
   base_ = state;
   scratch_.stick_anchors = state.stick_anchors;  // stateful friction: fixed over a segment
+  scratch_.friction_states = state.friction_states;
+  values_ = static_cast<int>(state.friction_values.size());
+  cached_y_.resize(static_cast<std::size_t>(size()));
+  std::copy(state.friction_values.begin(), state.friction_values.end(),
+            y + kPerBody * dynamic_.size());
   for (std::size_t i = 0; i < dynamic_.size(); ++i) {
     const BodyState& s = state.bodies[dynamic_[i]];
     double* block = y + kPerBody * i;
@@ -89,6 +94,8 @@ void OdeSystem::unpack(double t, const double* y, State& out) const {
     s.velocity = Vec3(block[kV], block[kV + 1], block[kV + 2]);
     s.angular_velocity = Vec3(block[kW], block[kW + 1], block[kW + 2]);
   }
+  const double* z = y + kPerBody * dynamic_.size();
+  out.friction_values.assign(z, z + values_);
 }
 
 bool OdeSystem::rhs(double t, const double* y, double* ydot) {
@@ -110,6 +117,7 @@ bool OdeSystem::rhs(double t, const double* y, double* ydot) {
     }
     for (int k = 0; k < 4; ++k) d[kQ + k] = dq[k];
   }
+  std::copy_n(ws.friction_state_rate.begin(), values_, ydot + kPerBody * dynamic_.size());
   bad_component_ = -1;
   for (int k = 0; k < size(); ++k) {
     if (!std::isfinite(ydot[k])) {
@@ -183,6 +191,16 @@ void OdeSystem::normalizeQuaternions(double* y) const {
 
 std::pair<std::string, std::string> OdeSystem::componentName(int i) const {
   if (i < 0 || i >= size()) return {"", ""};
+  const int bodies = kPerBody * static_cast<int>(dynamic_.size());
+  if (i >= bodies) {  // an internal friction state: the body B of its contact
+    for (const contact::StickAnchor& r : scratch_.friction_states) {
+      if (i - bodies < r.state || i - bodies >= r.state + r.state_size) continue;
+      const ContactPair& pair = model_.contact_pairs[contact::keyPair(r.key)];
+      const BodyIndex b = model_.geometries[pair.geometry_b].body;
+      return {b.isWorld() ? "world" : model_.bodies[b.value].name, "friction_state"};
+    }
+    return {"", "friction_state"};
+  }
   static const char* kNames[kPerBody] = {
       "position.x",        "position.y",    "position.z",         "orientation.x",
       "orientation.y",     "orientation.z", "orientation.w",      "velocity.x",

@@ -2,7 +2,11 @@
 // integrators see, and the event functions they locate.
 //
 //   y = [p (3), q (4, order x y z w), v (3), w (3)] per dynamic body     (13 values each)
+//       then the internal states of dynamic friction laws (State::friction_values)
 //   f = [v, 0.5 [0, w] (x) q, a, alpha]       a, alpha from Dynamics::evaluate
+//       then dz/dt (Workspace::friction_state_rate)
+// The friction states' records (which contact owns which values) are those of the segment
+// start: y's length follows their count, so a change of the records restarts the method.
 // q is normalized before each force evaluation but the integrator's copy is left alone: the
 // quaternion rate is linear in q with a skew matrix, so |q| stays constant up to the local
 // error, and the stepper restarts from a normalized q when it drifts. Kinematic bodies are
@@ -36,7 +40,12 @@ class OdeSystem {
 
   OdeSystem(const Model& model, bool events);
 
-  int size() const { return kPerBody * static_cast<int>(dynamic_.size()); }
+  // Length of y for the segment begun last, and for a segment starting at `state`.
+  int size() const { return kPerBody * static_cast<int>(dynamic_.size()) + values_; }
+  int sizeFor(const State& state) const {
+    return kPerBody * static_cast<int>(dynamic_.size()) +
+           static_cast<int>(state.friction_values.size());
+  }
   int eventCount() const { return events_ ? event_count_ : 0; }
 
   // The Dynamics to evaluate with (must outlive the calls that follow).
@@ -91,6 +100,7 @@ class OdeSystem {
   std::vector<int> points_;
   long evaluations_ = 0;
   int bad_component_ = -1;
+  int values_ = 0;  // friction-state values in y (after the bodies)
 };
 
 }  // namespace tribo

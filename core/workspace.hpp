@@ -32,6 +32,11 @@ struct Workspace {
   // One per contact point: contactKinematics (point, depth rate, slip), normalForces
   // (normal_force), friction (friction_force, mu).
   std::vector<contact::ContactRecord> contacts;
+  // friction, dynamic laws: dz/dt for State::friction_values (zero where no contact point
+  // uses the record in this evaluation), expressed against each record's stored normal; and
+  // per record of State::friction_states the contact point that used it (-1: none).
+  std::vector<double> friction_state_rate;
+  std::vector<int> friction_state_contact;
   // assemble, per body, by source (gravity is m g, not stored). joint_wrench: joint limits,
   // springs, dampers, efforts, constant-load friction; solveConstraints adds the friction
   // under reaction load.

@@ -69,7 +69,7 @@ std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& co
 ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
   const Model& model = *scene.model;
   for (const contact::Material& material : model.materials)
-    if (material.friction->stateful())
+    if (material.friction->stateful() || material.friction->dynamic() != nullptr)
       throw ModesError("friction law '" + std::string(material.friction->name()) +
                        "' keeps per-contact state, which the linearization does not cover: "
                        "use a memoryless law for the stability analysis");
