@@ -61,7 +61,7 @@ Eigen::Vector3d LuGreLaw::force(const double* z, const double* zdot, const Eigen
   const Eigen::Vector3d per_load = params_.sigma0 * Eigen::Vector3d(z[0], z[1], z[2]) +
                                    params_.sigma1 * Eigen::Vector3d(zdot[0], zdot[1], zdot[2]) +
                                    params_.sigma2 * slip;
-  if (mu_out != nullptr) *mu_out = per_load.norm();
+  if (mu_out != nullptr) *mu_out = fn > 0.0 ? per_load.norm() : 0.0;  // |F_t| / fn, 0 unloaded
   return -fn * per_load;
 }
 
