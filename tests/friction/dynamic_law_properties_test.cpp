@@ -274,9 +274,10 @@ TEST_P(DynamicLawProperties, StableStepMatchesFineRk4AtFrozenSlip) {
         // RK4 at 1e-4 of the relaxation time: error ~ (1e-4)^4 relative, far below the check.
         test::rk4(law(), reference, slip, fn, h, static_cast<long>(std::ceil(kh * 1e4)));
         const double scale = std::max(scaleOf(start), scaleOf(reference));
-        // Exact updates agree to rounding amplified by the exponentials (1e-9 relative); the
-        // second-order elasto_plastic update over <= 64 substeps to 1e-3 of the state scale.
-        double tol = (GetParam().exact ? 1e-9 : 1e-3) * scale;
+        // Exact updates agree to rounding amplified by the exponentials (1e-9 relative). The
+        // second-order elasto_plastic update moves at most 0.05 of alpha's transition width
+        // (< the state scale) per substep: error ~ 0.05^2 of it (measured: 1e-5 relative).
+        double tol = (GetParam().exact ? 1e-9 : 2.5e-3) * scale;
         // Switching elements: one RK4 step of h / n across each switch, rate jump <= 2 |s|.
         if (GetParam().switching) tol += 2.0 * slip.norm() * h / std::ceil(kh * 1e4);
         for (int i = 0; i < law().stateSize(); ++i) {
