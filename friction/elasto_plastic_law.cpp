@@ -54,10 +54,15 @@ std::string ElastoPlasticLaw::stateName(int i) const {
 void ElastoPlasticLaw::initialState(double* z) const { z[0] = z[1] = z[2] = 0.0; }
 
 double ElastoPlasticLaw::alpha(const Eigen::Vector3d& z, const Eigen::Vector3d& slip) const {
+  return alphaAt(z, slip, g_.value(slip.norm()));
+}
+
+double ElastoPlasticLaw::alphaAt(const Eigen::Vector3d& z, const Eigen::Vector3d& slip,
+                                 double g) const {
   if (!(z.dot(slip) > 0.0)) return 0.0;
   const double n = z.norm();
   if (n <= z_ba_) return 0.0;
-  const double z_ss = g_.value(slip.norm()) / params_.sigma0;
+  const double z_ss = g / params_.sigma0;
   if (n >= z_ss) return 1.0;
   return 0.5 + 0.5 * std::sin(std::numbers::pi * (n - 0.5 * (z_ss + z_ba_)) / (z_ss - z_ba_));
 }
@@ -66,8 +71,9 @@ void ElastoPlasticLaw::rate(const double* z, const Eigen::Vector3d& slip, double
                             double* zdot) const {
   const Eigen::Vector3d zv(z[0], z[1], z[2]);
   const double v = slip.norm();
-  const double a = alpha(zv, slip);
-  const double k = a == 0.0 ? 0.0 : a * params_.sigma0 * v / g_.value(v);
+  const double g = g_.value(v);
+  const double a = alphaAt(zv, slip, g);
+  const double k = a == 0.0 ? 0.0 : a * params_.sigma0 * v / g;
   for (int i = 0; i < 3; ++i) zdot[i] = slip[i] - k * z[i];
 }
 
@@ -107,16 +113,17 @@ void ElastoPlasticLaw::stableStep(double* z, const Eigen::Vector3d& slip, double
   } else {
     zv += t_elastic * slip;
     const double rest = h - t_elastic;
-    const double k = params_.sigma0 * v / g_.value(v);
+    const double g = g_.value(v);
+    const double k = params_.sigma0 * v / g;
     // Substeps short enough for alpha's transition (z_ss - z_ba wide) to be resolved where z
     // moves with the slip; at most 64 (beyond that the relaxation is over and alpha = 1).
-    const double width = g_.value(v) / params_.sigma0 - z_ba_;
+    const double width = g / params_.sigma0 - z_ba_;
     const double wanted = std::ceil(v * rest / (0.05 * width));
     const int n = static_cast<int>(std::clamp(wanted, 1.0, 64.0));
     const double dt = rest / n;
     for (int i = 0; i < n; ++i) {
-      const Eigen::Vector3d mid = frozenAlpha(zv, slip, alpha(zv, slip) * k, 0.5 * dt);
-      zv = frozenAlpha(zv, slip, alpha(mid, slip) * k, dt);
+      const Eigen::Vector3d mid = frozenAlpha(zv, slip, alphaAt(zv, slip, g) * k, 0.5 * dt);
+      zv = frozenAlpha(zv, slip, alphaAt(mid, slip, g) * k, dt);
     }
   }
   for (int i = 0; i < 3; ++i) z[i] = zv[i];

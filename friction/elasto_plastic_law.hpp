@@ -84,6 +84,8 @@ class ElastoPlasticLaw final : public DynamicFrictionLaw {
   double breakAwayDeflection() const { return z_ba_; }
 
  private:
+  // alpha with g(|s|) already known.
+  double alphaAt(const Eigen::Vector3d& z, const Eigen::Vector3d& slip, double g) const;
   // z over time t at frozen slip with alpha frozen: z e^(-a k t) + s (1 - e^(-a k t)) / (a k).
   static Eigen::Vector3d frozenAlpha(const Eigen::Vector3d& z, const Eigen::Vector3d& slip,
                                      double ak, double t);

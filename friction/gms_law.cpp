@@ -84,7 +84,16 @@ std::string GmsLaw::stateName(int i) const {
 void GmsLaw::initialState(double* z) const { std::fill(z, z + stateSize(), 0.0); }
 
 bool GmsLaw::sliding(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip) const {
-  return zi.dot(slip) > 0.0 && k_[i] * zi.norm() >= alpha_[i] * s_.value(slip.norm());
+  return slidingAt(i, zi, slip, s_.value(slip.norm()));
+}
+
+bool GmsLaw::slidingAt(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip,
+                       double stribeck) const {
+  // |k z| >= alpha S (1 - 1e-12), compared squared (no square root per element). The 1e-12
+  // band keeps an element settled on its limit sliding whichever way rounding put it (else
+  // sigma1 would see its rate flip between 0 and s).
+  const double limit = alpha_[i] * stribeck;
+  return zi.dot(slip) > 0.0 && k_[i] * k_[i] * zi.squaredNorm() >= limit * limit * (1.0 - 2e-12);
 }
 
 void GmsLaw::rate(const double* z, const Eigen::Vector3d& slip, double, double* zdot) const {
@@ -93,7 +102,7 @@ void GmsLaw::rate(const double* z, const Eigen::Vector3d& slip, double, double* 
   for (int i = 0; i < elements(); ++i) {
     const Eigen::Vector3d zi(z[3 * i], z[3 * i + 1], z[3 * i + 2]);
     Eigen::Vector3d rate_i = slip;
-    if (sliding(i, zi, slip)) {
+    if (slidingAt(i, zi, slip, stribeck)) {
       const double c = params_.attraction / k_[i];
       rate_i = c * (alpha_[i] / v * slip - (k_[i] / stribeck) * zi);
     }

@@ -10,13 +10,13 @@
 //   F_t = -F_n (sum_i (k_i z_i + sigma1 (k_i / K) dz_i/dt) + sigma2 s),   K = sum_i k_i
 //
 // The paper's sliding equation dF_i/dt = sgn(v) C (alpha_i - F_i / s(v)) read per unit load.
-// Switching rule (continuous in the state, decided from it alone, no stored mode): element
-// i slides when k_i |z_i| >= alpha_i S(|s|) and z_i . s > 0 (at its limit and pushed further),
-// and sticks otherwise. The paper's hybrid rule keeps a sliding element sliding until the
-// slip reverses; here an element whose limit rises above its force (deceleration along the
-// Stribeck curve) sticks again, so the frictional lag during deceleration comes from the
-// sticking rate k_i |s| rather than C. The rate is discontinuous where an element meets its
-// limit at an angle to s (the state then follows the limit circle, to within a step).
+// Switching rule (the state stays continuous; decided from it alone, no stored mode): element
+// i slides when k_i |z_i| >= alpha_i S(|s|) (1 - 1e-12) and z_i . s > 0 (at its limit, to
+// rounding, and pushed further), and sticks otherwise. The paper's hybrid rule keeps a sliding
+// element sliding until the slip reverses; here an element whose limit rises above its force
+// (deceleration along the Stribeck curve) sticks again, so the frictional lag during deceleration
+// comes from the sticking rate k_i |s| rather than C. The rate is discontinuous where an element
+// meets its limit at an angle to s (the state then follows the limit circle, to within a step).
 // Steady state: every element at its limit along s, F = S(v) + sigma2 v (coefficient()),
 // with sum alpha_i = 1. Presliding: the virgin curve is piecewise linear, stiffness K at
 // rest, each element yielding at deflection alpha_i mu_s / k_i; reversals give Masing loops.
@@ -94,6 +94,9 @@ class GmsLaw final : public DynamicFrictionLaw {
   bool sliding(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip) const;
 
  private:
+  bool slidingAt(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip,
+                 double stribeck) const;
+
   GmsParams params_;
   StribeckCurve s_;
   std::vector<double> k_;

@@ -25,6 +25,7 @@ LuGreLaw::LuGreLaw(const LuGreParams& p) : params_(p) {
 
 double LuGreLaw::g(double v) const {
   const double r = v / params_.v_s;
+  if (r * r > 745.0) return params_.mu_c;  // exp underflows to 0 (and glibc is slow there)
   return params_.mu_c + (params_.mu_s - params_.mu_c) * std::exp(-r * r);
 }
 

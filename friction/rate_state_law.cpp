@@ -3,15 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "friction/parameter_check.hpp"
 
 namespace tribo::friction {
 namespace {
 
-// asinh(exp(L)) without overflow: ln(2 y) + 1 / (4 y^2) for y = exp(L) > e^20.
+// asinh(exp(L)) without overflow: ln(2 y) + 1 / (4 y^2) for y = exp(L); beyond L = 20 the
+// second term (< 1.1e-18) is below the rounding of L itself (>= 20 * 1.1e-16) and is dropped.
 double asinhExp(double log_y) {
-  if (log_y > 20.0) return log_y + std::log(2.0) + 0.25 * std::exp(-2.0 * log_y);
+  if (log_y > 20.0) return log_y + std::numbers::ln2;
   return std::asinh(std::exp(log_y));
 }
 

@@ -20,9 +20,13 @@ struct StribeckCurve {
   double v_s = 1e-3;
   double delta = 2.0;
 
-  // g(|v|), in [mu_c, mu_s].
+  // g(|v|), in [mu_c, mu_s]. Far beyond v_s (exponent past 745) exp underflows to 0: return
+  // mu_c directly (glibc's exp is slow there); delta = 2 avoids pow.
   double value(double v) const {
-    return mu_c + (mu_s - mu_c) * std::exp(-std::pow(std::abs(v) / v_s, delta));
+    const double r = std::abs(v) / v_s;
+    const double p = delta == 2.0 ? r * r : std::pow(r, delta);
+    if (p > 745.0) return mu_c;
+    return mu_c + (mu_s - mu_c) * std::exp(-p);
   }
   // dg/dv (odd in v); at v = 0 the limit from v > 0: 0 for delta > 1, -(mu_s - mu_c) / v_s
   // for delta = 1, -infinity for delta < 1 (0 when mu_s = mu_c).
