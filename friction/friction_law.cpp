@@ -2,13 +2,19 @@
 // helper. Key handling lives here; each law's constructor checks the values.
 #include "friction/friction_law.hpp"
 
+#include <cmath>
 #include <span>
 #include <string>
 
 #include "friction/adams_law.hpp"
 #include "friction/coulomb_law.hpp"
+#include "friction/dahl_law.hpp"
 #include "friction/elastic_stick_law.hpp"
+#include "friction/elasto_plastic_law.hpp"
+#include "friction/gms_law.hpp"
 #include "friction/lugre_law.hpp"
+#include "friction/parameter_check.hpp"
+#include "friction/rate_state_law.hpp"
 #include "friction/recurdyn_law.hpp"
 #include "friction/roh_yoo_law.hpp"
 #include "friction/stribeck_law.hpp"
@@ -82,6 +88,16 @@ constexpr std::string_view kStepLawKeys[] = {"mu_s", "mu_k", "v_s", "v_d"};
 constexpr std::string_view kRohYooKeys[] = {"mu_s", "mu_k", "v_s", "a", "beta"};
 constexpr std::string_view kStribeckKeys[] = {"mu_s", "mu_k", "v_st", "delta", "viscous", "v_eps"};
 constexpr std::string_view kLuGreKeys[] = {"sigma0", "sigma1", "sigma2", "mu_c", "mu_s", "v_s"};
+constexpr std::string_view kDahlKeys[] = {"sigma0", "mu_c", "alpha"};
+constexpr std::string_view kElastoPlasticKeys[] = {"sigma0", "sigma1", "sigma2",       "mu_c",
+                                                   "mu_s",   "v_s",    "z_ba_fraction"};
+constexpr std::string_view kGmsKeys[] = {
+    "elements", "stiffness",  "k_1",     "k_2",     "k_3",     "k_4",     "k_5",
+    "k_6",      "k_7",        "k_8",     "alpha_1", "alpha_2", "alpha_3", "alpha_4",
+    "alpha_5",  "alpha_6",    "alpha_7", "alpha_8", "mu_c",    "mu_s",    "v_s",
+    "delta",    "attraction", "sigma1",  "sigma2"};
+constexpr std::string_view kRateStateKeys[] = {"mu0", "a", "b", "d_c", "v0", "theta0"};
+constexpr std::string_view kRateStateOptions[] = {"evolution"};
 constexpr std::string_view kElasticStickKeys[] = {"mu_s", "mu_k", "stiffness", "damping",
                                                   "stick_speed"};
 
@@ -120,6 +136,100 @@ std::unique_ptr<const FrictionLaw> makeLuGre(const LawSpec& spec) {
   p.mu_s = reader.optional("mu_s", p.mu_s);
   p.v_s = reader.optional("v_s", p.v_s);
   return std::make_unique<LuGreLaw>(p);
+}
+
+std::unique_ptr<const FrictionLaw> makeDahl(const LawSpec& spec) {
+  const SpecReader reader(spec, kDahlKeys);
+  DahlParams p;
+  p.sigma0 = reader.optional("sigma0", p.sigma0);
+  p.mu_c = reader.optional("mu_c", p.mu_c);
+  p.alpha = reader.optional("alpha", p.alpha);
+  return std::make_unique<DahlLaw>(p);
+}
+
+std::unique_ptr<const FrictionLaw> makeElastoPlastic(const LawSpec& spec) {
+  const SpecReader reader(spec, kElastoPlasticKeys);
+  ElastoPlasticParams p;
+  p.sigma0 = reader.optional("sigma0", p.sigma0);
+  p.sigma1 = reader.optional("sigma1", p.sigma1);
+  p.sigma2 = reader.optional("sigma2", p.sigma2);
+  p.mu_c = reader.optional("mu_c", p.mu_c);
+  p.mu_s = reader.optional("mu_s", p.mu_s);
+  p.v_s = reader.optional("v_s", p.v_s);
+  p.z_ba_fraction = reader.optional("z_ba_fraction", p.z_ba_fraction);
+  return std::make_unique<ElastoPlasticLaw>(p);
+}
+
+// Per-element values NAME_1..NAME_N of gms: all N or none, none beyond N.
+std::vector<double> gmsElementValues(const LawSpec& spec, const std::string& name, int n) {
+  std::vector<double> values;
+  int given = 0;
+  for (int i = 1; i <= GmsParams::kMaxElements; ++i) {
+    const auto it = spec.values.find(name + "_" + std::to_string(i));
+    if (it == spec.values.end()) continue;
+    ++given;
+    if (i > n)
+      ParameterCheck("gms").fail(name + "_" + std::to_string(i) + " given for " +
+                                 std::to_string(n) + " elements (set elements)");
+  }
+  if (given == 0) return values;
+  for (int i = 1; i <= n; ++i) {
+    const auto it = spec.values.find(name + "_" + std::to_string(i));
+    if (it == spec.values.end())
+      ParameterCheck("gms").fail("missing " + name + "_" + std::to_string(i) + ": give " + name +
+                                 "_1.." + name + "_N for all N = " + std::to_string(n) +
+                                 " elements or none");
+    values.push_back(it->second);
+  }
+  return values;
+}
+
+std::unique_ptr<const FrictionLaw> makeGms(const LawSpec& spec) {
+  const SpecReader reader(spec, kGmsKeys);
+  const ParameterCheck check("gms");
+  GmsParams p;
+  const double elements = reader.optional("elements", p.elements);
+  check.require(std::isfinite(elements) && elements == std::floor(elements) && elements >= 1 &&
+                    elements <= GmsParams::kMaxElements,
+                "elements must be an integer in 1.." + std::to_string(GmsParams::kMaxElements),
+                elements);
+  p.elements = static_cast<int>(elements);
+  p.stiffness = reader.optional("stiffness", p.stiffness);
+  p.k = gmsElementValues(spec, "k", p.elements);
+  if (!p.k.empty() && spec.values.count("stiffness") != 0)
+    check.fail("give stiffness or k_1..k_N, not both");
+  p.alpha = gmsElementValues(spec, "alpha", p.elements);
+  p.mu_c = reader.optional("mu_c", p.mu_c);
+  p.mu_s = reader.optional("mu_s", p.mu_s);
+  p.v_s = reader.optional("v_s", p.v_s);
+  p.delta = reader.optional("delta", p.delta);
+  p.attraction = reader.optional("attraction", p.attraction);
+  p.sigma1 = reader.optional("sigma1", p.sigma1);
+  p.sigma2 = reader.optional("sigma2", p.sigma2);
+  return std::make_unique<GmsLaw>(p);
+}
+
+std::unique_ptr<const FrictionLaw> makeRateState(const LawSpec& spec) {
+  const SpecReader reader(spec, kRateStateKeys, kRateStateOptions);
+  const ParameterCheck check("rate_state");
+  RateStateParams p;
+  p.mu0 = reader.optional("mu0", p.mu0);
+  p.a = reader.optional("a", p.a);
+  p.b = reader.optional("b", p.b);
+  p.d_c = reader.optional("d_c", p.d_c);
+  p.v0 = reader.optional("v0", p.v0);
+  if (spec.values.count("theta0") != 0) {
+    p.theta0 = reader.required("theta0");
+    check.require(p.theta0 > 0.0 || std::isnan(p.theta0), "theta0 must be > 0 [s]", p.theta0);
+  }
+  const std::string evolution = reader.option("evolution");
+  if (evolution == "slip") {
+    p.evolution = RateStateEvolution::kSlip;
+  } else if (!evolution.empty() && evolution != "aging") {
+    throw FrictionParameterError("rate_state: evolution must be one of aging, slip (got '" +
+                                 evolution + "')");
+  }
+  return std::make_unique<RateStateLaw>(p);
 }
 
 std::unique_ptr<const FrictionLaw> makeRecurDyn(const LawSpec& spec) {
@@ -181,6 +291,10 @@ std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec) {
   if (spec.name == "stribeck") return makeStribeck(spec);
   if (spec.name == "elastic_stick") return makeElasticStick(spec);
   if (spec.name == "lugre") return makeLuGre(spec);
+  if (spec.name == "dahl") return makeDahl(spec);
+  if (spec.name == "elasto_plastic") return makeElastoPlastic(spec);
+  if (spec.name == "gms") return makeGms(spec);
+  if (spec.name == "rate_state") return makeRateState(spec);
   std::string known;
   for (const std::string& name : knownFrictionLaws()) known += (known.empty() ? "" : ", ") + name;
   for (const std::string& name : knownStatefulFrictionLaws()) known += ", " + name;
@@ -201,7 +315,8 @@ const std::vector<std::string>& knownStatefulFrictionLaws() {
 }
 
 const std::vector<std::string>& knownDynamicFrictionLaws() {
-  static const std::vector<std::string> names = {"lugre"};
+  static const std::vector<std::string> names = {"lugre", "dahl", "elasto_plastic", "gms",
+                                                 "rate_state"};
   return names;
 }
 

@@ -25,6 +25,7 @@ LuGreLaw::LuGreLaw(const LuGreParams& p) : params_(p) {
 
 double LuGreLaw::g(double v) const {
   const double r = v / params_.v_s;
+  if (r * r > 745.0) return params_.mu_c;  // exp underflows to 0 (and glibc is slow there)
   return params_.mu_c + (params_.mu_s - params_.mu_c) * std::exp(-r * r);
 }
 
@@ -61,7 +62,7 @@ Eigen::Vector3d LuGreLaw::force(const double* z, const double* zdot, const Eigen
   const Eigen::Vector3d per_load = params_.sigma0 * Eigen::Vector3d(z[0], z[1], z[2]) +
                                    params_.sigma1 * Eigen::Vector3d(zdot[0], zdot[1], zdot[2]) +
                                    params_.sigma2 * slip;
-  if (mu_out != nullptr) *mu_out = per_load.norm();
+  if (mu_out != nullptr) *mu_out = fn > 0.0 ? per_load.norm() : 0.0;  // |F_t| / fn, 0 unloaded
   return -fn * per_load;
 }
 

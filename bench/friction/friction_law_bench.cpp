@@ -5,14 +5,20 @@
 //   BM_FrictionCoefficient/<law>                          one law from the factory
 //   BM_FrictionCoefficient/baseline_inline_coulomb_tanh   the baseline
 //   BM_TangentialForce/roh_yoo                            tangentialForce per 3D slip
+//   BM_DynamicForce/<law>                                 rate + force of a dynamic law per 3D
+//                                                         slip (its state reused), the memoryless
+//                                                         baseline being BM_TangentialForce/roh_yoo
 //
-// items_per_second counts coefficient (or force) evaluations.
+// items_per_second counts coefficient (or force) evaluations. The dynamic laws' cost ratio is
+// time(BM_DynamicForce/<law>) / time(BM_TangentialForce/roh_yoo).
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
+#include "friction/dynamic_law.hpp"
 #include "friction/friction_law.hpp"
 #include "support/table1_laws.hpp"
 
@@ -55,19 +61,50 @@ void BM_BaselineInlineCoulombTanh(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kSpeeds);
 }
 
-void BM_TangentialForce(benchmark::State& state, const std::string& name) {
-  const auto law = makeFrictionLaw(table1(name));
+// Slips of the speeds above, directions turning in the tangent plane with a small out-of-plane
+// part.
+std::vector<Eigen::Vector3d> turningSlips() {
   const auto& speeds = slipSpeeds();
-  std::array<Eigen::Vector3d, kSpeeds> slips;
+  std::vector<Eigen::Vector3d> slips(kSpeeds);
   for (int i = 0; i < kSpeeds; ++i) {
-    // Slip directions turning in the tangent plane, with a small out-of-plane part.
     const double angle = 0.37 * i;
     slips[i] = speeds[i] * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.01).normalized();
   }
+  return slips;
+}
+
+void BM_TangentialForce(benchmark::State& state, const std::string& name) {
+  const auto law = makeFrictionLaw(table1(name));
+  const auto slips = turningSlips();
   const double fn = 98.1;
   for (auto _ : state) {
     for (const Eigen::Vector3d& slip : slips) {
       benchmark::DoNotOptimize(tangentialForce(*law, slip, fn));
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kSpeeds);
+}
+
+// One evaluation as the engine does it per contact and stage: dz/dt at (z, s), then the force
+// from z and dz/dt. The states are a settled one per slip (computed once, outside the timing).
+void BM_DynamicForce(benchmark::State& state, const std::string& name) {
+  const auto owner = makeFrictionLaw({name, {}, {}});
+  const DynamicFrictionLaw& law = *owner->dynamic();
+  const auto slips = turningSlips();
+  const int n = law.stateSize();
+  std::vector<double> z(static_cast<std::size_t>(n) * kSpeeds);
+  std::vector<double> zdot(static_cast<std::size_t>(n));
+  for (int i = 0; i < kSpeeds; ++i) {
+    double* zi = z.data() + static_cast<std::size_t>(n) * i;
+    law.initialState(zi);
+    law.stableStep(zi, slips[i], 98.1, 0.37 * (i % 5));  // a mix of settled and fresh states
+  }
+  const double fn = 98.1;
+  for (auto _ : state) {
+    for (int i = 0; i < kSpeeds; ++i) {
+      const double* zi = z.data() + static_cast<std::size_t>(n) * i;
+      law.rate(zi, slips[i], fn, zdot.data());
+      benchmark::DoNotOptimize(law.force(zi, zdot.data(), slips[i], fn, nullptr));
     }
   }
   state.SetItemsProcessed(state.iterations() * kSpeeds);
@@ -82,6 +119,9 @@ const bool registered = [] {
   }
   benchmark::RegisterBenchmark("BM_TangentialForce/roh_yoo", BM_TangentialForce,
                                std::string("roh_yoo"));
+  for (const std::string& name : knownDynamicFrictionLaws()) {
+    benchmark::RegisterBenchmark(("BM_DynamicForce/" + name).c_str(), BM_DynamicForce, name);
+  }
   return true;
 }();
 

@@ -143,8 +143,8 @@ TEST(FrictionParameters, OptionsAreChecked) {
 }
 
 TEST(FrictionParameters, UnknownLawListsTheKnownOnes) {
-  const std::string message = errorFor({"lugre", {}, {}});
-  EXPECT_THAT(message, HasSubstr("unknown friction law 'lugre'"));
+  const std::string message = errorFor({"karnopp", {}, {}});
+  EXPECT_THAT(message, HasSubstr("unknown friction law 'karnopp'"));
   EXPECT_THAT(message, HasSubstr("coulomb, recurdyn, adams, roh_yoo, stribeck"));
 }
 
