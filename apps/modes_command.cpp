@@ -14,7 +14,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: tribo modes SCENE.yaml --out DIR [--set NAME=VALUE ...] [--settle]\n"
-    "                   [--boundary NAME=LO:HI] [--growth-tolerance X]\n"
+    "                   [--boundary NAME=LO:HI] [--growth-tolerance X] [--steady-tolerance X]\n"
     "  linear stability of steady sliding: finds the steady state (dynamic bodies at rest,\n"
     "  belts moving), linearizes about it and prints each mode's frequency, growth rate,\n"
     "  damping ratio and what moves; writes DIR/modes.json and DIR/modes.csv\n"
@@ -22,6 +22,8 @@ constexpr const char* kUsage =
     "  --boundary  bisect NAME over [LO, HI] for where the largest growth rate crosses zero;\n"
     "              writes DIR/boundary.json\n"
     "  --growth-tolerance  growth rate above which a mode counts as unstable (1e-6 1/s)\n"
+    "  --steady-tolerance  largest acceleration accepted at the steady state (1e-8 m/s^2);\n"
+    "              stiff springs anchored far away round above the default\n"
     "exit status: 0 stable, 1 usage, 2 bad scene, 4 output error, 8 unstable,\n"
     "             9 no steady state, 10 linearization or eigenproblem failed\n";
 
@@ -56,8 +58,8 @@ Arguments parse(const std::vector<std::string>& args) {
   Arguments a;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& s = args[i];
-    const bool takes_value =
-        s == "--set" || s == "--out" || s == "--boundary" || s == "--growth-tolerance";
+    const bool takes_value = s == "--set" || s == "--out" || s == "--boundary" ||
+                             s == "--growth-tolerance" || s == "--steady-tolerance";
     if (takes_value && i + 1 >= args.size()) throw std::invalid_argument(s + " needs a value");
     if (s == "--set")
       a.overrides.push_back(args[++i]);
@@ -67,6 +69,8 @@ Arguments parse(const std::vector<std::string>& args) {
       a.boundary = parseBoundary(args[++i]);
     else if (s == "--growth-tolerance")
       a.spec.growth_tolerance = number(s, args[++i]);
+    else if (s == "--steady-tolerance")
+      a.spec.steady.tolerance = number(s, args[++i]);
     else if (s == "--settle")
       a.spec.steady.settle = true;
     else if (s.rfind("--", 0) == 0)

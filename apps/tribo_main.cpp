@@ -28,6 +28,7 @@
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
 #include "study/dir_lock.hpp"
+#include "study/early_growth.hpp"
 #include "study/output_budget.hpp"
 #include "study/result_writer.hpp"
 #include "study/run_progress.hpp"
@@ -106,6 +107,12 @@ void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& 
     std::printf("period           %.6g s\n", s.period);
     std::printf("time to 98%%      %.6g s\n", s.time_to_98);
     std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
+    const tribo::study::EarlyGrowth g = tribo::study::earlyGrowth(s.cycles);
+    if (g.measured)
+      std::printf("early growth     %.7g 1/s (cycles %d-%d, %.4g-%.4g s)\n", g.rate,
+                  g.first_cycle + 1, g.first_cycle + g.cycles, g.t_start, g.t_end);
+    else
+      std::printf("early growth     not measured (fewer than 3 cycles after the first)\n");
   }
   std::printf("max penetration  %.3g m\n", r.stats.max_penetration);
   const auto& limit = r.stability.limit;

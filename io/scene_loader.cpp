@@ -918,18 +918,40 @@ class Loader {
 
 }  // namespace
 
+namespace {
+
+[[noreturn]] void yamlError(const YAML::Exception& e, const std::string& name) {
+  const int line = e.mark.line < 0 ? 0 : e.mark.line + 1;
+  const int column = e.mark.column < 0 ? 0 : e.mark.column + 1;
+  throw SceneError({name, line, column}, "", "invalid YAML: " + e.msg);
+}
+
+}  // namespace
+
+SceneDocument::SceneDocument(const std::string& yaml, const std::string& name_for_errors)
+    : name_(name_for_errors) {
+  try {
+    root_ = std::make_shared<const YAML::Node>(YAML::Load(yaml));
+  } catch (const YAML::Exception& e) {
+    yamlError(e, name_);
+  }
+}
+
+Scene SceneDocument::load(const std::vector<std::string>& overrides,
+                          const std::vector<std::string>& package_paths,
+                          const RunSettings& settings) const {
+  try {
+    return Loader(name_, *root_, package_paths).load(overrides, settings);
+  } catch (const YAML::Exception& e) {  // any the reader did not foresee
+    yamlError(e, name_);
+  }
+}
+
 Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
                           const std::vector<std::string>& overrides,
                           const std::vector<std::string>& package_paths,
                           const RunSettings& settings) {
-  try {
-    const YAML::Node root = YAML::Load(yaml);
-    return Loader(name_for_errors, root, package_paths).load(overrides, settings);
-  } catch (const YAML::Exception& e) {  // syntax errors, and any the reader did not foresee
-    const int line = e.mark.line < 0 ? 0 : e.mark.line + 1;
-    const int column = e.mark.column < 0 ? 0 : e.mark.column + 1;
-    throw SceneError({name_for_errors, line, column}, "", "invalid YAML: " + e.msg);
-  }
+  return SceneDocument(yaml, name_for_errors).load(overrides, package_paths, settings);
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,

@@ -22,6 +22,10 @@
 #include "core/model.hpp"
 #include "io/scene_parameters.hpp"
 
+namespace YAML {
+class Node;
+}
+
 namespace tribo::io {
 
 // Which body coordinate the run summary analyses (study/oscillation_summary.hpp).
@@ -78,5 +82,23 @@ Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_e
                           const std::vector<std::string>& overrides = {},
                           const std::vector<std::string>& package_paths = {},
                           const RunSettings& settings = {});
+
+// A scene's YAML text parsed once and built into Scenes many times: a sweep's points differ
+// only in their overrides, and parsing the text is most of the cost of loading a small
+// scene. load() gives what loadSceneFromString gives for the same text and arguments (the
+// model is rebuilt from the parsed tree, so everything derived from a parameter follows).
+// One document per thread: yaml-cpp's nodes are not safe to read from several threads at
+// once. Throws SceneError for text that is not YAML.
+class SceneDocument {
+ public:
+  SceneDocument(const std::string& yaml, const std::string& name_for_errors);
+  Scene load(const std::vector<std::string>& overrides = {},
+             const std::vector<std::string>& package_paths = {},
+             const RunSettings& settings = {}) const;
+
+ private:
+  std::string name_;
+  std::shared_ptr<const YAML::Node> root_;
+};
 
 }  // namespace tribo::io

@@ -9,6 +9,7 @@
 #include "contact/normal_law.hpp"
 #include "core/constraint_solver.hpp"
 #include "study/csv_text.hpp"
+#include "study/early_growth.hpp"
 #include "study/file_commit.hpp"
 
 namespace tribo::study {
@@ -141,6 +142,12 @@ void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
   j["mean"] = number(s.x_mean);
   j["cycles_found"] = s.cycles.size();
   j["cycles_used"] = s.cycles_used;
+  if (const EarlyGrowth g = earlyGrowth(s.cycles); g.measured)
+    j["early_growth"] = {{"rate", g.rate},
+                         {"first_cycle", g.first_cycle + 1},
+                         {"cycles", g.cycles},
+                         {"t_start", g.t_start},
+                         {"t_end", g.t_end}};
   j["run"] = {
       {"simulated_seconds", result.simulated_seconds},
       {"steps", result.stats.steps},

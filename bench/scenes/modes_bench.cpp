@@ -3,16 +3,22 @@
 //   m x'' + N mu'(v_b) x' + k x = 0   (the 2 x 2 companion matrix and its eigenvalues),
 // the cheapest possible answer. Names: BM_ModesLinearize/<scene> (basis, steps, central
 // differences with their check, eigenvalues; the steady state given), BM_ModesAnalysis/<scene>
-// (steady state included, as analyzeModes), BM_ModesLoad/<scene> (reading the scene: what a
-// point of `tribo sweep --analysis modes` adds); BM_Baseline_BeltClosedForm.
+// (steady state included, as analyzeModes), BM_ModesLoad/<scene> (reading the scene file:
+// parsing its YAML and building the model), BM_ModesBuild/<scene> (building the model from
+// the YAML parsed once, io::SceneDocument: what a point of `tribo sweep --analysis modes`
+// adds), BM_SweepModesPoint/{reparsed,parsed_once} (a whole sweep point of the belt, with and
+// without parsing the text again); BM_Baseline_BeltClosedForm.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Eigenvalues>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
 #include "study/modes.hpp"
+#include "study/sweep/sweep_point.hpp"
 
 namespace {
 
@@ -48,6 +54,34 @@ void BM_ModesLoad(benchmark::State& st, const std::string& name) {
   }
 }
 
+std::string sceneText(const std::string& name) {
+  std::ifstream in(scenePath(name));
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void BM_ModesBuild(benchmark::State& st, const std::string& name) {
+  const tribo::io::SceneDocument document(sceneText(name), scenePath(name));
+  for (auto _ : st) {
+    const auto scene = document.load({"v_b=1.2"});
+    benchmark::DoNotOptimize(scene.model.get());
+  }
+}
+
+void BM_SweepModesPoint(benchmark::State& st, bool parsed_once) {
+  tribo::study::SweepSetup setup;
+  setup.scene_path = scenePath("belt");
+  setup.scene_text = sceneText("belt");
+  setup.analysis = tribo::study::SweepAnalysis::kModes;
+  const tribo::io::SceneDocument document(setup.scene_text, setup.scene_path);
+  const std::vector<std::string> point{"v_b=1.2", "mu_s=0.4"};
+  for (auto _ : st) {
+    const auto o = tribo::study::runPoint(setup, point, nullptr, parsed_once ? &document : nullptr);
+    benchmark::DoNotOptimize(o.max_growth_rate);
+  }
+}
+
 void BM_Baseline_BeltClosedForm(benchmark::State& st) {
   const auto law = tribo::friction::makeFrictionLaw(
       {"roh_yoo",
@@ -67,6 +101,9 @@ void BM_Baseline_BeltClosedForm(benchmark::State& st) {
 BENCHMARK_CAPTURE(BM_ModesLinearize, belt, std::string("belt"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModesAnalysis, belt, std::string("belt"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModesLoad, belt, std::string("belt"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModesBuild, belt, std::string("belt"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SweepModesPoint, reparsed, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SweepModesPoint, parsed_once, true)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModesLinearize, mode_coupling, std::string("mode_coupling"))
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModesAnalysis, mode_coupling, std::string("mode_coupling"))

@@ -29,12 +29,15 @@ double riseTime(const OscillationSummary& s) {
 std::string pointStatusName(PointStatus status) { return kPointStatusNames.name(status); }
 
 PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& point_overrides,
-                      const std::filesystem::path* trajectory_dir) {
+                      const std::filesystem::path* trajectory_dir,
+                      const io::SceneDocument* document) {
   PointOutcome out;
   try {
     std::vector<std::string> overrides = setup.fixed_overrides;
     overrides.insert(overrides.end(), point_overrides.begin(), point_overrides.end());
-    const io::Scene scene = io::loadSceneFromString(setup.scene_text, setup.scene_path, overrides);
+    const io::Scene scene =
+        document ? document->load(overrides)
+                 : io::loadSceneFromString(setup.scene_text, setup.scene_path, overrides);
     if (setup.analysis == SweepAnalysis::kModes) {
       const ModesResult m = analyzeModes(scene);
       out.status = PointStatus::kComplete;

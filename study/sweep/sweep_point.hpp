@@ -16,6 +16,10 @@
 #include "friction/name_table.hpp"
 #include "study/sweep/sweep_settle.hpp"
 
+namespace tribo::io {
+class SceneDocument;
+}
+
 namespace tribo::study {
 
 // What a point computes: a run of the scene (the oscillation figures), or the linear
@@ -69,7 +73,10 @@ std::string pointStatusName(PointStatus status);
 // Runs one point (with SweepAnalysis::kModes: analyses it; a scene without a steady state
 // or whose eigenproblem fails is an error point). With `trajectory_dir`, also writes the run's
 // trajectory.csv and summary.json there (a write failure makes the point an error).
+// `document`: the setup's scene text already parsed (io::SceneDocument, one per thread), so
+// the point only rebuilds the model with its overrides; null: parsed here.
 PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& point_overrides,
-                      const std::filesystem::path* trajectory_dir = nullptr);
+                      const std::filesystem::path* trajectory_dir = nullptr,
+                      const io::SceneDocument* document = nullptr);
 
 }  // namespace tribo::study

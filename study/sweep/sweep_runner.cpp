@@ -133,10 +133,12 @@ void runPointsOnThreads(const SweepPlan& plan, const fs::path& out, unsigned job
                         const std::function<std::optional<std::size_t>()>& next,
                         const std::function<void(const FinishedPoint&)>& done) {
   auto worker = [&] {
+    // The scene text parsed once per thread (planSweep has loaded it, so it parses).
+    const io::SceneDocument document(plan.setup.scene_text, plan.setup.scene_path);
     while (const auto index = next()) {
       const fs::path dir = pointDir(out, *index, plan.grid.size());
       const PointOutcome o = runPoint(plan.setup, plan.grid.overrides(*index),
-                                      plan.keep_trajectories ? &dir : nullptr);
+                                      plan.keep_trajectories ? &dir : nullptr, &document);
       done({*index, formatSweepRow(*index, plan.grid, o, plan.setup.analysis),
             o.status != PointStatus::kComplete,
             plan.setup.settle && o.status == PointStatus::kComplete && !o.settled});

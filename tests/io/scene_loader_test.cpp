@@ -11,6 +11,7 @@
 #include <functional>
 #include <iterator>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "support/scene_text.hpp"
@@ -158,6 +159,31 @@ TEST(SceneLoader, OverridesSelectTheLawAndChangeValues) {
   // The last override of a name wins; spaces around the '=' do not matter.
   const Scene twice = loadScene(kBeltPath, {"k=500", " k = 700 "});
   EXPECT_DOUBLE_EQ(twice.model->springs[0].stiffness, 700.0);
+}
+
+TEST(SceneLoader, DocumentParsedOnceBuildsEachOverrideAfresh) {
+  std::ifstream in(kBeltPath);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const SceneDocument document(text, kBeltPath);
+  // Each load starts from the file's values: an override of one load does not stay for the
+  // next, and every derived value (the law, the spring, the body's mass) follows.
+  for (const auto& [overrides, k, m, law] :
+       {std::tuple{std::vector<std::string>{"k=500", "friction=recurdyn"}, 500.0, 10.0, "recurdyn"},
+        {std::vector<std::string>{"m=3"}, 300.0, 3.0, "roh_yoo"},
+        {std::vector<std::string>{}, 300.0, 10.0, "roh_yoo"}}) {
+    const Scene a = document.load(overrides);
+    const Scene b = loadSceneFromString(text, kBeltPath, overrides);
+    EXPECT_DOUBLE_EQ(a.model->springs[0].stiffness, k);
+    EXPECT_DOUBLE_EQ(b.model->springs[0].stiffness, k);
+    EXPECT_DOUBLE_EQ(a.model->bodies[1].mass, m);
+    EXPECT_EQ(a.model->materials[0].friction->name(), law);
+    EXPECT_EQ(a.parameters, b.parameters);
+    EXPECT_EQ(a.path, kBeltPath);
+  }
+  // Errors name the document as loadSceneFromString's do.
+  const std::string e = errorOf([&] { document.load({"kk=3"}); });
+  EXPECT_TRUE(Has(e, "belt.yaml"));
+  EXPECT_TRUE(Has(errorOf([] { SceneDocument("a: [1, 2", "bad.yaml"); }), "bad.yaml"));
 }
 
 TEST(SceneLoader, LawsNoMaterialSelectsAreNotValidated) {

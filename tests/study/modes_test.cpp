@@ -17,8 +17,10 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 
 #include "friction/friction_law.hpp"
+#include "study/early_growth.hpp"
 #include "study/scene_run.hpp"
 #include "study/sweep/sweep_results.hpp"
 #include "study/sweep/sweep_runner.hpp"
@@ -179,6 +181,34 @@ TEST(BeltModes, SimulationGrowsAndDecaysAtThePredictedRate) {
                 c, e.sigma, predicted, measured);
     EXPECT_NEAR(measured, predicted, 0.01 * std::abs(predicted)) << "c = " << c;
     EXPECT_NEAR(predicted, e.sigma, 1e-6 * std::abs(e.sigma));
+  }
+}
+
+// What `tribo run` reports as its early growth (study/early_growth.hpp, from the run's own
+// cycles) against tribo modes, within 1%: growing and decaying, at two speeds and masses.
+TEST(BeltModes, RunsEarlyGrowthAgreesWithTheModes) {
+  for (const auto& [c, v_b, m] : {std::tuple{0.0, 1.5, 10.0}, {2.0, 1.5, 10.0}, {0.0, 0.5, 4.0}}) {
+    std::ostringstream set_m, set_v, set_z;
+    set_m << "m=" << m;
+    set_v << "v_b=" << v_b;
+    set_z.precision(17);
+    set_z << "z0=" << 0.05 - m * kGravity / (4 * kCornerStiffness);
+    std::vector<std::string> set{"friction=roh_yoo", set_m.str(), set_v.str(), set_z.str()};
+    const ModesResult r = analyzeModes(io::loadSceneFromString(beltText(c), kBelt, set));
+    const double x_eq = r.steady.state.bodies[1].position.x();
+    std::ostringstream x0;
+    x0.precision(17);
+    x0 << "x0=" << x_eq + 1e-3;
+    set.push_back(x0.str());
+    set.push_back("duration=25");
+    const RunResult run = runScene(io::loadSceneFromString(beltText(c), kBelt, set));
+    ASSERT_TRUE(run.complete) << run.message;
+    const EarlyGrowth g = earlyGrowth(run.summary.cycles);
+    ASSERT_TRUE(g.measured);
+    const double predicted = inPlane(r).growth_rate;
+    std::printf("belt c=%g v_b=%g m=%g: tribo modes %.7g, tribo run's early growth %.7g 1/s\n", c,
+                v_b, m, predicted, g.rate);
+    EXPECT_NEAR(g.rate, predicted, 0.01 * std::abs(predicted));
   }
 }
 
