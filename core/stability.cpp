@@ -13,6 +13,7 @@
 
 #include "core/constraint_rows.hpp"
 #include "core/joint_forces.hpp"
+#include "friction/dynamic_law.hpp"
 
 namespace tribo {
 
@@ -20,9 +21,12 @@ namespace {
 
 using Mat2 = Eigen::Matrix2d;
 
-constexpr int kSlopeSamples = 16;        // slope samples over (0, stick speed]
-constexpr double kPoints = 4.0;          // points sharing a pair's load (a box on a face)
-constexpr double kUnloadedDepth = 1e-4;  // [m] nonlinear laws without gravity
+constexpr int kSlopeSamples = 16;
+// Slip speeds a driven stick-slip reaches, in units of the fastest driven speed: 3.5 in
+// the LuGre block of scenes/lugre_stick_slip.yaml (0.35 m/s peak slip at a 0.1 m/s pull).
+constexpr double kSlipSpeedFactor = 4.0;  // slope samples over (0, stick speed]
+constexpr double kPoints = 4.0;           // points sharing a pair's load (a box on a face)
+constexpr double kUnloadedDepth = 1e-4;   // [m] nonlinear laws without gravity
 
 // One-step matrix of the integrator on (x, v) for the system matrix a.
 Mat2 stepMatrix(IntegratorType integrator, const Mat2& a, double h) {
@@ -341,7 +345,12 @@ StabilityReport estimateStableStep(const Model& model) {
     if (it->second < report.limit.max_step) report.limit = {it->second, element()};
   };
   std::vector<bool> noted(model.materials.size(), false);  // one note per material
-  std::optional<TurnCheck> turns;                          // built at the first box pair
+  double drive_speed = 0.0;  // fastest prescribed motion: kinematic bodies, moving surfaces
+  for (const Body& b : model.bodies) {
+    drive_speed = std::max(drive_speed, b.surface_velocity.norm());
+    if (b.kind != BodyKind::kDynamic) drive_speed = std::max(drive_speed, b.velocity.norm());
+  }
+  std::optional<TurnCheck> turns;  // built at the first box pair
   for (const ContactPair& pair : model.contact_pairs) {
     const Geometry& ga = model.geometries[pair.geometry_a];
     const Geometry& gb = model.geometries[pair.geometry_b];
@@ -392,6 +401,26 @@ StabilityReport estimateStableStep(const Model& model) {
 
     // Friction: a stateful law's stick spring-damper on the same points, tangentially.
     const friction::FrictionLaw& friction_law = *mat.friction;
+    if (const friction::DynamicFrictionLaw* dynamic = friction_law.dynamic()) {
+      // The bristles' presliding spring-damper under the resting load, and the decay rate
+      // of the internal state at the expected slip speeds (not for semi-implicit Euler,
+      // whose update of the state is exact at frozen slip).
+      const friction::DynamicFrictionLaw::Presliding p = dynamic->presliding();
+      const double total = load * kPoints;
+      if (total > 0.0 && p.stiffness > 0.0)
+        consider(p.stiffness * total / m, p.damping * total / m, [&] {
+          return who() + " friction (" + std::string(friction_law.name()) + " presliding)";
+        });
+      if (integrator != IntegratorType::kSemiImplicitEuler) {
+        const double v = kSlipSpeedFactor * std::max(drive_speed, friction_law.stickSpeed());
+        consider(0.0, dynamic->stateStiffness(v), [&] {
+          std::ostringstream e;
+          e << who() << " friction (" << friction_law.name() << " internal state at slip speed "
+            << v << " m/s)";
+          return e.str();
+        });
+      }
+    }
     if (friction_law.stateful()) {
       const Tangent stick = stickTangent(friction_law);
       consider(kPoints * stick.stiffness / m, kPoints * stick.damping / m, [&] {

@@ -38,6 +38,14 @@
 //                  centre of mass, in rocking (10-25% lower limits on the belt boxes);
 //   contact pair, stateful friction (elastic_stick): its stick spring-damper, k = n k_t,
 //                  c = n c_t (read off the law's stuck force), tangential;
+//   contact pair, dynamic friction (friction/dynamic_law.hpp): the bristles' presliding
+//                  spring-damper under the resting load W, k = sigma0 W, c = sigma_d W
+//                  (DynamicFrictionLaw::presliding, per unit normal force); and, except for
+//                  semi-implicit Euler (whose state update is exact at frozen slip), the
+//                  internal state's decay rate as a first-order mode (k = 0, c/m = lambda,
+//                  DynamicFrictionLaw::stateStiffness) at slip speed 4 v_drive, v_drive the
+//                  fastest kinematic body or moving surface (or the law's stick speed): a
+//                  driven stick-slip slips at up to 3.5 times its drive;
 //   spring-damper: k, c as given, m as above;
 //   friction:      c/m = g mu'(v) (the sticking slope of the law under the body's weight), at
 //                  the steepest of 16 samples over [0, stick speed]; for a law whose slope is
