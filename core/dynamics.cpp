@@ -80,6 +80,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
     dynamic_law_.push_back(material.friction->dynamic());
     any_dynamic_ = any_dynamic_ || material.friction->dynamic() != nullptr;
   }
+  any_dynamic_ = any_dynamic_ || joint_forces_.jointStateSize() > 0;
 }
 
 State Dynamics::initialState() const {
@@ -89,6 +90,8 @@ State Dynamics::initialState() const {
     s.bodies.push_back({b.position, b.orientation, b.velocity, b.angular_velocity});
   const ConstraintOptions& c = model_->options.constraints;
   if (c.project_initial) projection_.project(s, c.projection_tolerance, c.projection_iterations);
+  s.friction_values.assign(static_cast<std::size_t>(joint_forces_.jointStateSize()), 0.0);
+  joint_forces_.initialJointStates(s.friction_values.data());
   return s;
 }
 
@@ -180,8 +183,10 @@ void Dynamics::normalForces() {
 
 void Dynamics::friction(const State& state) {
   const Model& m = *model_;
-  if (any_dynamic_) {
-    ws_.friction_state_rate.assign(state.friction_values.size(), 0.0);
+  if (any_dynamic_) {  // the joints' rates, first, are the joint stage's (assemble)
+    ws_.friction_state_rate.resize(state.friction_values.size());
+    std::fill(ws_.friction_state_rate.begin() + joint_forces_.jointStateSize(),
+              ws_.friction_state_rate.end(), 0.0);
     ws_.friction_state_contact.assign(state.friction_states.size(), -1);
   }
   std::array<double, contact::kMaxFrictionState> z, zdot, back;
@@ -325,7 +330,9 @@ bool Dynamics::registerFrictionStates(State& state) {
   const double cos_rebase = std::cos(kRebaseAngle);
   bool forces_changed = false;
   state_book_.begin(state.friction_states);
-  next_values_.clear();
+  // Joints' states first, as they are; the contacts' records after them.
+  next_values_.assign(state.friction_values.begin(),
+                      state.friction_values.begin() + joint_forces_.jointStateSize());
   for (const contact::ContactRecord& rec : ws_.contacts) {
     const ContactPair& pair = m.contact_pairs[rec.point.pair];
     const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
@@ -367,6 +374,7 @@ bool Dynamics::registerFrictionStates(State& state) {
 
 void Dynamics::stepFrictionStates(State& state, double h) const {
   const Model& m = *model_;
+  joint_forces_.stepStates(state, h);
   std::array<double, contact::kMaxFrictionState> z, back;
   for (std::size_t r = 0; r < state.friction_states.size(); ++r) {
     if (r >= ws_.friction_state_contact.size() || ws_.friction_state_contact[r] < 0) continue;

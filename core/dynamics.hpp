@@ -56,8 +56,10 @@ class Dynamics {
   bool hasStatefulFriction() const { return any_stateful_; }
   bool advanceFrictionStates(State& state);
 
-  // Dynamic friction (friction/dynamic_law.hpp): true when some material's law carries an
-  // internal state integrated with the motion.
+  // Dynamic friction (friction/dynamic_law.hpp): true when some material's or joint's law
+  // carries an internal state integrated with the motion. State::friction_values holds the
+  // joints' states first (a fixed slice per joint, core/joint_forces.hpp), then the
+  // contacts'.
   bool hasDynamicFriction() const { return any_dynamic_; }
   // Before a step, with the workspace evaluated at `state`: gives every contact point under
   // a dynamic law its record in state.friction_states (continuing the one it matched, a new

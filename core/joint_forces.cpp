@@ -69,8 +69,12 @@ JointForces::JointForces(const Model& model) : model_(model) {
     e.elements = &joint.elements;
     if (fixed_step && model.options.time_step > 0.0)
       e.max_slope = kDissipativeSlopeShare * coordinateInertia(model, j) / model.options.time_step;
-    entries_.push_back(e);
     const auto& f = joint.elements.friction;
+    if (f && (e.dynamic = f->law->dynamic()) != nullptr) {
+      e.state = joint_state_size_;
+      joint_state_size_ += e.dynamic->stateSize();
+    }
+    entries_.push_back(e);
     if (f && f->load == JointFrictionLoad::kReaction)
       reaction_.push_back(static_cast<int>(entries_.size()) - 1);
   }
@@ -91,6 +95,10 @@ double JointForces::frictionTorque(const Entry& e, double load) const {
   const JointFriction& f = *e.elements->friction;
   const double r = e.coordinate.angular ? f.radius : 1.0;
   const Vec3 slip(r * e.value.rate, 0.0, 0.0);
+  if (e.dynamic != nullptr) {  // the rate does not depend on the load: written once
+    e.dynamic->rate(e.z, slip, load, e.z_rate);
+    return r * e.dynamic->force(e.z, e.z_rate, slip, load, nullptr).x();
+  }
   // Damping and friction share one slope budget (core/joint_forces.hpp).
   const double budget = e.max_slope - std::min(e.elements->damping, e.max_slope);
   return capped(r * friction::tangentialForce(*f.law, slip, load).x(), e.value.rate, budget);
@@ -105,6 +113,12 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
     evaluateCoordinate(e.coordinate, p, motion(e.coordinate.child), e.value);
     e.axis = p.rotation * e.coordinate.z_parent;
     e.reaction_torque = 0.0;
+    if (e.dynamic != nullptr) {
+      e.z = &state.friction_values[static_cast<std::size_t>(e.state)];
+      e.z_rate = &ws.friction_state_rate[static_cast<std::size_t>(e.state)];
+      e.load = e.elements->friction->normal_force;
+      std::fill(e.z_rate, e.z_rate + e.dynamic->stateSize(), 0.0);
+    }
     const JointElements& el = *e.elements;
     const double q = e.value.q, rate = e.value.rate;
     double tau = el.effort + capped(-el.damping * rate, rate, e.max_slope);
@@ -134,6 +148,7 @@ int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) 
       Entry& e = entries_[index];
       const Vec3 f = solver.reactionForce(e.joint);
       const double load = e.coordinate.angular ? f.norm() : (f - f.dot(e.axis) * e.axis).norm();
+      e.load = load;
       const double tau = frictionTorque(e, load);
       const double d = tau - e.reaction_torque;
       e.reaction_torque = tau;
@@ -153,6 +168,20 @@ int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) 
   }
   ws.joint_friction_converged = iterations < kMaxFrictionIterations;
   return iterations;
+}
+
+void JointForces::initialJointStates(double* z) const {
+  for (const Entry& e : entries_)
+    if (e.dynamic != nullptr) e.dynamic->initialState(z + e.state);
+}
+
+void JointForces::stepStates(State& state, double h) const {
+  for (const Entry& e : entries_) {
+    if (e.dynamic == nullptr) continue;
+    const double r = e.coordinate.angular ? e.elements->friction->radius : 1.0;
+    e.dynamic->stableStep(&state.friction_values[static_cast<std::size_t>(e.state)],
+                          Vec3(r * e.value.rate, 0.0, 0.0), e.load, h);
+  }
 }
 
 }  // namespace tribo

@@ -28,6 +28,9 @@
 // (backward Euler) answer's scale: within one step a fully damped coordinate stops. bdf and dopri5
 // get the elements as written (they choose their own steps). Not here: the drive constraints
 // (core/constraint_rows.hpp), contact friction.
+// A dynamic law (LuGre and the others with internal state) gets the same slip and load with
+// its state; its force is not capped (its bristle force does not vanish with q': the
+// a-priori step limit and semi-implicit Euler's exact state update handle its stiffness).
 #pragma once
 
 #include <algorithm>
@@ -39,6 +42,7 @@
 #include "core/model.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
+#include "friction/dynamic_law.hpp"
 
 namespace tribo {
 
@@ -66,6 +70,16 @@ class JointForces {
   // updates the constrained accelerations. Returns the iterations used (0: none needed).
   int applyReactionFriction(ConstraintSolver& solver, Workspace& ws);
 
+  // Dynamic friction laws on joints (friction/dynamic_law.hpp): each such joint owns a
+  // fixed slice of State::friction_values, all of them first, in joint order; the state sees
+  // the one-dimensional slip (r q', 0, 0) and the joint's load. accumulate() writes their
+  // dz/dt into ws.friction_state_rate (sized by the caller). jointStateSize(): the slices'
+  // total; initialJointStates fills them with the laws' initial states; stepStates is
+  // semi-implicit Euler's update at the last evaluation's slip and load.
+  int jointStateSize() const { return joint_state_size_; }
+  void initialJointStates(double* z) const;
+  void stepStates(State& state, double h) const;
+
  private:
   struct Entry {
     int joint = -1;
@@ -75,6 +89,11 @@ class JointForces {
     Vec3 axis = Vec3::UnitZ();     // world joint axis at the last accumulate()
     double reaction_torque = 0.0;  // friction with the reaction load, last applied
     double max_slope = std::numeric_limits<double>::infinity();  // c_max [N m s/rad or N s/m]
+    const friction::DynamicFrictionLaw* dynamic = nullptr;       // the friction's, if dynamic
+    int state = -1;             // its slice in State::friction_values
+    const double* z = nullptr;  // that slice at the last accumulate()
+    double* z_rate = nullptr;   // and its rate in the workspace
+    double load = 0.0;          // the friction's load at the last evaluation [N]
   };
   // Holds a dissipative torque within c_max |q'| (see the header comment).
   static double capped(double tau, double rate, double max_slope) {
@@ -88,6 +107,7 @@ class JointForces {
   std::vector<Entry> entries_;
   std::vector<int> reaction_;  // entries with reaction-load friction
   std::vector<Wrench> delta_;  // per body
+  int joint_state_size_ = 0;
 };
 
 }  // namespace tribo

@@ -158,9 +158,17 @@ void ModelBuilder::setJointFriction(int joint, const JointFriction& friction) {
   Joint& j = checkedJoint(joint, "friction", true);
   const std::string who = jointWho(j.name) + " friction";
   if (!friction.law) throw ModelError(who + ": no friction law");
-  if (friction.law->stateful() || friction.law->dynamic() != nullptr)
+  if (friction.law->stateful())
     throw ModelError(who + ": law " + std::string(friction.law->name()) +
-                     " keeps per-contact state; joint friction takes memoryless laws only");
+                     " keeps contact anchors; joint friction takes memoryless laws and laws "
+                     "with internal state (" +
+                     [] {
+                       std::string names;
+                       for (const auto& n : friction::knownDynamicFrictionLaws())
+                         names += (names.empty() ? "" : ", ") + n;
+                       return names;
+                     }() +
+                     ")");
   if (!std::isfinite(friction.radius) || friction.radius <= 0.0)
     throw ModelError(who + ": radius must be > 0 (got " + numberText(friction.radius) + ")");
   if (friction.load == JointFrictionLoad::kConstant &&

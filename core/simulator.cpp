@@ -117,6 +117,16 @@ StepStatus Simulator::check() {
       return failed(name, quantity, "body '" + name + "' " + words + " is not finite");
     }
   }
+  for (std::size_t i = 0; i < state_.friction_values.size(); ++i) {
+    if (std::isfinite(state_.friction_values[i])) continue;
+    if (!std::any_of(state_.friction_states.begin(), state_.friction_states.end(),
+                     [&](const contact::StickAnchor& r) {
+                       return i >= static_cast<std::size_t>(r.state) &&
+                              i < static_cast<std::size_t>(r.state + r.state_size);
+                     }))
+      return failed("", "friction_state",
+                    "the internal state of a joint's friction law is not finite");
+  }
   for (const contact::StickAnchor& record : state_.friction_states) {
     const double* z = &state_.friction_values[static_cast<std::size_t>(record.state)];
     if (std::all_of(z, z + record.state_size, [](double x) { return std::isfinite(x); })) continue;

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 #include "core/simulator.hpp"
@@ -210,6 +211,42 @@ TEST(LuGreStickSlip, TheStateOfOneContactDoesNotLeakIntoAnother) {
     }
   }
   EXPECT_EQ(still_records, 4);
+}
+
+// The same block on a prismatic joint with the LuGre law as the joint's friction under a
+// constant 1 N load, and no contact: the joint's own internal state must give the
+// reference's motion (here without the contact's vertical settling) under every integrator.
+TEST(LuGreStickSlip, JointFrictionThroughTheLawMatchesTheReference) {
+  std::ifstream in(kScene);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = test::replaced(
+      text.str(),
+      "  - {name: block_slide, type: planar_translation, parent: world, child: block,\n"
+      "     anchor: [0, 0, $z0], axis: [0, 1, 0]}\n",
+      "  - {name: block_slide, type: prismatic, parent: world, child: block,\n"
+      "     anchor: [0, 0, $z0], axis: [1, 0, 0],\n"
+      "     friction: {law: $friction, load: constant, normal_force: 1}}\n");
+  yaml = test::replaced(yaml, "  - {a: floor, b: block_shape, material: block_floor}\n", "");
+  yaml = test::replaced(yaml, "contacts:\n", "");
+  for (const auto& [method, dt, bound] : {std::tuple{"rk4", "5e-5", 1e-7},
+                                          {"semi_implicit_euler", "5e-4", 1e-3},
+                                          {"dopri5", "0.01", 1e-4},
+                                          {"bdf", "0.01", 2e-4}}) {
+    const io::Scene scene = io::loadSceneFromString(
+        yaml, kScene,
+        {"duration=15", std::string("integrator=") + method, std::string("dt=") + dt});
+    Simulator sim(scene.model);
+    const int block = scene.model->findBody("block")->value;
+    double worst = 0;
+    for (std::size_t i = 0; i < kTimes.size(); ++i) {
+      while (sim.state().time < kTimes[i] - 1e-9) ASSERT_TRUE(sim.step().ok) << method;
+      worst = std::max(worst, std::abs(sim.state().bodies[block].position.x() - referenceX()[i]));
+    }
+    std::printf("joint friction, %s dt %s: worst |x - x_ref| %.3g m\n", method, dt, worst);
+    EXPECT_LT(worst, bound) << method;
+    EXPECT_EQ(sim.state().friction_values.size(), 3u);  // the joint's bristle, no contact
+  }
 }
 
 }  // namespace
