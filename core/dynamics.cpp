@@ -194,7 +194,8 @@ void Dynamics::friction(const State& state) {
     contact::ContactRecord& rec = ws_.contacts[i];
     const ContactPair& pair = m.contact_pairs[rec.point.pair];
     const contact::Material& material = m.materials[pair.material];
-    if (const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material]) {
+    const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
+    if (law != nullptr && !steady_friction_) {
       const contact::StickAnchor* record =
           contact::findAnchor(state.friction_states, rec.point, m.options.collision.match_radius);
       if (record == nullptr) {
@@ -370,6 +371,16 @@ bool Dynamics::registerFrictionStates(State& state) {
   if (!forces_changed) friction(state);  // same forces; the rates for the new records
   clock.lap(Stage::kFrictionStates);
   return forces_changed;
+}
+
+void Dynamics::settleFrictionStates(State& state) {
+  if (!any_dynamic_) return;
+  evaluate(state);
+  registerFrictionStates(state);
+  evaluate(state);
+  // A step far beyond every decay time at frozen slip lands on the steady state.
+  constexpr double kForever = 1e12;  // [s]
+  stepFrictionStates(state, kForever);
 }
 
 void Dynamics::stepFrictionStates(State& state, double h) const {

@@ -73,6 +73,12 @@ class Dynamics {
   // workspace's evaluation (DynamicFrictionLaw::stableStep): bounded for stiff bristles.
   void stepFrictionStates(State& state, double h) const;
   static constexpr double kRebaseAngle = 1e-3;  // [rad]
+  // Quasi-steady friction: with it on, dynamic laws act through their steady-state curve
+  // (as memoryless laws, for the steady-state search of `tribo modes`); off by default.
+  void setSteadyFriction(bool on) { steady_friction_ = on; }
+  // Gives `state` its records (as registerFrictionStates) and sets every internal state to
+  // the law's steady state at the slip and load of the evaluation at `state`.
+  void settleFrictionStates(State& state);
 
   // Time per stage (core/stage_profile.hpp). Switching profiling on starts the profile from
   // zero; switching it off keeps the totals. Off by default.
@@ -105,6 +111,7 @@ class Dynamics {
   contact::AnchorBook anchor_book_;
   std::vector<const friction::DynamicFrictionLaw*> dynamic_law_;  // per material, or nullptr
   bool any_dynamic_ = false;
+  bool steady_friction_ = false;
   contact::AnchorBook state_book_;
   std::vector<double> next_values_;
   bool profiling_ = false;

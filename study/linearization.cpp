@@ -21,19 +21,44 @@ DifferenceSteps chooseSteps(Dynamics& dynamics, const State& at) {
 
 namespace {
 
-// Central difference of the reduced accelerations along coordinate j (configuration when
-// !velocity) with step h.
+// The reduced accelerations, then the internal states' rates, at `x`.
+Eigen::VectorXd response(Dynamics& dynamics, const ReducedCoordinates& coords, const State& x,
+                         bool with_states) {
+  const Workspace& ws = dynamics.evaluate(x);
+  const Eigen::VectorXd a = coords.reducedAcceleration(ws);
+  if (!with_states) return a;
+  Eigen::VectorXd out(a.size() + static_cast<Eigen::Index>(x.friction_values.size()));
+  out.head(a.size()) = a;
+  for (std::size_t i = 0; i < x.friction_values.size(); ++i)
+    out(a.size() + static_cast<Eigen::Index>(i)) = ws.friction_state_rate[i];
+  return out;
+}
+
+// Central difference of the response along coordinate j (configuration when !velocity) with
+// step h.
 Eigen::VectorXd column(Dynamics& dynamics, const ReducedCoordinates& coords, const State& at, int j,
-                       bool velocity, double h, State& scratch) {
+                       bool velocity, double h, State& scratch, bool with_states) {
   const int n = coords.size();
   Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   step(j) = h;
   coords.perturb(at, velocity ? zero : step, velocity ? step : zero, scratch);
-  const Eigen::VectorXd plus = coords.reducedAcceleration(dynamics.evaluate(scratch));
+  const Eigen::VectorXd plus = response(dynamics, coords, scratch, with_states);
   coords.perturb(at, velocity ? zero : Eigen::VectorXd(-step),
                  velocity ? Eigen::VectorXd(-step) : zero, scratch);
-  const Eigen::VectorXd minus = coords.reducedAcceleration(dynamics.evaluate(scratch));
+  const Eigen::VectorXd minus = response(dynamics, coords, scratch, with_states);
+  return (plus - minus) / (2 * h);
+}
+
+// The same along internal state value i.
+Eigen::VectorXd stateColumn(Dynamics& dynamics, const ReducedCoordinates& coords, const State& at,
+                            std::size_t i, double h, State& scratch) {
+  scratch = at;
+  scratch.friction_values[i] = at.friction_values[i] + h;
+  const Eigen::VectorXd plus = response(dynamics, coords, scratch, true);
+  scratch.friction_values[i] = at.friction_values[i] - h;
+  const Eigen::VectorXd minus = response(dynamics, coords, scratch, true);
+  scratch = at;
   return (plus - minus) / (2 * h);
 }
 
@@ -57,6 +82,14 @@ Linearization linearize(Dynamics& dynamics, const ReducedCoordinates& coords, co
   lin.stiffness.resize(n, n);
   if (velocities) lin.damping.resize(n, n);
   State scratch = at;
+  const bool with_states = velocities && !at.friction_values.empty();
+  const auto nz = static_cast<Eigen::Index>(at.friction_values.size());
+  if (with_states) {
+    lin.state_force.resize(n, nz);
+    lin.state_from_position.resize(nz, n);
+    lin.state_from_velocity.resize(nz, n);
+    lin.state_rate.resize(nz, nz);
+  }
   struct Check {
     Eigen::VectorXd coarse;
     int j;
@@ -68,13 +101,26 @@ Linearization linearize(Dynamics& dynamics, const ReducedCoordinates& coords, co
     const double h = velocity ? steps.velocity : steps.position;
     Eigen::MatrixXd& out = velocity ? lin.damping : lin.stiffness;
     for (int j = 0; j < n; ++j) {
-      out.col(j) = column(dynamics, coords, at, j, velocity, h, scratch);
+      const Eigen::VectorXd col =
+          column(dynamics, coords, at, j, velocity, h, scratch, with_states);
+      out.col(j) = col.head(n);
+      if (with_states)
+        (velocity ? lin.state_from_velocity : lin.state_from_position).col(j) = col.tail(nz);
       lin.evaluations += 2;
       if (check_tolerance > 0) {
-        checks.push_back({column(dynamics, coords, at, j, velocity, 4 * h, scratch), j, velocity});
+        checks.push_back(
+            {column(dynamics, coords, at, j, velocity, 4 * h, scratch, false), j, velocity});
         lin.evaluations += 2;
       }
     }
+  }
+  for (Eigen::Index i = 0; i < nz && with_states; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const double h = 1e-4 * std::abs(at.friction_values[k]) + 1e-12;
+    const Eigen::VectorXd col = stateColumn(dynamics, coords, at, k, h, scratch);
+    lin.state_force.col(i) = col.head(n);
+    lin.state_rate.col(i) = col.tail(nz);
+    lin.evaluations += 2;
   }
   // A column's difference is measured against its own size, or a small share of the
   // largest entry of its matrix when it is (nearly) zero.
@@ -100,10 +146,17 @@ Linearization linearize(Dynamics& dynamics, const ReducedCoordinates& coords, co
 
 Eigen::MatrixXd firstOrderMatrix(const Linearization& lin) {
   const Eigen::Index n = lin.stiffness.rows();
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  a.topRightCorner(n, n).setIdentity();
-  a.bottomLeftCorner(n, n) = lin.stiffness;
-  if (lin.damping.size() > 0) a.bottomRightCorner(n, n) = lin.damping;
+  const Eigen::Index nz = lin.state_rate.rows();
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n + nz, 2 * n + nz);
+  a.block(0, n, n, n).setIdentity();
+  a.block(n, 0, n, n) = lin.stiffness;
+  if (lin.damping.size() > 0) a.block(n, n, n, n) = lin.damping;
+  if (nz > 0) {
+    a.block(n, 2 * n, n, nz) = lin.state_force;
+    a.block(2 * n, 0, nz, n) = lin.state_from_position;
+    a.block(2 * n, n, nz, n) = lin.state_from_velocity;
+    a.block(2 * n, 2 * n, nz, nz) = lin.state_rate;
+  }
   return a;
 }
 

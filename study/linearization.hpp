@@ -13,8 +13,12 @@
 // column is computed again with 4 h: for a smooth function the two differ by about 15 times
 // the error of the first; a relative difference above `check_tolerance` is a warning that
 // names the coordinate (a kink, a contact opening or closing within the step).
-// Not here: stateful friction's internal states (not linearized; study/modes.cpp refuses
-// them), analytic derivatives, choosing the state (study/steady_state.hpp).
+// Internal states of dynamic friction laws (friction/dynamic_law.hpp) enter as a third
+// block y = (q, u, z): the columns for q and u also give dz'/dq and dz'/du, and each state
+// value z_i is stepped by h_z = 1e-4 |z_i| + 1e-12 (the states' own scale) for dq''/dz and
+// dz'/dz; the records stay those of `at` (study/modes.cpp settles them first).
+// Not here: elastic_stick's anchors (study/modes.cpp refuses them), analytic derivatives,
+// choosing the state (study/steady_state.hpp).
 #pragma once
 
 #include <Eigen/Dense>
@@ -40,6 +44,9 @@ struct Linearization {
   double worst_disagreement = 0.0;  // largest relative difference of a column between h and 4 h
   std::vector<std::string> warnings;
   int evaluations = 0;
+  // Dynamic friction's internal states z (State::friction_values, when `at` has them and
+  // velocities are asked for): D = dq''/dz (n x nz), and z' = E q + F u + G z.
+  Eigen::MatrixXd state_force, state_from_position, state_from_velocity, state_rate;
 };
 
 // K (and C when `velocities`) at `at`. With check_tolerance > 0 every column is checked
@@ -47,7 +54,8 @@ struct Linearization {
 Linearization linearize(Dynamics& dynamics, const ReducedCoordinates& coords, const State& at,
                         const DifferenceSteps& steps, bool velocities, double check_tolerance);
 
-// A = [[0, I], [K, C]].
+// A = [[0, I], [K, C]], or with internal states y = (q, u, z):
+//   A = [[0, I, 0], [K, C, D], [E, F, G]].
 Eigen::MatrixXd firstOrderMatrix(const Linearization& lin);
 
 }  // namespace tribo::study

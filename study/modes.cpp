@@ -69,20 +69,26 @@ std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& co
 ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
   const Model& model = *scene.model;
   for (const contact::Material& material : model.materials)
-    if (material.friction->stateful() || material.friction->dynamic() != nullptr)
+    if (material.friction->stateful())
       throw ModesError("friction law '" + std::string(material.friction->name()) +
-                       "' keeps per-contact state, which the linearization does not cover: "
-                       "use a memoryless law for the stability analysis");
+                       "' keeps contact anchors, which the linearization does not cover: "
+                       "use a memoryless law or one with internal state for the stability "
+                       "analysis");
   if (model.dynamicBodyCount() == 0)
     throw ModesError("the scene has no dynamic body: there is nothing to linearize");
   ModesResult out;
   Dynamics dynamics(scene.model);
   auto start = std::chrono::steady_clock::now();
+  // Dynamic friction: the steady state under the laws' steady-state curves, then every
+  // internal state settled to its steady value there and linearized with the motion.
+  dynamics.setSteadyFriction(true);
   try {
     out.steady = findSteadyState(dynamics, spec.steady);
   } catch (const std::invalid_argument& e) {
     throw ModesError(e.what());
   }
+  dynamics.setSteadyFriction(false);
+  dynamics.settleFrictionStates(out.steady.state);
   out.steady_seconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
   const State& x = out.steady.state;
