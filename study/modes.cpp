@@ -36,8 +36,12 @@ Mode makeMode(std::complex<double> lambda, const Eigen::VectorXcd& vector,
   }
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return mode.shape[a].magnitude > mode.shape[b].magnitude; });
-  for (int i : order)
-    mode.dominant += (mode.dominant.empty() ? "" : " ") + mode.shape[i].coordinate;
+  // The largest few by name (a chain's mode moves dozens of coordinates; the full shape is
+  // in mode.shape and modes.json).
+  constexpr std::size_t kNamed = 6;
+  for (std::size_t k = 0; k < std::min(order.size(), kNamed); ++k)
+    mode.dominant += (mode.dominant.empty() ? "" : " ") + mode.shape[order[k]].coordinate;
+  if (order.size() > kNamed) mode.dominant += " (+" + std::to_string(order.size() - kNamed) + ")";
   return mode;
 }
 

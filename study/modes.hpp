@@ -58,6 +58,7 @@ struct Mode {
   bool unstable = false;
   std::vector<ShapeEntry> shape;  // every full coordinate, in coordinate order
   std::string dominant;           // the coordinates with magnitude >= 0.1, largest first
+                                  // (the first 6 by name, then "(+N)" for the others)
 };
 
 struct ModesResult {

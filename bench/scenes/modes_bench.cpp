@@ -7,7 +7,8 @@
 // parsing its YAML and building the model), BM_ModesBuild/<scene> (building the model from
 // the YAML parsed once, io::SceneDocument: what a point of `tribo sweep --analysis modes`
 // adds), BM_SweepModesPoint/{reparsed,parsed_once} (a whole sweep point of the belt, with and
-// without parsing the text again); BM_Baseline_BeltClosedForm.
+// without parsing the text again), BM_ModesChain/<law>/<n> (a chain of n boxes pressed on a
+// belt, generated here); BM_Baseline_BeltClosedForm.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Eigenvalues>
@@ -82,6 +83,48 @@ void BM_SweepModesPoint(benchmark::State& st, bool parsed_once) {
   }
 }
 
+// A chain of n boxes (1 kg, 0.2 x 0.2 x 0.1 m, each on a planar joint) pressed on a belt by
+// their weight, joined in a row by springs of 300 N/m and tied to a wall at the first: n
+// coupled belt oscillators, 2n coordinates (x and z per box), 4n contact points.
+std::string chainScene(int n, const std::string& law) {
+  std::ostringstream y;
+  y << "simulation: {duration: 1, time_step: 0.001, integrator: rk4, gravity: [0, 0, -9.81]}\n"
+       "bodies:\n  - {name: belt, kind: kinematic, surface_velocity: [1.5, 0, 0],\n"
+       "     geometry: [{name: surface, shape: halfspace}]}\n";
+  for (int i = 0; i < n; ++i)
+    y << "  - {name: b" << i << ", mass: 1, position: [" << 0.3 * i << ", 0, 0.0499],"
+      << " geometry: [{name: g" << i << ", shape: box, size: [0.2, 0.2, 0.1]}]}\n";
+  y << "joints:\n";
+  for (int i = 0; i < n; ++i)
+    y << "  - {name: j" << i << ", type: planar_translation, parent: world, child: b" << i
+      << ", anchor: [" << 0.3 * i << ", 0, 0.0499], axis: [0, 1, 0]}\n";
+  y << "springs:\n  - {name: s0, a: world, point_a: [-0.3, 0, 0.0499], b: b0,"
+       " point_b: [0, 0, 0.0499], stiffness: 300}\n";
+  for (int i = 1; i < n; ++i)
+    y << "  - {name: s" << i << ", a: b" << i - 1 << ", point_a: [" << 0.3 * (i - 1)
+      << ", 0, 0.0499], b: b" << i << ", point_b: [" << 0.3 * i
+      << ", 0, 0.0499], stiffness: 300}\n";
+  y << "friction_laws:\n  roh_yoo: {mu_s: 0.35, mu_k: 0.3, v_s: 0.01, a: 1.5, beta: 0.3333}\n"
+       "  lugre: {sigma0: 1.0e4, sigma1: 30, sigma2: 0, mu_c: 0.3, mu_s: 0.35, v_s: 0.01}\n"
+       "materials:\n  - {name: belt_box, normal: {law: linear, stiffness: 2.5e5, damping: 1.5e3},"
+       " friction: "
+    << law << "}\ncontacts:\n";
+  for (int i = 0; i < n; ++i) y << "  - {a: surface, b: g" << i << ", material: belt_box}\n";
+  return y.str();
+}
+
+// tribo modes on the chain (steady state included); the range argument is n, the law
+// roh_yoo (memoryless: 4n coordinates in A) or lugre (plus 12 bristle states per box).
+void BM_ModesChain(benchmark::State& st, const std::string& law) {
+  const int n = static_cast<int>(st.range(0));
+  const auto scene = tribo::io::loadSceneFromString(chainScene(n, law), "chain.yaml");
+  for (auto _ : st) {
+    const auto r = tribo::study::analyzeModes(scene);
+    benchmark::DoNotOptimize(r.leading().growth_rate);
+  }
+  st.counters["states"] = static_cast<double>(4 * n + (law == "lugre" ? 12 * n : 0));
+}
+
 void BM_Baseline_BeltClosedForm(benchmark::State& st) {
   const auto law = tribo::friction::makeFrictionLaw(
       {"roh_yoo",
@@ -108,4 +151,15 @@ BENCHMARK_CAPTURE(BM_ModesLinearize, mode_coupling, std::string("mode_coupling")
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModesAnalysis, mode_coupling, std::string("mode_coupling"))
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModesChain, roh_yoo, std::string("roh_yoo"))
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModesChain, lugre, std::string("lugre"))
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Baseline_BeltClosedForm)->Unit(benchmark::kMicrosecond);
