@@ -33,7 +33,7 @@ struct Body {
   Quat orientation = Quat::Identity();   // initial, body to world
   Vec3 velocity = Vec3::Zero();          // initial (or prescribed), world [m/s]
   Vec3 angular_velocity = Vec3::Zero();  // initial (or prescribed), world [rad/s]
-  Vec3 surface_velocity = Vec3::Zero();  // body frame [m/s]
+  Vec3 surface_velocity = Vec3::Zero();  // each geometry's frame [m/s] (surfaceVelocityOf)
 };
 
 }  // namespace tribo

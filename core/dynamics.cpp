@@ -18,29 +18,25 @@ contact::CollisionDetector makeDetector(const Model& model) {
   return contact::CollisionDetector(std::move(shapes), std::move(pairs), model.options.collision);
 }
 
-// A body's surface velocity in the world frame (zero for the world).
-Vec3 surfaceVelocity(const Model& model, const Workspace& ws, BodyIndex b) {
-  if (b.isWorld()) return Vec3::Zero();
-  return ws.rotation[b.value] * model.bodies[b.value].surface_velocity;
-}
-
+// Motion of geometry g: its body's, with the geometry's surface velocity (world).
 contact::GeometryMotion motionOf(const Model& model, const State& state, const Workspace& ws,
-                                 BodyIndex b) {
+                                 int g) {
   contact::GeometryMotion m;
+  const BodyIndex b = model.geometries[static_cast<std::size_t>(g)].body;
   if (b.isWorld()) return m;
   const BodyState& s = state.bodies[b.value];
   m.origin = s.position;
   m.velocity = s.velocity;
   m.angular_velocity = s.angular_velocity;
-  m.surface_velocity = surfaceVelocity(model, ws, b);
+  m.surface_velocity = surfaceVelocityOf(model, ws.rotation, g);
   return m;
 }
 
 contact::AnchorFrames anchorFrames(const Model& model, const Workspace& ws,
                                    const ContactPair& pair) {
   return {&ws.geometry_poses[pair.geometry_a], &ws.geometry_poses[pair.geometry_b],
-          surfaceVelocity(model, ws, model.geometries[pair.geometry_a].body),
-          surfaceVelocity(model, ws, model.geometries[pair.geometry_b].body)};
+          surfaceVelocityOf(model, ws.rotation, pair.geometry_a),
+          surfaceVelocityOf(model, ws.rotation, pair.geometry_b)};
 }
 
 void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
@@ -167,10 +163,8 @@ void Dynamics::contactKinematics(const State& state) {
   for (std::size_t i = 0; i < ws_.contact_points.size(); ++i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
     const ContactPair& pair = m.contact_pairs[cp.pair];
-    const BodyIndex a = m.geometries[pair.geometry_a].body;
-    const BodyIndex b = m.geometries[pair.geometry_b].body;
-    contact::contactKinematics(cp, motionOf(m, state, ws_, a), motionOf(m, state, ws_, b),
-                               ws_.contacts[i]);
+    contact::contactKinematics(cp, motionOf(m, state, ws_, pair.geometry_a),
+                               motionOf(m, state, ws_, pair.geometry_b), ws_.contacts[i]);
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
   }
 }

@@ -60,11 +60,9 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
     const Vec3 f = c.force();  // on B; A gets -f
     const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};
     for (const auto& [geometry, sign] : sides) {
-      const BodyIndex b = model.geometries[geometry].body;
-      if (b.isWorld()) continue;
-      const Vec3& surface = model.bodies[b.value].surface_velocity;
+      const Vec3 surface = surfaceVelocityOf(model, ws.rotation, geometry);
       if (surface.squaredNorm() == 0.0) continue;
-      a.input_power -= sign * f.dot(ws.rotation[b.value] * surface);
+      a.input_power -= sign * f.dot(surface);
     }
   }
   return a;

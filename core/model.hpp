@@ -102,4 +102,15 @@ struct Model {
   int dynamicBodyCount() const;
 };
 
+// The world velocity of geometry `g`'s surface: its body's surface_velocity read in the
+// geometry's own frame (local_pose), so a belt surface tilted by its geometry's pose moves
+// along the tilted plane; zero for the world. `body_rotation`: body to world rotations.
+inline Vec3 surfaceVelocityOf(const Model& model, const std::vector<Mat3>& body_rotation, int g) {
+  const Geometry& geometry = model.geometries[static_cast<std::size_t>(g)];
+  if (geometry.body.isWorld()) return Vec3::Zero();
+  const Vec3& v = model.bodies[geometry.body.value].surface_velocity;
+  if (v.squaredNorm() == 0.0) return Vec3::Zero();
+  return body_rotation[geometry.body.value] * (geometry.local_pose.linear() * v);
+}
+
 }  // namespace tribo
