@@ -29,6 +29,7 @@
 #include "io/urdf_scene.hpp"
 #include "study/dir_lock.hpp"
 #include "study/early_growth.hpp"
+#include "study/orbit_shape.hpp"
 #include "study/output_budget.hpp"
 #include "study/result_writer.hpp"
 #include "study/run_progress.hpp"
@@ -107,6 +108,16 @@ void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& 
     std::printf("period           %.6g s\n", s.period);
     std::printf("time to 98%%      %.6g s\n", s.time_to_98);
     std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
+    const tribo::study::OrbitShape orbit = tribo::study::classifyOrbit(s.cycles);
+    if (orbit.kind == tribo::study::OrbitKind::kPeriod2)
+      std::printf("orbit            period 2: cycles alternate p-p %.6g / %.6g m, %.6g / %.6g s\n",
+                  orbit.peak_to_peak_a, orbit.peak_to_peak_b, orbit.duration_a, orbit.duration_b);
+    else
+      std::printf("orbit            %s (last %d cycles)\n",
+                  orbit.kind == tribo::study::OrbitKind::kPeriod1     ? "period 1"
+                  : orbit.kind == tribo::study::OrbitKind::kIrregular ? "irregular"
+                                                                      : "none",
+                  orbit.examined);
     const tribo::study::EarlyGrowth g = tribo::study::earlyGrowth(s.cycles);
     if (g.measured)
       std::printf("early growth     %.7g 1/s (cycles %d-%d, %.4g-%.4g s)\n", g.rate,

@@ -11,6 +11,7 @@
 #include "study/csv_text.hpp"
 #include "study/early_growth.hpp"
 #include "study/file_commit.hpp"
+#include "study/orbit_shape.hpp"
 
 namespace tribo::study {
 
@@ -148,6 +149,25 @@ void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
                          {"cycles", g.cycles},
                          {"t_start", g.t_start},
                          {"t_end", g.t_end}};
+  const OrbitShape orbit = classifyOrbit(s.cycles);
+  j["orbit"] = {{"kind", orbitKindName(orbit.kind)},
+                {"cycles_examined", orbit.examined},
+                {"peak_to_peak", {number(orbit.peak_to_peak_a), number(orbit.peak_to_peak_b)}},
+                {"period", {number(orbit.duration_a), number(orbit.duration_b)}},
+                {"spread", number(orbit.spread)}};
+  // Each cycle's figures, the last kListedCycles of them (a long run makes thousands).
+  constexpr std::size_t kListedCycles = 100;
+  nlohmann::json listed = nlohmann::json::array();
+  for (std::size_t i = s.cycles.size() > kListedCycles ? s.cycles.size() - kListedCycles : 0;
+       i < s.cycles.size(); ++i) {
+    const Cycle& c = s.cycles[i];
+    listed.push_back({{"index", i + 1},
+                      {"t_start", number(c.t_start)},
+                      {"period", number(c.t_end - c.t_start)},
+                      {"peak_to_peak", number(c.peak_to_peak)},
+                      {"mean", number(c.mean)}});
+  }
+  j["cycles"] = listed;
   j["run"] = {
       {"simulated_seconds", result.simulated_seconds},
       {"steps", result.stats.steps},
