@@ -97,11 +97,13 @@ void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& 
                                        : r.interrupted ? r.message.c_str()
                                                        : ("DIVERGED: " + r.message).c_str());
   static const char* kAxis[] = {"x", "y", "z"};
-  if (scene.output.summary.body.empty()) {
+  const auto& spec = scene.output.summary;
+  if (spec.body.empty() && spec.channel.empty()) {
     std::printf("observed         nothing (the scene's output.summary names no body)\n");
   } else {
-    std::printf("observed         %s.%s\n", scene.output.summary.body.c_str(),
-                kAxis[scene.output.summary.coordinate]);
+    const std::string observed =
+        spec.channel.empty() ? spec.body + "." + kAxis[spec.coordinate] : spec.channel;
+    std::printf("observed         %s\n", observed.c_str());
     std::printf("oscillating      %s (%zu cycles)\n", s.oscillating ? "yes" : "no",
                 s.cycles.size());
     std::printf("amplitude (p-p)  %.6g m\n", s.amplitude_pp);
@@ -234,7 +236,7 @@ int run(const std::vector<std::string>& args) {
       throw std::runtime_error("cannot create output folder '" + out_dir + "': " + ec.message());
     lock.emplace(out);
     csv.emplace(out / "trajectory.csv",
-                study::TrajectoryRecorder(*scene.model, 0, false).columns());
+                study::TrajectoryRecorder(*scene.model, 0, false, scene.output.channels).columns());
   } catch (const study::DirLockedError& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 6;

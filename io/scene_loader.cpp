@@ -47,7 +47,9 @@
 //   [contacts]: - a b material                 (geometry names; forces reported on b)
 //                 No contacts: automatic contacts between every two geometries that may touch
 //                 (core/model_builder.hpp), material by surface pair, else the default one.
-//   [output]: [interval] [summary: {body, [coordinate: x|y|z], [stick_speed], [last_cycles]}]
+//   [output]: [interval] [channels: [GROUP...]] (io/output_channels.hpp)
+//             [summary: {body, [coordinate: x|y|z] | channel: COLUMN, [stick_speed],
+//             [last_cycles]}]
 // rpy is R = Rz(yaw) Ry(pitch) Rx(roll) (fixed axes x, then y, then z, as in URDF). 6-value
 // inertia is [ixx, iyy, izz, ixy, ixz, iyz], the entries of the symmetric matrix. Without
 // inertia a dynamic body takes the solid-box inertia of its first box geometry (edges = size,
@@ -335,6 +337,14 @@ class Loader {
       scene.model = builder_.build();
     } catch (const ModelError& e) {
       throw SceneError({file_}, "", e.what());
+    }
+    if (summary_channel_) {
+      const std::vector<std::string> columns = channelColumns(*scene.model, scene.output.channels);
+      if (std::find(columns.begin() + 1, columns.end(), scene.output.summary.channel) ==
+          columns.end())
+        summary_channel_->fail("no recorded channel '" + scene.output.summary.channel +
+                               "' (output.channels: " + joined(scene.output.channels) +
+                               "; e.g. BODY.yaw needs rpy, JOINT.q needs joints)");
     }
     scene.parameters = params_.values();
     scene.notes = notes_;
@@ -882,15 +892,39 @@ class Loader {
   }
 
   OutputSpec readOutput(const Value& v) {
-    const Map m(v, {"interval", "summary"});
+    const Map m(v, {"interval", "channels", "summary"});
     OutputSpec out;
     if (auto x = m.get("interval")) out.interval = x->positive();
+    if (auto x = m.get("channels")) {
+      out.channels.clear();
+      for (const Value& g : x->items("channels")) {
+        const std::string name = g.text();
+        if (!hasGroup(knownChannelGroups(), name))
+          g.fail("unknown channel group '" + name + "' (known: " + joined(knownChannelGroups()) +
+                 ")");
+        if (hasGroup(out.channels, name)) g.fail("channel group '" + name + "' is listed twice");
+        out.channels.push_back(name);
+      }
+    }
     if (auto x = m.get("summary")) {
-      const Map s(*x, {"body", "coordinate", "stick_speed", "last_cycles"});
-      const Value b = s.required("body");
-      if (body(b).isWorld()) b.fail("expected a body of the scene, found 'world'");
-      out.summary.body = b.text();
+      const Map s(*x, {"body", "coordinate", "channel", "stick_speed", "last_cycles"});
+      const auto b = s.get("body");
+      const auto channel = s.get("channel");
+      if (!b && !channel) s.required("body");  // the message names what is missing
+      if (b) {
+        if (body(*b).isWorld()) b->fail("expected a body of the scene, found 'world'");
+        out.summary.body = b->text();
+      }
+      if (channel) {
+        if (s.get("coordinate")) channel->fail("give either channel or coordinate, not both");
+        out.summary.channel = channel->text();
+        summary_channel_.emplace(*channel);  // checked once the model is built
+      }
       if (auto c = s.get("coordinate")) out.summary.coordinate = c->choice({"x", "y", "z"});
+      if (!out.summary.body.empty() && !hasGroup(out.channels, "contact"))
+        out.channels.push_back("contact");  // the summary's stuck fraction reads it
+      if (out.summary.channel.empty() && !hasGroup(out.channels, "position"))
+        out.channels.push_back("position");
       if (auto c = s.get("stick_speed")) out.summary.stick_speed = c->nonNegative();
       if (auto c = s.get("last_cycles")) out.summary.last_cycles = c->integer(1);
     }
@@ -898,6 +932,7 @@ class Loader {
   }
 
   std::string file_;
+  std::optional<Value> summary_channel_;  // output.summary.channel, checked after the build
   YAML::Node root_;
   ParameterTable params_;
   ModelBuilder builder_;

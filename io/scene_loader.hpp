@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/model.hpp"
+#include "io/output_channels.hpp"
 #include "io/scene_parameters.hpp"
 
 namespace YAML {
@@ -30,14 +31,18 @@ namespace tribo::io {
 
 // Which body coordinate the run summary analyses (study/oscillation_summary.hpp).
 struct SummarySpec {
-  std::string body;           // body name; empty when the scene asks for no summary
-  int coordinate = 0;         // of the body origin, world frame: 0 = x, 1 = y, 2 = z
+  std::string body;    // body name; empty when the scene asks for no summary
+  int coordinate = 0;  // of the body origin, world frame: 0 = x, 1 = y, 2 = z
+  // Or any recorded column (io/output_channels.hpp), e.g. "flywheel.yaw" or "hinge.q";
+  // then `body` (optional) only gives the slip for the stuck fraction.
+  std::string channel;
   double stick_speed = 1e-3;  // [m/s] slip speed below which the body counts as stuck
   int last_cycles = 3;        // cycles averaged for amplitude and period
 };
 
 struct OutputSpec {
-  double interval = 1e-3;  // [s] sampling of trajectory.csv
+  double interval = 1e-3;                                      // [s] sampling of trajectory.csv
+  std::vector<std::string> channels = defaultChannelGroups();  // io/output_channels.hpp
   SummarySpec summary;
 };
 

@@ -132,9 +132,13 @@ void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
                     {"notes", result.stability.notes}};
   const auto& s = result.summary;
   static const char* kAxis[] = {"x", "y", "z"};
-  j["observed"] = {{"body", scene.output.summary.body},
-                   {"coordinate", kAxis[scene.output.summary.coordinate]},
-                   {"stick_speed", scene.output.summary.stick_speed}};
+  const auto& spec = scene.output.summary;
+  j["observed"] = {
+      {"body", spec.body},
+      {"channel", spec.channel.empty() ? spec.body + "." + kAxis[spec.coordinate] : spec.channel},
+      {"coordinate", kAxis[spec.coordinate]},
+      {"stick_speed", spec.stick_speed}};
+  j["channels"] = scene.output.channels;
   j["oscillating"] = s.oscillating;
   j["amplitude_pp"] = number(s.amplitude_pp);
   j["period"] = number(s.period);

@@ -18,19 +18,21 @@ namespace tribo::study {
 
 OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& model,
                              const io::SummarySpec& spec) {
-  if (spec.body.empty() || trajectory.rows() < 3) return {};
-  const auto index = model.findBody(spec.body);
-  if (!index || index->isWorld()) return {};
-  const Body& body = model.bodies[index->value];
+  if ((spec.body.empty() && spec.channel.empty()) || trajectory.rows() < 3) return {};
   static const char* kAxis[] = {".x", ".y", ".z"};
-  const auto x = trajectory.column(trajectory.columnIndex(body.name + kAxis[spec.coordinate]));
+  const auto x = trajectory.column(trajectory.columnIndex(
+      spec.channel.empty() ? spec.body + kAxis[spec.coordinate] : spec.channel));
   // Stuck means in contact and slipping slower than the stick speed: out of contact the
-  // slip channel reads 0, which must not count as stuck.
-  const auto slip_column = trajectory.column(trajectory.columnIndex(body.name + ".slip"));
-  const auto normal = trajectory.column(trajectory.columnIndex(body.name + ".normal_force"));
-  std::vector<double> slip(slip_column.begin(), slip_column.end());
-  for (std::size_t i = 0; i < slip.size(); ++i)
-    if (!(normal[i] > 0.0)) slip[i] = std::numeric_limits<double>::max();
+  // slip channel reads 0, which must not count as stuck. No body: no stuck fraction.
+  std::vector<double> slip;
+  const auto index = model.findBody(spec.body);
+  if (!spec.body.empty() && index && !index->isWorld()) {
+    const auto slip_column = trajectory.column(trajectory.columnIndex(spec.body + ".slip"));
+    const auto normal = trajectory.column(trajectory.columnIndex(spec.body + ".normal_force"));
+    slip.assign(slip_column.begin(), slip_column.end());
+    for (std::size_t i = 0; i < slip.size(); ++i)
+      if (!(normal[i] > 0.0)) slip[i] = std::numeric_limits<double>::max();
+  }
   OscillationOptions options;
   options.last_cycles = spec.last_cycles;
   options.stick_speed = spec.stick_speed;
@@ -44,14 +46,14 @@ namespace {
 std::optional<std::array<std::size_t, 3>> summaryColumns(const TrajectoryRecorder& trajectory,
                                                          const Model& model,
                                                          const io::SummarySpec& spec) {
-  if (spec.body.empty()) return std::nullopt;
+  if (spec.body.empty()) return std::nullopt;  // (a channel without a body: kept rows only)
   const auto index = model.findBody(spec.body);
   if (!index || index->isWorld()) return std::nullopt;
   static const char* kAxis[] = {".x", ".y", ".z"};
   const std::string& name = model.bodies[index->value].name;
-  return std::array{trajectory.columnIndex(name + kAxis[spec.coordinate]),
-                    trajectory.columnIndex(name + ".slip"),
-                    trajectory.columnIndex(name + ".normal_force")};
+  return std::array{
+      trajectory.columnIndex(spec.channel.empty() ? name + kAxis[spec.coordinate] : spec.channel),
+      trajectory.columnIndex(name + ".slip"), trajectory.columnIndex(name + ".normal_force")};
 }
 
 // The summary's three series (t, x, and the slip speed read as "not stuck" out of contact,
@@ -104,7 +106,7 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
       0.0,
       0.0,
       TrajectoryRecorder(model, static_cast<std::size_t>(model.options.duration / interval + 2),
-                         keep),
+                         keep, scene.output.channels),
       {},
       {},
       {},

@@ -105,6 +105,14 @@ io::Scene sceneWith(const TradeoffSpec& spec, const io::RunSettings& settings) {
   io::Scene scene = io::loadScene(spec.scene_path, spec.overrides, {}, settings);
   if (scene.output.summary.body.empty())
     throw io::SceneError(spec.scene_path + ": output.summary names no body to observe");
+  if (!scene.output.summary.channel.empty())
+    throw io::SceneError(spec.scene_path +
+                         ": the tradeoff observes a body's x, y or z (output.summary: {body, "
+                         "coordinate}), not the channel '" +
+                         scene.output.summary.channel + "'");
+  // It interpolates the coordinate with its velocity and masks the slip out of contact.
+  for (const char* group : {"position", "velocity", "contact"})
+    if (!io::hasGroup(scene.output.channels, group)) scene.output.channels.push_back(group);
   return scene;
 }
 

@@ -1,7 +1,7 @@
-// Recording of a run at a fixed output interval. Channels: t, then per body
-// NAME.x NAME.y NAME.z NAME.vx NAME.vy NAME.vz (world frame, body origin),
-// NAME.slip (largest contact slip speed on the body [m/s], 0 out of contact) and
-// NAME.normal_force (sum of its contact normal forces [N]).
+// Recording of a run at a fixed output interval. Columns: the channel groups asked for
+// (io/output_channels.hpp; by default t, then per body NAME.x NAME.y NAME.z NAME.vx NAME.vy
+// NAME.vz (world frame, body origin), NAME.slip (largest contact slip speed on the body
+// [m/s], 0 out of contact) and NAME.normal_force (sum of its contact normal forces [N])).
 // Each row goes to the sinks added (e.g. trajectory.csv written as the run goes,
 // study/result_writer.hpp) and, unless the recorder was made without, into memory, one
 // column per channel, so an analysis reads a column without copying (sweeps, the tradeoff).
@@ -16,6 +16,7 @@
 #include "core/model.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
+#include "io/output_channels.hpp"
 
 namespace tribo::study {
 
@@ -28,13 +29,14 @@ class RowSink {
 
 class TrajectoryRecorder {
  public:
-  static constexpr int kChannelsPerBody = 8;
   // The most rows `expected_rows` reserves memory for (a hint must not allocate gigabytes).
   static constexpr std::size_t kMaxReservedRows = std::size_t{1} << 20;
 
   // `expected_rows` only reserves memory (at most kMaxReservedRows). Without `keep_rows`
   // the rows only go to the sinks.
-  TrajectoryRecorder(const Model& model, std::size_t expected_rows = 0, bool keep_rows = true);
+  // `groups`: the channel groups recorded (io/output_channels.hpp).
+  TrajectoryRecorder(const Model& model, std::size_t expected_rows = 0, bool keep_rows = true,
+                     const std::vector<std::string>& groups = io::defaultChannelGroups());
 
   // `sink` (not owned, outliving the recorder's use) receives every later row.
   void addSink(RowSink* sink) { sinks_.push_back(sink); }
@@ -60,6 +62,12 @@ class TrajectoryRecorder {
   std::vector<std::vector<double>> data_;
   std::vector<double> row_;            // scratch: the row being recorded
   std::vector<double> slip_, normal_;  // per body, scratch
+  std::vector<Vec3> friction_;         // per body, scratch
+  // The groups asked for, by flag (io/output_channels.hpp's order).
+  bool position_ = false, orientation_ = false, rpy_ = false, velocity_ = false,
+       angular_velocity_ = false, contact_ = false, friction_force_ = false, joints_ = false,
+       energy_ = false;
+  std::vector<int> joints_recorded_;  // joints with a scalar coordinate
   std::vector<RowSink*> sinks_;
 };
 

@@ -1,0 +1,69 @@
+#include "io/output_channels.hpp"
+
+#include <algorithm>
+
+namespace tribo::io {
+
+namespace {
+
+struct Group {
+  const char* name;
+  std::vector<const char*> suffixes;  // per body; empty for the joint and energy groups
+};
+
+const std::vector<Group>& bodyGroups() {
+  static const std::vector<Group> groups = {
+      {"position", {".x", ".y", ".z"}},
+      {"orientation", {".qw", ".qx", ".qy", ".qz"}},
+      {"rpy", {".roll", ".pitch", ".yaw"}},
+      {"velocity", {".vx", ".vy", ".vz"}},
+      {"angular_velocity", {".wx", ".wy", ".wz"}},
+      {"contact", {".slip", ".normal_force"}},
+      {"friction", {".friction_force"}},
+  };
+  return groups;
+}
+
+}  // namespace
+
+const std::vector<std::string>& knownChannelGroups() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const Group& g : bodyGroups()) n.emplace_back(g.name);
+    n.emplace_back("joints");
+    n.emplace_back("energy");
+    return n;
+  }();
+  return names;
+}
+
+const std::vector<std::string>& defaultChannelGroups() {
+  static const std::vector<std::string> names = {"position", "velocity", "contact"};
+  return names;
+}
+
+bool hasGroup(const std::vector<std::string>& groups, std::string_view group) {
+  return std::find(groups.begin(), groups.end(), group) != groups.end();
+}
+
+std::vector<std::string> channelColumns(const Model& model,
+                                        const std::vector<std::string>& groups) {
+  std::vector<std::string> names = {"t"};
+  for (const Body& b : model.bodies)
+    for (const Group& g : bodyGroups())
+      if (hasGroup(groups, g.name))
+        for (const char* suffix : g.suffixes) names.push_back(b.name + suffix);
+  if (hasGroup(groups, "joints"))
+    for (const Joint& j : model.joints)
+      if (hasScalarCoordinate(j.type)) {
+        names.push_back(j.name + ".q");
+        names.push_back(j.name + ".rate");
+      }
+  if (hasGroup(groups, "energy"))
+    for (const char* e :
+         {"energy.kinetic", "energy.gravity", "energy.elastic", "energy.input_power"})
+      names.emplace_back(e);
+  return names;
+}
+
+}  // namespace tribo::io
