@@ -1,10 +1,13 @@
-// Mesh files through assimp: the same unit cube written as ASCII STL, OBJ and COLLADA must
-// load as the same closed solid (8 vertices, 12 triangles, volume 1); scaling, convexity
-// checks and unreadable files give what the header promises; bytes in memory read the same.
+// Mesh files: the same unit cube written as ASCII STL, OBJ and COLLADA must load as the same
+// closed solid (8 vertices, 12 triangles, volume 1); scaling, convexity checks and unreadable
+// files give what the header promises; bytes in memory read the same. Files whose declared
+// sizes exceed what they hold (the class of the mesh fuzzer's out-of-memory finding), at
+// several sizes, end in MeshError naming what was expected and found.
 #include "io/mesh_loader.hpp"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -148,6 +151,126 @@ TEST(MeshLoader, MissingOrUnreadableFilesNameTheFile) {
   const fs::path junk = write("junk.stl", "this is not a mesh\n");
   EXPECT_THROW(loadMesh(junk.string()), MeshError);
   fs::remove(junk);
+}
+
+// The message of the MeshError that reading `text` as `hint` throws ("" when none is thrown).
+std::string errorOf(const std::string& text, const std::string& hint) {
+  const std::vector<unsigned char> bytes(text.begin(), text.end());
+  try {
+    io::loadMeshFromMemory(bytes, hint, "mem." + hint);
+  } catch (const MeshError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+bool has(const std::string& message, const std::string& part) {
+  return message.find(part) != std::string::npos;
+}
+
+TEST(MeshLoader, ColladaCountsBeyondWhatTheFileHoldsAreRefused) {
+  // An array declaring more values than it holds: past its text, then past the file's bytes.
+  for (const std::string count :
+       {"25", "1000", "1000000", "4000000000", "99999999999999999999999"}) {
+    const std::string e =
+        errorOf(replaced(dae(), R"(count="24")", "count=\"" + count + "\""), "dae");
+    EXPECT_TRUE(has(e, "mem.dae") && has(e, "line 6") && has(e, "<float_array>") &&
+                has(e, "count="))
+        << e;
+    EXPECT_TRUE(has(e, "its text holds 24 values") || has(e, "bytes could hold")) << e;
+  }
+  // Triangles whose count needs more indices than the <p> holds (36).
+  for (const std::string count : {"13", "100000", "400000000", "4294967295"}) {
+    const std::string e = errorOf(
+        replaced(dae(), R"(<triangles count="12">)", "<triangles count=\"" + count + "\">"), "dae");
+    EXPECT_TRUE(has(e, "line 11") &&
+                (has(e, "<triangles count=\"" + count + "\"> needs " +
+                            std::to_string(3 * std::stoull(count)) + " indices in its <p>") ||
+                 has(e, "<triangles> declares count=" + count + ": more values than the file's")))
+        << e;
+  }
+  {  // an input offset of 1000: 1001 indices per corner
+    const std::string e = errorOf(replaced(dae(), R"(offset="0")", R"(offset="1000")"), "dae");
+    EXPECT_TRUE(has(e, "needs 36036 indices in its <p> (36 corners, 1001 per vertex), found 36"))
+        << e;
+  }
+  // An accessor reading more values than the file could hold.
+  for (const std::string count : {"100000", "3000000000"}) {
+    const std::string e = errorOf(
+        replaced(dae(), R"(count="8" stride="3")", "count=\"" + count + "\" stride=\"3\""), "dae");
+    EXPECT_TRUE(
+        has(e, "<accessor> declares count=" + count + " stride=3: more values than the file's"))
+        << e;
+  }
+  // Counts that are not whole numbers.
+  for (const std::string count : {"-5", "1e9", "0x10", "&#52;0"}) {
+    const std::string e =
+        errorOf(replaced(dae(), R"(count="24")", "count=\"" + count + "\""), "dae");
+    EXPECT_TRUE(has(e, "<float_array> count='" + count + "': expected a whole number")) << e;
+  }
+}
+
+TEST(MeshLoader, ColladaIndexListsHoldOnlyNumbers) {
+  // assimp 5.2.5 reads a <p> until its end and a word that is not a number stops it for good
+  // (fuzz/regressions/mesh_fuzzer/oom-dae-p-not-a-number): refused first, with the word.
+  for (const std::string word : {"scn", "1x", "x", "0x1F", "1.5", "-"}) {
+    const std::string e = errorOf(replaced(dae(), "<p>0 2 1 ", "<p>0 2 " + word + " "), "dae");
+    EXPECT_TRUE(has(e, "mem.dae") && has(e, "line 11") && has(e, "<p> holds '" + word + "'")) << e;
+  }
+  EXPECT_TRUE(
+      has(errorOf(replaced(dae(), "<p>0 2 1 ", "<p>0 2 <!-- c -->1 "), "dae"), "<p> holds markup"))
+      << "markup";
+  // Signs are numbers to assimp; the cube still reads with "+0".
+  EXPECT_EQ(errorOf(replaced(dae(), "<p>0 2 1 ", "<p>+0 2 1 "), "dae"), "");
+  // A polylist whose vertex counts add up past the file, or have a word in them.
+  const std::string poly =
+      replaced(replaced(dae(), R"(<triangles count="12">)", R"(<polylist count="12">)"),
+               "</p></triangles>", "</p></polylist>");
+  const std::string with_vcount =
+      replaced(poly, "<p>", "<vcount>3 3 3 3 3 3 3 3 3 3 3 3</vcount><p>");
+  EXPECT_EQ(errorOf(with_vcount, "dae"), "");
+  for (const std::string first : {"4", "1000", "4000000000"}) {
+    const std::string e =
+        errorOf(replaced(with_vcount, "<vcount>3 ", "<vcount>" + first + " "), "dae");
+    EXPECT_TRUE(has(e, "needs " + std::to_string(33 + std::stoull(first)) + " indices") ||
+                has(e, "bytes could hold"))
+        << e;
+  }
+  EXPECT_TRUE(
+      has(errorOf(replaced(with_vcount, "<vcount>3 ", "<vcount>a "), "dae"), "<vcount> holds 'a'"));
+}
+
+TEST(MeshLoader, BinaryStlWhoseTriangleCountExceedsTheFileIsRefused) {
+  // 80-byte header, a triangle count, 50 bytes per triangle: counts far past the bytes given.
+  for (const std::uint32_t count : {2u, 1000u, 100000000u, 0xFFFFFFFFu}) {
+    std::string bytes(80, 'x');
+    for (int k = 0; k < 4; ++k) bytes.push_back(static_cast<char>((count >> (8 * k)) & 0xFF));
+    bytes.append(50, '\0');
+    const std::string e = errorOf(bytes, "stl");
+    EXPECT_TRUE(has(e, "mem.stl")) << count << ": " << e;
+  }
+}
+
+TEST(MeshLoader, OnlyStlObjAndDaeAreRead) {
+  const fs::path ply = write("cube.ply", "ply\nformat ascii 1.0\nend_header\n");
+  try {
+    loadMesh(ply.string());
+    ADD_FAILURE() << "a .ply read";
+  } catch (const MeshError& e) {
+    EXPECT_TRUE(has(e.what(), "expected an STL, OBJ or DAE file (by its extension), found '.ply'"))
+        << e.what();
+  }
+  fs::remove(ply);
+  const fs::path upper = write("CUBE.STL", stl());
+  EXPECT_EQ(loadMesh(upper.string())->triangles.size(), 12u);
+  fs::remove(upper);
+  EXPECT_TRUE(has(errorOf(stl(), "ply"), "found 'ply'"));
 }
 
 }  // namespace
