@@ -13,6 +13,7 @@
 #include <map>
 
 #include "io/collada_check.hpp"
+#include "io/obj_reader.hpp"
 
 namespace tribo::io {
 
@@ -101,7 +102,7 @@ std::shared_ptr<const MeshData> finish(MeshData&& read, const std::string& name,
   return mesh;
 }
 
-// Through assimp, from memory: every node's meshes merged.
+// STL and COLLADA through assimp, from memory: every node's meshes merged.
 MeshData readWithAssimp(std::span<const unsigned char> bytes, const std::string& format,
                         const std::string& name) {
   if (format == "dae")
@@ -140,6 +141,10 @@ std::shared_ptr<const MeshData> loadMeshFromMemory(std::span<const unsigned char
   const std::string f = format(hint, name_for_errors);
   if (bytes.empty())
     throw MeshError("mesh file '" + name_for_errors + "': cannot read it (no bytes)");
+  if (f == "obj")
+    return finish(
+        readObj({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, name_for_errors),
+        name_for_errors, scale);
   return finish(readWithAssimp(bytes, f, name_for_errors), name_for_errors, scale);
 }
 

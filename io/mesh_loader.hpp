@@ -1,9 +1,10 @@
 // Reads triangle meshes from STL, OBJ and COLLADA (DAE) files, told apart by the file's
-// extension (any case), with the Open Asset Import Library (assimp), the one place it is
-// used, a COLLADA file's declared sizes checked first (io/collada_check.hpp). All meshes of the
-// file are merged, each node's transform applied (COLLADA's unit scale included, its up-axis not:
-// coordinates are taken as written), duplicate vertices joined, polygons triangulated; `scale`
-// multiplies each axis afterwards. Not here: other formats, convexity checks and a box's mesh
+// extension (any case): STL and COLLADA with the Open Asset Import Library (assimp), the one
+// place it is used, a COLLADA file's declared sizes checked first (io/collada_check.hpp);
+// OBJ with Tribo's own reader (io/obj_reader.hpp). All meshes of the file are merged, each
+// node's transform applied (COLLADA's unit scale included, its up-axis not: coordinates are
+// taken as written), duplicate vertices joined, polygons triangulated; `scale` multiplies
+// each axis afterwards. Not here: other formats, convexity checks and a box's mesh
 // (contact/mesh_shape.hpp), textures or materials.
 #pragma once
 

@@ -2,7 +2,8 @@
 // closed solid (8 vertices, 12 triangles, volume 1); scaling, convexity checks and unreadable
 // files give what the header promises; bytes in memory read the same. Files whose declared
 // sizes exceed what they hold (the class of the mesh fuzzer's out-of-memory finding), at
-// several sizes, end in MeshError naming what was expected and found.
+// several sizes, end in MeshError naming what was expected and found; OBJ polygons are cut
+// into triangles that cover them.
 #include "io/mesh_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -254,6 +255,75 @@ TEST(MeshLoader, BinaryStlWhoseTriangleCountExceedsTheFileIsRefused) {
     bytes.append(50, '\0');
     const std::string e = errorOf(bytes, "stl");
     EXPECT_TRUE(has(e, "mem.stl")) << count << ": " << e;
+  }
+}
+
+TEST(MeshLoader, ObjIndicesPastTheVerticesAreRefusedWithTheirLine) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (const std::string index : {"4", "1000", "4000000000", "999999999999999999"}) {
+    const std::string e = errorOf(v + "f 1 2 " + index + "\n", "obj");
+    EXPECT_TRUE(has(e, "mem.obj': line 4: face corner " + index + ": the file has 3 vertices"))
+        << e;
+  }
+  for (const std::string index : {"-4", "-4000000000"})
+    EXPECT_TRUE(has(errorOf(v + "f 1 2 " + index + "\n", "obj"), "only 3 vertices before it"));
+  for (const std::string corner : {"0", "a", "99999999999999999999999", "1.5"})
+    EXPECT_TRUE(has(errorOf(v + "f 1 2 " + corner + "\n", "obj"),
+                    "line 4: face corner '" + corner + "': expected a vertex index"));
+  for (const std::string x : {"nan", "inf", "1e999", "x"})
+    EXPECT_TRUE(has(errorOf("v 0 0 " + x + "\n", "obj"),
+                    "line 1: vertex coordinate '" + x + "': expected a finite number"));
+  EXPECT_TRUE(has(errorOf("v 0 0\n", "obj"), "a vertex needs 3 coordinates, found 2"));
+  EXPECT_TRUE(has(errorOf(v + "f 1 2\n", "obj"), "a face needs 3 corners, found 2"));
+  // A face may name a vertex written after it.
+  EXPECT_EQ(errorOf("f 1 2 3\n" + v, "obj"), "");
+}
+
+TEST(MeshLoader, ObjPolygonsAreCutIntoTrianglesThatCoverThem) {
+  // The cube as six quads, corners written in every index form: 12 triangles, volume 1.
+  std::ostringstream s;
+  s << "# quads\nmtllib none.mtl\no cube\n";
+  for (const auto& v : kV) s << "v " << v[0] << " " << v[1] << " " << v[2] << " 1.0\n";
+  s << "vt 0 0\nvn 0 0 1\n";
+  s << "f 1/1 3/1 4/1 2/1\n"              // z = 0
+    << "f 5//1 6//1 8//1 7//1\n"          // z = 1
+    << "f -8/1/1 -7/1/1 -3/1/1 -4/1/1\n"  // y = 0: 1 2 6 5
+    << "f 3 7 8 \\\n 4\n"                 // y = 1, continued
+    << "f 1 5 7 3\nf 2 4 8 6\n";
+  const std::string text = s.str();
+  const auto mesh = io::loadMeshFromMemory(std::vector<unsigned char>(text.begin(), text.end()),
+                                           "OBJ", "quads.obj");
+  EXPECT_EQ(mesh->vertices.size(), 8u);
+  EXPECT_EQ(mesh->triangles.size(), 12u);
+  EXPECT_NEAR(solidMassProperties(Shape::convexMesh(makeConvex(*mesh)), 1.0).volume, 1.0, 1e-12);
+  // A concave L-shaped hexagon (area 3) in a tilted plane: 4 triangles, all inside the L,
+  // together its area.
+  const Eigen::Vector2d l[6] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  const Eigen::Vector3d ex = Eigen::Vector3d(1, 0, 1).normalized(), ey(0, 1, 0);
+  for (int start = 0; start < 6; ++start) {  // every corner first
+    std::ostringstream o;
+    o.precision(17);
+    for (const auto& p : l) {
+      const Eigen::Vector3d x = p.x() * ex + p.y() * ey;
+      o << "v " << x.x() << " " << x.y() << " " << x.z() << "\n";
+    }
+    o << "f";
+    for (int k = 0; k < 6; ++k) o << " " << (start + k) % 6 + 1;
+    o << "\n";
+    const std::string t = o.str();
+    const auto m =
+        io::loadMeshFromMemory(std::vector<unsigned char>(t.begin(), t.end()), "obj", "l.obj");
+    ASSERT_EQ(m->triangles.size(), 4u) << start;
+    double area = 0;
+    for (const auto& tri : m->triangles) {
+      const Eigen::Vector3d a = m->vertices[tri[0]], b = m->vertices[tri[1]],
+                            c = m->vertices[tri[2]];
+      area += 0.5 * (b - a).cross(c - a).norm();
+      const Eigen::Vector3d g = (a + b + c) / 3;
+      const double gx = g.dot(ex), gy = g.dot(ey);
+      EXPECT_FALSE(gx > 1 && gy > 1) << "triangle outside the L, corner " << start << " first";
+    }
+    EXPECT_NEAR(area, 3.0, 1e-12) << start;
   }
 }
 
