@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -57,6 +59,23 @@ struct Primitives {
 constexpr std::pair<std::string_view, std::string_view> kSkipped[] = {
     {"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}, {"<!", ">"}};
 
+// An <accessor>: where it reads in which array.
+struct Accessor {
+  int line = 0;
+  std::string source;  // the array's id
+  Count count = 0;
+  Count stride = 1;
+  Count offset = 0;
+  Count width = 0;     // values per element its <param>s name
+  std::string holder;  // the id of the <source> it is in
+};
+
+// What assimp keeps of an array: how many values it reads, and whether they are numbers.
+struct Array {
+  Count count = 0;
+  bool numbers = true;  // float_array, not a Name_array or IDREF_array
+};
+
 class Checker {
  public:
   Checker(std::string_view text, const std::string& name) : text_(text), name_(name) {}
@@ -80,6 +99,7 @@ class Checker {
       finish(open_.back());
       open_.pop_back();
     }
+    for (const Accessor& a : accessors_) check(a);
   }
 
  private:
@@ -217,6 +237,9 @@ class Checker {
     const std::size_t after = i + 1;
 
     if (closing) {
+      if (name == "accessor") reading_accessor_ = false;
+      if (name == "source") source_ = {};
+      if (name == "mesh" && meshes_ > 0) --meshes_;
       if (!open_.empty() && open_.back().name == name) {
         finish(open_.back());
         open_.pop_back();
@@ -242,18 +265,44 @@ class Checker {
       fail(line, element + " declares offset=" + std::to_string(*offset) +
                      ": more than the file's " + std::to_string(bytes) + " bytes could hold");
 
-    if (name.ends_with("_array") && count && !empty) {
-      const Words w = words(after, name);
-      if (*count > w.count)
-        fail(line, element + " declares count=" + std::to_string(*count) + ", its text holds " +
-                       std::to_string(w.count) + " values");
+    if (name.ends_with("_array")) {
+      const Count declared = count.value_or(0);  // what assimp reads
+      if (const auto id = attribute(attrs, "id")) {
+        const auto [it, added] = arrays_.try_emplace(std::string(*id), Array{declared, true});
+        it->second.count = std::min(it->second.count, declared);
+        it->second.numbers = it->second.numbers && name == "float_array";
+      }
+      if (!empty) {
+        const Words w = words(after, name);
+        if (declared > w.count)
+          fail(line, element + " declares count=" + std::to_string(declared) + ", its text holds " +
+                         std::to_string(w.count) + " values");
+      }
+    } else if (name == "accessor") {
+      std::string_view source = attribute(attrs, "source").value_or("");
+      if (source.starts_with('#')) source.remove_prefix(1);
+      accessors_.push_back({line, std::string(source), count.value_or(0), stride.value_or(1),
+                            offset.value_or(0), 0, std::string(source_)});
+      reading_accessor_ = !empty;
+    } else if (name == "source" && !empty) {
+      source_ = attribute(attrs, "id").value_or("");
+    } else if (name == "mesh" && !empty) {
+      ++meshes_;
+    } else if (name == "input" && meshes_ > 0) {
+      std::string_view source = attribute(attrs, "source").value_or("");
+      if (source.starts_with('#')) source.remove_prefix(1);
+      mesh_inputs_.emplace(source);
+    } else if (name == "param" && reading_accessor_) {
+      // The values of one element: 16 for a matrix, else 1.
+      accessors_.back().width += attribute(attrs, "type").value_or("") == "float4x4" ? 16 : 1;
     } else if (isPrimitives(name) && !empty) {
       Primitives e;
       e.name = name;
       e.line = line;
       e.count = count.value_or(0);
       open_.push_back(std::move(e));
-    } else if (!open_.empty() && name == "input") {
+    }
+    if (!open_.empty() && name == "input") {
       open_.back().inputs = std::max(open_.back().inputs, plus(offset.value_or(0), 1));
     } else if (name == "vcount" && !empty) {
       const Words w = numberList(after, name, line);
@@ -269,6 +318,33 @@ class Checker {
       open_.back().lists.push_back({line, numberList(after, name, line).count});
     }
     return after;
+  }
+
+  // An accessor reads count elements of `width` values, `stride` apart, from `offset` on in
+  // its source array, which assimp 5.2.5 does not check: they must lie in what the array
+  // declares, and its elements must not overlap.
+  void check(const Accessor& a) const {
+    const auto array = arrays_.find(a.source);
+    if (array == arrays_.end() || a.count == 0) return;  // an unknown source: assimp refuses it
+    std::string what = "<accessor source=\"#" + a.source + "\" count=\"";
+    what.append(std::to_string(a.count))
+        .append("\" stride=\"")
+        .append(std::to_string(a.stride))
+        .append("\" offset=\"")
+        .append(std::to_string(a.offset))
+        .append("\">");
+    if (a.stride < std::max<Count>(a.width, 1))
+      fail(a.line, what + ": a stride of at least its " + std::to_string(a.width) +
+                       " values per element expected");
+    const Count needed = plus(a.offset, times(a.count, a.stride));
+    if (needed > array->second.count)
+      fail(a.line, what + " reads " + std::to_string(needed) + " values, its array declares " +
+                       std::to_string(array->second.count));
+    // A mesh reads numbers through it: a Name_array or IDREF_array has none for assimp.
+    if (!array->second.numbers && mesh_inputs_.contains(a.holder))
+      fail(a.line, what +
+                       ", read by a mesh's <input>: a <float_array> expected, found an "
+                       "array of names");
   }
 
   // The checks of a primitive list once all its inputs and lists are known.
@@ -303,6 +379,12 @@ class Checker {
   std::string_view text_;
   const std::string& name_;
   std::vector<Primitives> open_;
+  std::map<std::string, Array, std::less<>> arrays_;  // by id
+  std::set<std::string, std::less<>> mesh_inputs_;    // sources an <input> of a <mesh> names
+  std::string_view source_;                           // the id of the <source> being read
+  int meshes_ = 0;                                    // <mesh> elements open
+  std::vector<Accessor> accessors_;
+  bool reading_accessor_ = false;
   int line_ = 1;
   std::size_t counted_ = 0;
 };

@@ -217,6 +217,37 @@ TEST(MeshLoader, ColladaCountsBeyondWhatTheFileHoldsAreRefused) {
   }
 }
 
+TEST(MeshLoader, ColladaAccessorsReadOnlyWhatTheirArrayHolds) {
+  // assimp 5.2.5 reads an accessor's values without checking its array's size: past the end,
+  // or from address 0 when the array is empty or of names
+  // (fuzz/regressions/mesh_fuzzer/crash-dae-accessor-past-array and -name-array-positions).
+  const std::string array = R"(<float_array id="cube-pos-array" count="24">)";
+  for (const auto& [declared, read] : std::vector<std::pair<std::string, std::string>>{
+           {R"(<float_array id="cube-pos-array">)", "0"},
+           {R"(<float_array id="cube-pos-array" count="0">)", "0"},
+           {R"(<float_array id="cube-pos-array" count="3">)", "3"},
+           {R"(<float_array id="cube-pos-array" count="23">)", "23"}}) {
+    const std::string e = errorOf(replaced(dae(), array, declared), "dae");
+    EXPECT_TRUE(has(e,
+                    "line 7: <accessor source=\"#cube-pos-array\" count=\"8\" stride=\"3\" "
+                    "offset=\"0\"> reads 24 values, its array declares " +
+                        read))
+        << e;
+  }
+  EXPECT_TRUE(has(errorOf(replaced(dae(), R"(stride="3">)", R"(stride="3" offset="1">)"), "dae"),
+                  "reads 25 values, its array declares 24"));
+  EXPECT_TRUE(
+      has(errorOf(replaced(dae(), R"(count="8" stride="3")", R"(count="8" stride="2")"), "dae"),
+          "a stride of at least its 3 values per element expected"));
+  for (const std::string kind : {"Name_array", "IDREF_array"}) {
+    const std::string names =
+        replaced(replaced(dae(), array, "<" + kind + R"( id="cube-pos-array" count="24">)"),
+                 "</float_array>", "</" + kind + ">");
+    EXPECT_TRUE(has(errorOf(names, "dae"), "read by a mesh's <input>: a <float_array> expected"))
+        << kind;
+  }
+}
+
 TEST(MeshLoader, ColladaIndexListsHoldOnlyNumbers) {
   // assimp 5.2.5 reads a <p> until its end and a word that is not a number stops it for good
   // (fuzz/regressions/mesh_fuzzer/oom-dae-p-not-a-number): refused first, with the word.
