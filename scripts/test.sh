@@ -19,14 +19,15 @@ summary() {
 }
 trap summary EXIT
 
-phase() {  # NAME COMMAND...: runs COMMAND, records how long it took
-  local name=$1 start
+phase() {  # NAME COMMAND...: runs COMMAND, records how long it took (also when it fails)
+  local name=$1 start status=0
   shift
   start=$(date +%s)
   echo "test.sh: == $name"
-  "$@"
-  PHASES+=("$name: $(($(date +%s) - start)) s")
+  "$@" || status=$?
+  PHASES+=("$name: $(($(date +%s) - start)) s$([ $status -eq 0 ] || echo ", failed ($status)")")
   echo "test.sh: $name took $(($(date +%s) - start)) s"
+  [ $status -eq 0 ] || exit $status
 }
 
 release_build() { CMAKE_ARGS="-DTRIBO_WERROR=ON ${CMAKE_ARGS:-}" scripts/setup.sh; }
