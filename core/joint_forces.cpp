@@ -56,7 +56,7 @@ double coordinateInertia(const Model& model, int joint) {
   return std::isinf(p) ? c : p * c / (p + c);
 }
 
-JointForces::JointForces(const Model& model) : model_(model) {
+JointForces::JointForces(const Model& model) {
   const IntegratorType integrator = model.options.integrator;
   const bool fixed_step =
       integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;

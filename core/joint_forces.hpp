@@ -103,7 +103,6 @@ class JointForces {
   void addGeneralized(const Entry& e, double tau, std::vector<Wrench>& out) const;
   double frictionTorque(const Entry& e, double load) const;
 
-  const Model& model_;
   std::vector<Entry> entries_;
   std::vector<int> reaction_;  // entries with reaction-load friction
   std::vector<Wrench> delta_;  // per body

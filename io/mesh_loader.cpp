@@ -6,9 +6,14 @@
 
 #include <Eigen/Geometry>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
-#include <sstream>
+
+#include "io/collada_check.hpp"
+#include "io/obj_reader.hpp"
 
 namespace tribo::io {
 
@@ -75,18 +80,41 @@ void checkScale(const std::string& name, const Eigen::Vector3d& scale) {
     throw MeshError("mesh file '" + name + "': scale must be 3 numbers > 0");
 }
 
-// The merged, scaled, welded mesh of what assimp read (scene may be null on failure).
-std::shared_ptr<const MeshData> toMesh(const aiScene* scene, const Assimp::Importer& importer,
-                                       const std::string& name, const Eigen::Vector3d& scale) {
-  if (scene == nullptr || scene->mRootNode == nullptr)
-    throw MeshError("mesh file '" + name + "': cannot read it (" + importer.GetErrorString() + ")");
-  auto mesh = std::make_shared<MeshData>();
+// The format of a file extension or hint, in lower case: "stl", "obj" or "dae".
+std::string format(const std::string& written, const std::string& name) {
+  std::string f(written.starts_with('.') ? written.substr(1) : written);
+  for (char& c : f) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (f != "stl" && f != "obj" && f != "dae")
+    throw MeshError("mesh file '" + name + "': expected an STL, OBJ or DAE file (by its " +
+                    "extension), found '" + written + "'");
+  return f;
+}
+
+// Scaled and welded, a mesh that holds at least one triangle.
+std::shared_ptr<const MeshData> finish(MeshData&& read, const std::string& name,
+                                       const Eigen::Vector3d& scale) {
+  auto mesh = std::make_shared<MeshData>(std::move(read));
   mesh->source = name;
-  collect(*scene, *scene->mRootNode, aiMatrix4x4(), *mesh);
   if (mesh->triangles.empty())
     throw MeshError("mesh file '" + name + "': expected at least one triangle, found none");
   for (auto& v : mesh->vertices) v = v.cwiseProduct(scale);
   weld(*mesh);
+  return mesh;
+}
+
+// STL and COLLADA through assimp, from memory: every node's meshes merged.
+MeshData readWithAssimp(std::span<const unsigned char> bytes, const std::string& format,
+                        const std::string& name) {
+  if (format == "dae")
+    checkColladaSizes({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, name);
+  Assimp::Importer importer;
+  configure(importer);
+  const aiScene* scene =
+      importer.ReadFileFromMemory(bytes.data(), bytes.size(), kSteps, format.c_str());
+  if (scene == nullptr || scene->mRootNode == nullptr)
+    throw MeshError("mesh file '" + name + "': cannot read it (" + importer.GetErrorString() + ")");
+  MeshData mesh;
+  collect(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
   return mesh;
 }
 
@@ -96,10 +124,13 @@ std::shared_ptr<const MeshData> loadMesh(const std::string& path, const Eigen::V
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw MeshError("mesh file '" + path + "': cannot open (expected an STL, OBJ or DAE file)");
-  checkScale(path, scale);
-  Assimp::Importer importer;
-  configure(importer);
-  return toMesh(importer.ReadFile(path, kSteps), importer, path, scale);
+  const std::string hint = format(std::filesystem::path(path).extension().string(), path);
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (!in) throw MeshError("mesh file '" + path + "': cannot read it");
+  return loadMeshFromMemory(
+      std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), hint, path,
+      scale);
 }
 
 std::shared_ptr<const MeshData> loadMeshFromMemory(std::span<const unsigned char> bytes,
@@ -107,12 +138,14 @@ std::shared_ptr<const MeshData> loadMeshFromMemory(std::span<const unsigned char
                                                    const std::string& name_for_errors,
                                                    const Eigen::Vector3d& scale) {
   checkScale(name_for_errors, scale);
+  const std::string f = format(hint, name_for_errors);
   if (bytes.empty())
     throw MeshError("mesh file '" + name_for_errors + "': cannot read it (no bytes)");
-  Assimp::Importer importer;
-  configure(importer);
-  return toMesh(importer.ReadFileFromMemory(bytes.data(), bytes.size(), kSteps, hint.c_str()),
-                importer, name_for_errors, scale);
+  if (f == "obj")
+    return finish(
+        readObj({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, name_for_errors),
+        name_for_errors, scale);
+  return finish(readWithAssimp(bytes, f, name_for_errors), name_for_errors, scale);
 }
 
 }  // namespace tribo::io

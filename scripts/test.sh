@@ -1,16 +1,48 @@
 #!/usr/bin/env bash
-# Installs the dependencies, checks the formatting, builds Tribo with warnings as errors,
-# and runs the whole test suite twice: in the Release build, then in a build with
-# AddressSanitizer and UBSan (benches left out); then the libFuzzer harnesses for a fixed
-# number of inputs each (scripts/fuzz.sh --ci, docs/fuzzing.md).
+# Installs the dependencies, checks the formatting, builds Tribo with GCC (Release, warnings
+# as errors) and runs the whole test suite there; then builds it once more with clang in
+# build-sanitize/ (warnings as errors, AddressSanitizer, UBSan and libFuzzer's coverage
+# instrumentation, -O1 with line tables only, benches left out), runs the whole suite again
+# in that build and, from the same tree, the libFuzzer harnesses for a fixed number of
+# inputs each (scripts/fuzz.sh --ci, docs/fuzzing.md). Two compilers check the warnings;
+# one sanitized tree serves the tests and the fuzzers. Each phase prints its duration, and a
+# summary of them ends the log (also when a phase fails).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-CMAKE_ARGS="-DTRIBO_WERROR=ON ${CMAKE_ARGS:-}" scripts/setup.sh
-scripts/check_format.sh
-ctest --test-dir build --output-on-failure -j "$(nproc)"
-BUILD_DIR=build-sanitize \
-  CMAKE_ARGS="-DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRIBO_SANITIZE=ON -DTRIBO_BUILD_BENCH=OFF -DTRIBO_WERROR=ON" \
-  scripts/setup.sh
-ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)"
-scripts/fuzz.sh --ci
+
+PHASES=()
+START=$(date +%s)
+summary() {
+  echo "test.sh: phase durations"
+  for p in "${PHASES[@]}"; do echo "  $p"; done
+  echo "  total: $(($(date +%s) - START)) s"
+}
+trap summary EXIT
+
+phase() {  # NAME COMMAND...: runs COMMAND, records how long it took (also when it fails)
+  local name=$1 start status=0
+  shift
+  start=$(date +%s)
+  echo "test.sh: == $name"
+  "$@" || status=$?
+  PHASES+=("$name: $(($(date +%s) - start)) s$([ $status -eq 0 ] || echo ", failed ($status)")")
+  echo "test.sh: $name took $(($(date +%s) - start)) s"
+  [ $status -eq 0 ] || exit $status
+}
+
+release_build() { CMAKE_ARGS="-DTRIBO_WERROR=ON ${CMAKE_ARGS:-}" scripts/setup.sh; }
+sanitized_build() {
+  BUILD_DIR=build-sanitize CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DTRIBO_SANITIZE=ON -DTRIBO_FUZZ=ON -DTRIBO_BUILD_BENCH=OFF -DTRIBO_WERROR=ON" scripts/setup.sh
+}
+sanitized_tests() {
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)"
+}
+
+phase "setup and GCC Release build" release_build
+phase "format check" scripts/check_format.sh
+phase "tests, Release" ctest --test-dir build --output-on-failure -j "$(nproc)"
+phase "clang sanitized and fuzzer build" sanitized_build
+phase "tests, ASan + UBSan" sanitized_tests
+phase "fuzzing (scripts/fuzz.sh --ci)" env -u CMAKE_ARGS BUILD_DIR=build-sanitize scripts/fuzz.sh --ci
