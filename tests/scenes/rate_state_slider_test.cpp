@@ -87,7 +87,7 @@ Growth measure(double k, double v, double duration, double t_skip, const std::st
     EXPECT_TRUE(status.ok) << status.message;
     if (!status.ok) return {NAN, NAN, NAN};
     t.push_back(sim.state().time);
-    u.push_back(sim.state().bodies[block].velocity.x() - v);
+    u.push_back(sim.state().bodies[block].velocity.x());
   }
   // Peaks: a parabola through three samples around each local maximum of u.
   std::vector<double> pt, pu;
