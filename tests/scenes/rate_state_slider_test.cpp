@@ -1,7 +1,8 @@
 // scenes/rate_state_slider.yaml: the stability of steady sliding of a spring-slider under
 // rate-and-state friction, measured by simulation against the linear theory derived here.
 //
-// Block of mass m on a normal load N, pulled through a spring k whose far end moves at V;
+// Block of mass m on a normal load N, on a belt moving at V and held by a spring k (in its
+// frame: pulled at V through the spring);
 // mu = a asinh((v / 2 v0) exp((mu0 + b psi) / a)), psi = ln(v0 theta / d_c), aging
 // dpsi/dt = (v0 e^-psi - v) / d_c or slip dpsi/dt = -(v / d_c)(psi + ln(v / v0)). About
 // steady sliding (v = V, psi = ln(v0 / V)) put v = V + u, psi = psi_ss + p, x = x_ss + y:
