@@ -40,7 +40,8 @@
 //   [simulation.constraints]: {[projection], [tolerance], [iterations], [project_initial],
 //             [redundant: error|remove], [solver: auto|dense|sparse], [sparse_threshold]}
 //   [springs]: - name a point_a b point_b stiffness [damping] [rest_length]
-//   [friction_laws]: {LAW: {key: value}}     LAW is a name known to makeFrictionLaw
+//   [friction_laws]: {LAW: {key: value}}     LAW is a name known to makeFrictionLaw; a value
+//                 is a number, an expression over parameters, or an option's word
 //   [materials]: - name [normal: {[law: linear|hertz|hunt_crossley|recurdyn], [stiffness],
 //                  [damping], [exponent], [max_depth], [restitution, impact_speed]}] friction
 //                  [surfaces: [[s1, s2], ...]] [default: true|false]
@@ -777,6 +778,17 @@ class Loader {
     guarded(v, [&] { builder_.addSpring(name, a, pa, b, pb, k, c, l0); });
   }
 
+  // The value of a law entry that is an expression over parameters, or nothing when the text
+  // is not one (an option's word, a file name with '/' or '-').
+  static std::optional<double> expressionValue(const Value& value, const std::string& text) {
+    if (!looksLikeExpression(text)) return std::nullopt;
+    try {
+      return value.number();
+    } catch (const SceneError&) {
+      return std::nullopt;
+    }
+  }
+
   // Reads every law entry (known law name, scalar values, resolvable references) but builds
   // only the laws a material selects (readMaterial), so that values out of range for a law
   // that is not used are no error: e.g. `--set a=0.5` while the materials use recurdyn.
@@ -796,10 +808,13 @@ class Loader {
         if (!value.node().IsScalar())
           value.fail("expected a number or a string, found " + value.found());
         const std::string text = value.text();
-        if (const auto number = parseNumber(text))
+        if (const auto number = parseNumber(text)) {
           e.spec.values[key] = *number;
-        else
-          e.spec.options[key] = text;
+        } else if (const auto result = expressionValue(value, text)) {
+          e.spec.values[key] = *result;  // e.g. theta0: $theta with theta: '$d_c / $v'
+        } else {
+          e.spec.options[key] = text;  // a word: an option, or a file name
+        }
       }
       law_names_.push_back(law);
       laws_.emplace(law, std::move(e));

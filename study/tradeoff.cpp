@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ctime>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "core/stability.hpp"
@@ -188,10 +189,22 @@ std::vector<TradeoffSetting> tradeoffLadder(const TradeoffSpec& spec) {
       continue;
     }
     const double limit = stableStep(spec, type);
+    auto inWindow = [&](double step) {
+      return std::isinf(limit) || (step >= limit / 64 && step <= 2.5 * limit);
+    };
+    int below = 0;  // rungs at or below the limit
     for (int n : kLadder) {
       const double step = kGrid / n;
-      if (std::isinf(limit) || (step >= limit / 64 && step <= 2.5 * limit))
-        out.push_back({type, true, step, 0.0});
+      if (inWindow(step)) out.push_back({type, true, step, 0.0});
+      below += step <= limit;
+    }
+    // A limit below the finest rung (a stiff bristle: tens of microseconds): continue the
+    // ladder by halving until two rungs lie at or below it.
+    for (long n = 2L * kLadder[std::size(kLadder) - 1]; below < 2 && kGrid / n >= limit / 64;
+         n *= 2) {
+      const double step = kGrid / static_cast<double>(n);
+      if (inWindow(step)) out.push_back({type, true, step, 0.0});
+      below += step <= limit;
     }
   }
   return out;

@@ -1,7 +1,8 @@
 // The speed-accuracy trade of a scene, measured (`tribo tradeoff`).
 //
 // Runs every integrator over a ladder of settings, fixed steps G/n (G = 40 ms, n = 2 .. 640,
-// those between limit/64 and 2.5 limit of the a-priori stability estimate) for
+// continued by doubling n while fewer than two rungs lie at or below the limit; those
+// between limit/64 and 2.5 limit of the a-priori stability estimate) for
 // semi_implicit_euler and rk4, tolerances rtol = 1e-3 .. 1e-8 (atol = 1e-3 rtol) at a
 // 10 ms communication interval for dopri5 and bdf (with and without event location), and
 // compares each run with a converged reference (rk4 at a step of at most limit/8 and

@@ -195,6 +195,17 @@ TEST(SceneLoader, LawsNoMaterialSelectsAreNotValidated) {
             "coulomb");
 }
 
+// A law's value may be an expression over parameters, as any number of the scene; words stay
+// options (the law checks them).
+TEST(SceneLoader, LawValuesMayBeExpressions) {
+  std::string yaml = replaced(kBase, "  coulomb: {mu: 0.3}\n",
+                              "  coulomb: {mu: '$m / 20', regularization: linear}\n");
+  const Scene scene = loadSceneFromString(yaml, "test.yaml", {"m=4"});
+  EXPECT_DOUBLE_EQ(scene.model->materials[0].friction->coefficient(1.0), 0.2);
+  yaml = replaced(yaml, "regularization: linear", "regularization: '$m + nosuch'");
+  EXPECT_TRUE(Has(errorOf([&] { loadSceneFromString(yaml, "test.yaml"); }), "regularization"));
+}
+
 TEST(SceneLoader, UnknownOverrideNameListsTheKnownOnes) {
   const std::string e = errorOf([] { loadScene(kBeltPath, {"kk=3"}); });
   EXPECT_TRUE(Has(e, "belt.yaml"));

@@ -14,6 +14,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/stability.hpp"
+#include "io/scene_loader.hpp"
+
 namespace tribo::study {
 namespace {
 
@@ -64,6 +67,34 @@ TEST(Tradeoff, LadderHoldsTheGridStepsInsideTheStabilityWindow) {
   EXPECT_EQ(tolerances.size(), 12u);  // 1e-3 .. 1e-8, with and without event location
   EXPECT_EQ(tolerances.front().label(), "dopri5");
   EXPECT_EQ(tolerances.back().label(), "dopri5_noevents");
+}
+
+// A limit below the ladder's finest rung (40 ms / 640 = 62.5 us): LuGre's bristle on the belt,
+// decay rate sigma0 |v| / mu_k = 1e4 * 6 / 0.3 = 2e5 1/s at the estimate's slip speed, so
+// RK4's limit is 2.79 / 2e5 ~ 14 us. The ladder goes on halving the step until two rungs lie
+// at or below the limit, each inside the window [limit/64, 2.5 limit].
+TEST(Tradeoff, LadderReachesBelowALimitFinerThanItsLastRung) {
+  TradeoffSpec spec = beltSpec();
+  spec.overrides.push_back("friction=lugre");
+  io::RunSettings rk4;
+  rk4.integrator = IntegratorType::kRk4;
+  const double limit =
+      estimateStableStep(*io::loadScene(spec.scene_path, spec.overrides, {}, rk4).model)
+          .limit.max_step;
+  ASSERT_LT(limit, 2.79 / 2e5 * 1.01);
+  ASSERT_GT(limit, 2.79 / 2e5 * 0.9);
+  const auto ladder = tradeoffLadder(spec);
+  ASSERT_FALSE(ladder.empty());
+  int below = 0;
+  for (const TradeoffSetting& s : ladder) {
+    EXPECT_GE(s.step, limit / 64);
+    EXPECT_LE(s.step, 2.5 * limit);
+    const double n = 0.04 / s.step;
+    EXPECT_NEAR(n, std::round(n), 1e-6 * n);  // divides the comparison grid
+    below += s.step <= limit;
+  }
+  EXPECT_EQ(below, 2);
+  EXPECT_LE(ladder.back().step, limit / 2 * 1.0001);  // the second rung below: half a step on
 }
 
 TEST(Tradeoff, EverySettingReachesItsRunAndErrorsFallLikeH4) {
