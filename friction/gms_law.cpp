@@ -54,8 +54,10 @@ GmsLaw::GmsLaw(const GmsParams& p) : params_(p), s_{p.mu_c, p.mu_s, p.v_s, p.del
     check.require(alpha_[i] > 0.0, a_key + " must be > 0", alpha_[i]);
     sum += alpha_[i];
     total_stiffness_ += k_[i];
+    attraction_over_k_.push_back(p.attraction / k_[i]);
   }
   check.require(std::abs(sum - 1.0) <= 1e-9, "alpha_1..alpha_N must sum to 1", sum);
+  damping_per_stiffness_ = p.sigma1 / total_stiffness_;
 }
 
 double GmsLaw::coefficient(double v) const {
@@ -84,41 +86,45 @@ std::string GmsLaw::stateName(int i) const {
 void GmsLaw::initialState(double* z) const { std::fill(z, z + stateSize(), 0.0); }
 
 bool GmsLaw::sliding(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip) const {
-  return slidingAt(i, zi, slip, s_.value(slip.norm()));
+  return slidingAt(i, zi.dot(slip), zi.squaredNorm(), s_.value(slip.norm()));
 }
 
-bool GmsLaw::slidingAt(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip,
-                       double stribeck) const {
+bool GmsLaw::slidingAt(int i, double z_dot_s, double z_squared, double stribeck) const {
   // |k z| >= alpha S (1 - 1e-12), compared squared (no square root per element). The 1e-12
   // band keeps an element settled on its limit sliding whichever way rounding put it (else
   // sigma1 would see its rate flip between 0 and s).
   const double limit = alpha_[i] * stribeck;
-  return zi.dot(slip) > 0.0 && k_[i] * k_[i] * zi.squaredNorm() >= limit * limit * (1.0 - 2e-12);
+  return z_dot_s > 0.0 && k_[i] * k_[i] * z_squared >= limit * limit * (1.0 - 2e-12);
 }
 
 void GmsLaw::rate(const double* z, const Eigen::Vector3d& slip, double, double* zdot) const {
   const double v = slip.norm();
   const double stribeck = s_.value(v);
+  // A sliding element's rate (C / k_i) (alpha_i s / |s| - k_i z_i / S) written as
+  // (C alpha_i / (k_i |s|)) s - (C / S) z_i: one division per call, none per element.
+  const double relax = params_.attraction / stribeck;
+  const double inv_v = 1.0 / v;  // used only by a sliding element, which needs z . s > 0
   for (int i = 0; i < elements(); ++i) {
-    const Eigen::Vector3d zi(z[3 * i], z[3 * i + 1], z[3 * i + 2]);
-    Eigen::Vector3d rate_i = slip;
-    if (slidingAt(i, zi, slip, stribeck)) {
-      const double c = params_.attraction / k_[i];
-      rate_i = c * (alpha_[i] / v * slip - (k_[i] / stribeck) * zi);
+    const Eigen::Map<const Eigen::Vector3d> zi(z + 3 * i);
+    Eigen::Map<Eigen::Vector3d> rate_i(zdot + 3 * i);
+    if (slidingAt(i, zi.dot(slip), zi.squaredNorm(), stribeck)) {
+      rate_i = (attraction_over_k_[i] * alpha_[i] * inv_v) * slip - relax * zi;
+    } else {
+      rate_i = slip;
     }
-    for (int j = 0; j < 3; ++j) zdot[3 * i + j] = rate_i[j];
   }
 }
 
 Eigen::Vector3d GmsLaw::force(const double* z, const double* zdot, const Eigen::Vector3d& slip,
                               double fn, double* mu_out) const {
-  Eigen::Vector3d per_load = params_.sigma2 * slip;
-  const double damping = params_.sigma1 / total_stiffness_;
+  // sum_i k_i z_i + (sigma1 / K) sum_i k_i dz_i/dt + sigma2 s
+  Eigen::Vector3d elastic = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rate = Eigen::Vector3d::Zero();
   for (int i = 0; i < elements(); ++i) {
-    const Eigen::Vector3d zi(z[3 * i], z[3 * i + 1], z[3 * i + 2]);
-    const Eigen::Vector3d ri(zdot[3 * i], zdot[3 * i + 1], zdot[3 * i + 2]);
-    per_load += k_[i] * (zi + damping * ri);
+    elastic += k_[i] * Eigen::Map<const Eigen::Vector3d>(z + 3 * i);
+    rate += k_[i] * Eigen::Map<const Eigen::Vector3d>(zdot + 3 * i);
   }
+  const Eigen::Vector3d per_load = elastic + damping_per_stiffness_ * rate + params_.sigma2 * slip;
   if (mu_out != nullptr) *mu_out = fn > 0.0 ? per_load.norm() : 0.0;
   return -fn * per_load;
 }

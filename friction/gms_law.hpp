@@ -94,14 +94,16 @@ class GmsLaw final : public DynamicFrictionLaw {
   bool sliding(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip) const;
 
  private:
-  bool slidingAt(int i, const Eigen::Vector3d& zi, const Eigen::Vector3d& slip,
-                 double stribeck) const;
+  // The rule above from z_i . s, |z_i|^2 and S(|s|).
+  bool slidingAt(int i, double z_dot_s, double z_squared, double stribeck) const;
 
   GmsParams params_;
   StribeckCurve s_;
   std::vector<double> k_;
   std::vector<double> alpha_;
+  std::vector<double> attraction_over_k_;  // C / k_i [m]
   double total_stiffness_ = 0.0;
+  double damping_per_stiffness_ = 0.0;  // sigma1 / K [s]
 };
 
 }  // namespace tribo::friction
