@@ -27,7 +27,9 @@
 // [m/s] (1e-3, > 0), delta [-] (2, > 0), attraction C [1/s] (default 20, > 0: a sliding
 // element relaxes to its limit at rate C / S), sigma1 [s/m] micro-damping (default 0, >= 0),
 // sigma2 [s/m] viscous (default 0, >= 0).
-// Limits, honestly: the default stiffness and C are illustrative, not fitted; stableStep is
+// Limits, honestly: the rate jumps at each switch, which implicit multistep methods do not
+// survive (bdf stops with CVODE's step limit on the belt) and which costs every fixed-step
+// method its order; the default stiffness and C are illustrative, not fitted; stableStep is
 // exact at frozen slip for an element whose deflection is along s, and for others lets an
 // element that reached its limit slide for the rest of the step; without sigma1 the
 // presliding spring is undamped.
