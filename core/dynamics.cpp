@@ -60,6 +60,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   ws_.contact_wrench.assign(nb, {});
   ws_.spring_wrench.assign(nb, {});
   ws_.joint_wrench.assign(nb, {});
+  ws_.joint_friction.assign(model_->joints.size(), 0.0);
   ws_.constraint_wrench.assign(nb, {});
   ws_.rotation.assign(nb, Mat3::Identity());
   ws_.inv_inertia_world.assign(nb, Mat3::Zero());

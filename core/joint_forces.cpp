@@ -56,7 +56,23 @@ double coordinateInertia(const Model& model, int joint) {
   return std::isinf(p) ? c : p * c / (p + c);
 }
 
+std::vector<int> jointFrictionStateOffsets(const Model& model) {
+  std::vector<int> offsets(model.joints.size(), -1);
+  int next = 0;
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const Joint& joint = model.joints[j];
+    const auto& f = joint.elements.friction;
+    if (!hasScalarCoordinate(joint.type) || !f) continue;
+    if (const friction::DynamicFrictionLaw* law = f->law->dynamic()) {
+      offsets[j] = next;
+      next += law->stateSize();
+    }
+  }
+  return offsets;
+}
+
 JointForces::JointForces(const Model& model) {
+  const std::vector<int> offsets = jointFrictionStateOffsets(model);
   const IntegratorType integrator = model.options.integrator;
   const bool fixed_step =
       integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
@@ -71,7 +87,7 @@ JointForces::JointForces(const Model& model) {
       e.max_slope = kDissipativeSlopeShare * coordinateInertia(model, j) / model.options.time_step;
     const auto& f = joint.elements.friction;
     if (f && (e.dynamic = f->law->dynamic()) != nullptr) {
-      e.state = joint_state_size_;
+      e.state = offsets[static_cast<std::size_t>(j)];
       joint_state_size_ += e.dynamic->stateSize();
     }
     entries_.push_back(e);
@@ -131,8 +147,14 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
       if (q > l.upper) tau -= std::max(0.0, l.stiffness * (q - l.upper) + l.damping * rate);
       if (q < l.lower) tau += std::max(0.0, l.stiffness * (l.lower - q) - l.damping * rate);
     }
-    if (el.friction && el.friction->load == JointFrictionLoad::kConstant)
-      tau += frictionTorque(e, el.friction->normal_force);
+    if (el.friction) {
+      // Reaction-load friction is added after the solve (applyReactionFriction).
+      const double friction = el.friction->load == JointFrictionLoad::kConstant
+                                  ? frictionTorque(e, el.friction->normal_force)
+                                  : 0.0;
+      ws.joint_friction[static_cast<std::size_t>(e.joint)] = friction;
+      tau += friction;
+    }
     addGeneralized(e, tau, ws.joint_wrench);
   }
 }
@@ -152,6 +174,7 @@ int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) 
       const double tau = frictionTorque(e, load);
       const double d = tau - e.reaction_torque;
       e.reaction_torque = tau;
+      ws.joint_friction[static_cast<std::size_t>(e.joint)] = tau;
       change = std::max(change, std::abs(d));
       largest = std::max(largest, std::abs(tau));
       if (d != 0.0) {

@@ -57,6 +57,11 @@ double coordinateInertia(const Model& model, int joint);
 // c_max = kDissipativeSlopeShare I_q / h (see above).
 constexpr double kDissipativeSlopeShare = 0.5;
 
+// Per model joint, the offset of its dynamic friction law's slice in
+// State::friction_values, or -1 when its friction (if any) has no internal state; the
+// slices' layout that JointForces uses.
+std::vector<int> jointFrictionStateOffsets(const Model& model);
+
 class JointForces {
  public:
   explicit JointForces(const Model& model);

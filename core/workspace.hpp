@@ -55,6 +55,9 @@ struct Workspace {
   // solveConstraints: joint friction under reaction load (core/joint_forces.hpp): false when
   // its fixed-point iteration stopped at the cap before the friction torques settled.
   bool joint_friction_converged = true;
+  // Per model joint: the friction force [N] or torque [N m] on its coordinate at this
+  // evaluation (joint friction of any law and load; 0 for joints without friction).
+  std::vector<double> joint_friction;
 };
 
 }  // namespace tribo

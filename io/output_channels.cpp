@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "friction/dynamic_law.hpp"
+
 namespace tribo::io {
 
 namespace {
@@ -30,7 +32,9 @@ const std::vector<std::string>& knownChannelGroups() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
     for (const Group& g : bodyGroups()) n.emplace_back(g.name);
+    n.emplace_back("pairs");
     n.emplace_back("joints");
+    n.emplace_back("friction_states");
     n.emplace_back("energy");
     return n;
   }();
@@ -40,6 +44,12 @@ const std::vector<std::string>& knownChannelGroups() {
 const std::vector<std::string>& defaultChannelGroups() {
   static const std::vector<std::string> names = {"position", "velocity", "contact"};
   return names;
+}
+
+std::string pairName(const Model& model, int pair) {
+  const ContactPair& p = model.contact_pairs[static_cast<std::size_t>(pair)];
+  return model.geometries[static_cast<std::size_t>(p.geometry_a)].name + "/" +
+         model.geometries[static_cast<std::size_t>(p.geometry_b)].name;
 }
 
 bool hasGroup(const std::vector<std::string>& groups, std::string_view group) {
@@ -53,12 +63,26 @@ std::vector<std::string> channelColumns(const Model& model,
     for (const Group& g : bodyGroups())
       if (hasGroup(groups, g.name))
         for (const char* suffix : g.suffixes) names.push_back(b.name + suffix);
+  if (hasGroup(groups, "pairs"))
+    for (int p = 0; p < static_cast<int>(model.contact_pairs.size()); ++p)
+      for (const char* suffix : {".normal_force", ".friction_force", ".slip"})
+        names.push_back(pairName(model, p) + suffix);
   if (hasGroup(groups, "joints"))
     for (const Joint& j : model.joints)
-      if (hasScalarCoordinate(j.type)) {
-        names.push_back(j.name + ".q");
-        names.push_back(j.name + ".rate");
-      }
+      if (hasScalarCoordinate(j.type))
+        for (const char* suffix : {".q", ".rate", ".friction"}) names.push_back(j.name + suffix);
+  if (hasGroup(groups, "friction_states")) {
+    auto add = [&](const std::string& owner, const friction::FrictionLaw& law) {
+      if (const friction::DynamicFrictionLaw* d = law.dynamic())
+        for (int i = 0; i < d->stateSize(); ++i) names.push_back(owner + "." + d->stateName(i));
+    };
+    for (const Joint& j : model.joints)
+      if (hasScalarCoordinate(j.type) && j.elements.friction)
+        add(j.name, *j.elements.friction->law);
+    for (int p = 0; p < static_cast<int>(model.contact_pairs.size()); ++p)
+      add(pairName(model, p),
+          *model.materials[static_cast<std::size_t>(model.contact_pairs[p].material)].friction);
+  }
   if (hasGroup(groups, "energy"))
     for (const char* e :
          {"energy.kinetic", "energy.gravity", "energy.elastic", "energy.input_power"})

@@ -10,13 +10,29 @@
 //     contact           NAME.slip NAME.normal_force     largest slip speed of its contacts
 //                                                       [m/s], sum of their normal forces [N]
 //     friction          NAME.friction_force             |sum of its contacts' friction| [N]
-//   joints              JOINT.q JOINT.rate              each revolute and prismatic joint's
-//                                                       coordinate [rad or m] and rate
+//   pairs               A/B.normal_force A/B.friction_force A/B.slip
+//                                                       per contact pair (geometry names A, B;
+//                                                       forces on B): the sum of its points'
+//                                                       normal forces [N], |sum of their
+//                                                       friction forces| [N], their largest
+//                                                       slip speed [m/s]; 0 out of contact
+//   joints              JOINT.q JOINT.rate JOINT.friction
+//                                                       each revolute and prismatic joint's
+//                                                       coordinate [rad or m], its rate (the
+//                                                       joint's slip) and its friction force
+//                                                       or torque on the coordinate [N, N m]
+//   friction_states     JOINT.S, A/B.S                  the internal state of dynamic friction
+//                                                       laws (friction/dynamic_law.hpp), S its
+//                                                       names (z.x, theta, z1.x ...): a joint's
+//                                                       own; a pair's mean over its points in
+//                                                       contact (0 out of contact)
 //   energy              energy.kinetic energy.gravity energy.elastic energy.input_power
 //                                                       (core/energy.hpp) [J, W]
 // Default: position, velocity, contact (what trajectory.csv always held).
+// A scene with automatic contacts has a pair for every two geometries that may touch: `pairs`
+// then writes three columns for each (choose per-body `contact` and `friction` there).
 // Not here: recording (study/trajectory_recorder.hpp), per-contact-point columns (points
-// come and go), the internal states of dynamic friction laws (records come and go).
+// come and go, and with them their states).
 #pragma once
 
 #include <string>
@@ -34,6 +50,9 @@ const std::vector<std::string>& defaultChannelGroups();
 
 // The column names of `groups` (known names, any order, no repeats) for `model`.
 std::vector<std::string> channelColumns(const Model& model, const std::vector<std::string>& groups);
+
+// "A/B": the name of contact pair `pair` in column names.
+std::string pairName(const Model& model, int pair);
 
 // True when `groups` holds `group`.
 bool hasGroup(const std::vector<std::string>& groups, std::string_view group);

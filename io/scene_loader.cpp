@@ -343,9 +343,11 @@ class Loader {
       const std::vector<std::string> columns = channelColumns(*scene.model, scene.output.channels);
       if (std::find(columns.begin() + 1, columns.end(), scene.output.summary.channel) ==
           columns.end())
-        summary_channel_->fail("no recorded channel '" + scene.output.summary.channel +
-                               "' (output.channels: " + joined(scene.output.channels) +
-                               "; e.g. BODY.yaw needs rpy, JOINT.q needs joints)");
+        summary_channel_->fail(
+            "no recorded channel '" + scene.output.summary.channel +
+            "' (output.channels: " + joined(scene.output.channels) +
+            "; e.g. BODY.yaw needs rpy, JOINT.q needs joints, A/B.normal_force needs pairs, "
+            "A/B.z.x needs friction_states)");
     }
     scene.parameters = params_.values();
     scene.notes = notes_;

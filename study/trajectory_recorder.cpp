@@ -7,6 +7,8 @@
 
 #include "core/constraint_rows.hpp"
 #include "core/energy.hpp"
+#include "core/joint_forces.hpp"
+#include "friction/dynamic_law.hpp"
 
 namespace tribo::study {
 
@@ -20,11 +22,37 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
   angular_velocity_ = io::hasGroup(groups, "angular_velocity");
   contact_ = io::hasGroup(groups, "contact");
   friction_force_ = io::hasGroup(groups, "friction");
+  pairs_ = io::hasGroup(groups, "pairs");
   joints_ = io::hasGroup(groups, "joints");
+  friction_states_ = io::hasGroup(groups, "friction_states");
   energy_ = io::hasGroup(groups, "energy");
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
     if (joints_ && hasScalarCoordinate(model.joints[static_cast<std::size_t>(j)].type))
-      joints_recorded_.push_back(j);
+      joints_recorded_.push_back({j, jointCoordinate(model.joints[static_cast<std::size_t>(j)])});
+  const std::size_t pairs = model.contact_pairs.size();
+  if (pairs_) {
+    pair_normal_.resize(pairs);
+    pair_slip_.resize(pairs);
+    pair_friction_.resize(pairs);
+  }
+  if (friction_states_) {
+    // The same order as io::channelColumns: joints, then pairs.
+    const std::vector<int> offsets = jointFrictionStateOffsets(model);
+    for (std::size_t j = 0; j < model.joints.size(); ++j)
+      if (offsets[j] >= 0)
+        joint_states_.emplace_back(offsets[j],
+                                   model.joints[j].elements.friction->law->dynamic()->stateSize());
+    int next = 0;
+    for (const ContactPair& p : model.contact_pairs) {
+      const friction::DynamicFrictionLaw* law =
+          model.materials[static_cast<std::size_t>(p.material)].friction->dynamic();
+      pair_state_offset_.push_back(next);
+      pair_state_size_.push_back(law != nullptr ? law->stateSize() : 0);
+      next += pair_state_size_.back();
+    }
+    pair_state_.resize(static_cast<std::size_t>(next));
+    pair_points_.resize(pairs);
+  }
   friction_.resize(model.bodies.size());
   data_.resize(names_.size());
   if (keep_rows_)
@@ -56,6 +84,31 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
       }
     }
   }
+  if (pairs_) {
+    std::fill(pair_normal_.begin(), pair_normal_.end(), 0.0);
+    std::fill(pair_slip_.begin(), pair_slip_.end(), 0.0);
+    std::fill(pair_friction_.begin(), pair_friction_.end(), Vec3::Zero());
+    for (const auto& c : ws.contacts) {
+      const auto p = static_cast<std::size_t>(c.point.pair);
+      pair_normal_[p] += c.normal_force;
+      pair_friction_[p] += c.friction_force;
+      pair_slip_[p] = std::max(pair_slip_[p], c.slip.norm());
+    }
+  }
+  if (friction_states_) {
+    // Records used by a contact point at this evaluation; their states as stored.
+    std::fill(pair_state_.begin(), pair_state_.end(), 0.0);
+    std::fill(pair_points_.begin(), pair_points_.end(), 0);
+    for (std::size_t r = 0; r < state.friction_states.size(); ++r) {
+      if (r >= ws.friction_state_contact.size() || ws.friction_state_contact[r] < 0) continue;
+      const contact::StickAnchor& rec = state.friction_states[r];
+      const auto p = static_cast<std::size_t>(contact::keyPair(rec.key));
+      const double* z = &state.friction_values[static_cast<std::size_t>(rec.state)];
+      for (int i = 0; i < pair_state_size_[p]; ++i)
+        pair_state_[static_cast<std::size_t>(pair_state_offset_[p] + i)] += z[i];
+      ++pair_points_[p];
+    }
+  }
   std::size_t col = 0;
   row_[col++] = state.time;
   for (std::size_t b = 0; b < state.bodies.size(); ++b) {
@@ -82,14 +135,30 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
     }
     if (friction_force_) row_[col++] = friction_[b].norm();
   }
+  if (pairs_)
+    for (std::size_t p = 0; p < pair_normal_.size(); ++p) {
+      row_[col++] = pair_normal_[p];
+      row_[col++] = pair_friction_[p].norm();
+      row_[col++] = pair_slip_[p];
+    }
   if (joints_) {
     const MotionView motion(state, ws.rotation);
-    for (int j : joints_recorded_) {
-      const JointCoordinate c = jointCoordinate(model_.joints[static_cast<std::size_t>(j)]);
+    for (const RecordedJoint& j : joints_recorded_) {
       CoordinateValue v;
-      evaluateCoordinate(c, motion(c.parent), motion(c.child), v);
+      evaluateCoordinate(j.coordinate, motion(j.coordinate.parent), motion(j.coordinate.child), v);
       row_[col++] = v.q;
       row_[col++] = v.rate;
+      row_[col++] = ws.joint_friction[static_cast<std::size_t>(j.joint)];
+    }
+  }
+  if (friction_states_) {
+    for (const auto& [offset, size] : joint_states_)
+      for (int i = 0; i < size; ++i)
+        row_[col++] = state.friction_values[static_cast<std::size_t>(offset + i)];
+    for (std::size_t p = 0; p < pair_state_size_.size(); ++p) {
+      const double n = pair_points_[p] > 0 ? pair_points_[p] : 1.0;
+      for (int i = 0; i < pair_state_size_[p]; ++i)
+        row_[col++] = pair_state_[static_cast<std::size_t>(pair_state_offset_[p] + i)] / n;
     }
   }
   if (energy_) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/constraint_rows.hpp"
 #include "core/model.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
@@ -63,11 +64,24 @@ class TrajectoryRecorder {
   std::vector<double> row_;            // scratch: the row being recorded
   std::vector<double> slip_, normal_;  // per body, scratch
   std::vector<Vec3> friction_;         // per body, scratch
+  // Per contact pair, scratch: normal force sum, friction force sum, largest slip; and for
+  // friction_states the sum of its records' states and their count.
+  std::vector<double> pair_normal_, pair_slip_, pair_state_;
+  std::vector<Vec3> pair_friction_;
+  std::vector<int> pair_points_;
   // The groups asked for, by flag (io/output_channels.hpp's order).
   bool position_ = false, orientation_ = false, rpy_ = false, velocity_ = false,
-       angular_velocity_ = false, contact_ = false, friction_force_ = false, joints_ = false,
-       energy_ = false;
-  std::vector<int> joints_recorded_;  // joints with a scalar coordinate
+       angular_velocity_ = false, contact_ = false, friction_force_ = false, pairs_ = false,
+       joints_ = false, friction_states_ = false, energy_ = false;
+  struct RecordedJoint {
+    int joint = -1;
+    JointCoordinate coordinate;  // fixed per model: built once
+  };
+  std::vector<RecordedJoint> joints_recorded_;  // joints with a scalar coordinate
+  // friction_states: per joint with a dynamic law its slice {offset, size}; per contact pair
+  // the offset of its columns in pair_state_ and its state size (0: memoryless law).
+  std::vector<std::pair<int, int>> joint_states_;
+  std::vector<int> pair_state_offset_, pair_state_size_;
   std::vector<RowSink*> sinks_;
 };
 
