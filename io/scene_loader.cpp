@@ -349,12 +349,29 @@ class Loader {
             "; e.g. BODY.yaw needs rpy, JOINT.q needs joints, A/B.normal_force needs pairs, "
             "A/B.z.x needs friction_states)");
     }
+    noteSurfaceVelocityOffTheSurface(*scene.model);
     scene.parameters = params_.values();
     scene.notes = notes_;
     return scene;
   }
 
  private:
+  // A half-space's surface is its geometry's z = 0 plane: a body's surface_velocity (in each
+  // geometry's frame) with a part along that z would push material through the surface,
+  // which the contact ignores (it uses the tangential part only through the slip).
+  void noteSurfaceVelocityOffTheSurface(const Model& model) {
+    for (const Geometry& g : model.geometries) {
+      if (g.body.isWorld() || g.shape.type != contact::ShapeType::kHalfSpace) continue;
+      const Vec3& v = model.bodies[g.body.value].surface_velocity;
+      if (std::abs(v.z()) <= 1e-9 * v.norm()) continue;
+      notes_.push_back("bodies." + model.bodies[g.body.value].name + ".surface_velocity [" +
+                       numberText(v.x()) + ", " + numberText(v.y()) + ", " + numberText(v.z()) +
+                       "] is not tangent to the surface of half-space '" + g.name +
+                       "' (its z must be 0: the velocity is read in the geometry's " +
+                       "frame, whose z is the surface normal)");
+    }
+  }
+
   void applyRunSettings(const RunSettings& r, OutputSpec& output) {
     SimulationOptions& o = builder_.options();
     if (r.integrator) o.integrator = *r.integrator;

@@ -71,5 +71,30 @@ TEST(TiltedBelt, SurfaceMovesAlongItsTiltedPlane) {
         }
 }
 
+// The rule's guard: a surface velocity with a part along the half-space's normal (its
+// geometry's z) is noted when the scene loads; tangent ones, tilted or not, are not.
+TEST(TiltedBelt, SurfaceVelocityOffTheSurfaceIsNoted) {
+  auto notes = [](const std::string& yaml) {
+    std::string all;
+    for (const std::string& n : io::loadSceneFromString(yaml, "belt.yaml").notes) all += n + "\n";
+    return all;
+  };
+  for (const double v : {1e-3, 1.5, 40.0}) {
+    for (const bool tilt_body : {false, true}) {
+      EXPECT_EQ(notes(scene(0.1, 0.17, v, tilt_body)), "") << v;
+      std::string off = scene(0.1, 0.17, v, tilt_body);
+      const std::string from = "surface_velocity: [";
+      const auto at = off.find(from);
+      const auto end = off.find(']', at);
+      off.replace(at, end - at + 1,
+                  from + std::to_string(v) + ", 0, " + std::to_string(0.1 * v) + "]");
+      const std::string text = notes(off);
+      EXPECT_NE(text.find("bodies.belt.surface_velocity"), std::string::npos) << text;
+      EXPECT_NE(text.find("not tangent to the surface of half-space 'surface'"), std::string::npos)
+          << text;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tribo
