@@ -12,19 +12,8 @@ namespace tribo::friction {
 ElastoPlasticLaw::ElastoPlasticLaw(const ElastoPlasticParams& p)
     : params_(p), g_{p.mu_c, p.mu_s, p.v_s, 2.0}, z_ba_(p.z_ba_fraction * p.mu_c / p.sigma0) {
   const ParameterCheck check("elasto_plastic");
-  check.finite({{"sigma0", p.sigma0},
-                {"sigma1", p.sigma1},
-                {"sigma2", p.sigma2},
-                {"mu_c", p.mu_c},
-                {"mu_s", p.mu_s},
-                {"v_s", p.v_s},
-                {"z_ba_fraction", p.z_ba_fraction}});
-  check.require(p.sigma0 > 0.0, "sigma0 must be > 0 [1/m]", p.sigma0);
-  check.require(p.sigma1 >= 0.0, "sigma1 must be >= 0 [s/m]", p.sigma1);
-  check.require(p.sigma2 >= 0.0, "sigma2 must be >= 0 [s/m]", p.sigma2);
-  check.require(p.mu_c > 0.0, "mu_c must be > 0", p.mu_c);
-  check.require(p.mu_s >= p.mu_c, "mu_s must be >= mu_c", "mu_s", p.mu_s, "mu_c", p.mu_c);
-  check.require(p.v_s > 0.0, "v_s must be > 0 [m/s]", p.v_s);
+  check.bristle(p.sigma0, p.sigma1, p.sigma2, p.mu_c, p.mu_s, p.v_s);
+  check.finite({{"z_ba_fraction", p.z_ba_fraction}});
   check.require(p.z_ba_fraction > 0.0 && p.z_ba_fraction < 1.0,
                 "z_ba_fraction must be in (0, 1) (break-away below the Coulomb deflection)",
                 p.z_ba_fraction);

@@ -38,6 +38,23 @@ class ParameterCheck {
     require(mu_k >= 0.0, "mu_k must be >= 0", mu_k);
     require(mu_s >= mu_k, "mu_s must be >= mu_k", "mu_s", mu_s, "mu_k", mu_k);
   }
+  // The bristle laws' shared set (lugre, elasto_plastic): finite, sigma0 > 0 [1/m],
+  // sigma1, sigma2 >= 0 [s/m], mu_s >= mu_c > 0, v_s > 0 [m/s].
+  void bristle(double sigma0, double sigma1, double sigma2, double mu_c, double mu_s,
+               double v_s) const {
+    finite({{"sigma0", sigma0},
+            {"sigma1", sigma1},
+            {"sigma2", sigma2},
+            {"mu_c", mu_c},
+            {"mu_s", mu_s},
+            {"v_s", v_s}});
+    require(sigma0 > 0.0, "sigma0 must be > 0 [1/m]", sigma0);
+    require(sigma1 >= 0.0, "sigma1 must be >= 0 [s/m]", sigma1);
+    require(sigma2 >= 0.0, "sigma2 must be >= 0 [s/m]", sigma2);
+    require(mu_c > 0.0, "mu_c must be > 0", mu_c);
+    require(mu_s >= mu_c, "mu_s must be >= mu_c", "mu_s", mu_s, "mu_c", mu_c);
+    require(v_s > 0.0, "v_s must be > 0 [m/s]", v_s);
+  }
   [[noreturn]] void fail(const std::string& what) const {
     throw FrictionParameterError(law_ + ": " + what);
   }
