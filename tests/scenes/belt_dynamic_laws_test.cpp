@@ -29,6 +29,7 @@
 #include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
 #include "study/oscillation_summary.hpp"
+#include "support/restart_check.hpp"
 #include "support/scene_text.hpp"
 
 namespace tribo {
@@ -176,21 +177,8 @@ TEST_P(BeltDynamicLaw, RestartFromASavedStateContinuesBitForBit) {
     const io::Scene scene =
         io::loadScene(kScene, {"friction=" + GetParam(), "v_b=0.1", "duration=3", "dt=5e-5",
                                std::string("integrator=") + method});
-    Simulator a(scene.model);
-    while (a.state().time < 1.3) ASSERT_TRUE(a.step().ok);
-    const State saved = a.state();
-    ASSERT_EQ(saved.friction_states.size(), 4u);  // four corners
-    Simulator b(scene.model);
-    b.setState(saved);
-    for (int i = 0; i < 400; ++i) {
-      ASSERT_TRUE(a.step().ok);
-      ASSERT_TRUE(b.step().ok);
-    }
-    EXPECT_EQ(a.state().friction_values, b.state().friction_values) << method;
-    for (std::size_t i = 0; i < a.state().bodies.size(); ++i) {
-      EXPECT_EQ(a.state().bodies[i].position, b.state().bodies[i].position) << method;
-      EXPECT_EQ(a.state().bodies[i].velocity, b.state().bodies[i].velocity) << method;
-    }
+    // Four corners, four records.
+    test::expectRestartContinuesBitForBit(scene.model, 1.3, 400, GetParam() + " " + method, 4);
   }
 }
 

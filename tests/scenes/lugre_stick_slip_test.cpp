@@ -23,6 +23,7 @@
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/restart_check.hpp"
 #include "support/scene_text.hpp"
 
 namespace tribo {
@@ -149,21 +150,7 @@ TEST(LuGreStickSlip, RestartFromASavedStateContinuesBitForBit) {
   for (const char* method : {"rk4", "semi_implicit_euler"}) {
     const io::Scene scene =
         io::loadScene(kScene, {"duration=10", std::string("integrator=") + method, "dt=2e-4"});
-    Simulator a(scene.model);
-    while (a.state().time < 7.8) ASSERT_TRUE(a.step().ok);  // mid-slip
-    const State saved = a.state();
-    ASSERT_FALSE(saved.friction_states.empty());
-    Simulator b(scene.model);
-    b.setState(saved);
-    for (int i = 0; i < 200; ++i) {
-      ASSERT_TRUE(a.step().ok);
-      ASSERT_TRUE(b.step().ok);
-    }
-    EXPECT_EQ(a.state().friction_values, b.state().friction_values) << method;
-    for (std::size_t i = 0; i < a.state().bodies.size(); ++i) {
-      EXPECT_EQ(a.state().bodies[i].position, b.state().bodies[i].position) << method;
-      EXPECT_EQ(a.state().bodies[i].velocity, b.state().bodies[i].velocity) << method;
-    }
+    test::expectRestartContinuesBitForBit(scene.model, 7.8, 200, method);  // mid-slip
   }
 }
 
