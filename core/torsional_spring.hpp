@@ -11,13 +11,16 @@
 // of B - rotation of A)), so the torque is the exact gradient of V = 1/2 k delta^2: energy
 // (without damping) and angular momentum are conserved, and the damper dissipates c theta'^2.
 // While the bodies stay coaxial (a revolute joint, or any motion that keeps u_B normal to
-// the axis) g = a_A and this is the familiar tau = -(k (theta - theta0) + c theta') a_A.
-// When they also rotate about other axes, theta still measures the angle of u_B's projection
-// (so a tilt alone, about u_B or normal to it, changes theta only through that projection)
-// and g leaves the axis: the torque then has components normal to a_A, those of the same
-// potential; nothing resists the tilt itself (hold the bodies coaxial with a joint if
-// needed). When u_B is parallel to the axis (B tilted by 90 degrees) theta is undefined and
-// the element carries no torque.
+// the axis) g = a_A and this is the familiar tau = -(k (theta - theta0) + c theta') a_A, the
+// rotational spring-damper of multibody codes (Adams' SPRINGDAMPER with ROTATION, Simbody's
+// Force::MobilityLinearSpring on a pin); g is derived here: d/dt atan2(y, x) with u_A, v_A turning
+// with A and u_B with B.
+// When they also rotate about other axes, theta remains the angle, about A's axis, of u_B's
+// projection on A's plane normal to that axis: a tilt changes it only as far as it turns that
+// projection. g then leaves the axis, so the torque has components normal to a_A (those of
+// the same potential, still equal and opposite on the two bodies); nothing resists the tilt
+// itself (hold the bodies coaxial with a joint for that). When u_B is parallel to A's axis
+// (B tilted by 90 degrees) theta is undefined and the element carries no torque.
 // Not here: windings (theta is taken in (-pi, pi], as joint springs' angles: a spring wound
 // past half a turn from its rest angle flips, and the potential has a ridge there), stiffness
 // about other axes (core/bushing.hpp), nonlinear springs.
