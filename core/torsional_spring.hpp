@@ -13,8 +13,8 @@
 // While the bodies stay coaxial (a revolute joint, or any motion that keeps u_B normal to
 // the axis) g = a_A and this is the familiar tau = -(k (theta - theta0) + c theta') a_A, the
 // rotational spring-damper of multibody codes (Adams' SPRINGDAMPER with ROTATION, Simbody's
-// Force::MobilityLinearSpring on a pin); g is derived here: d/dt atan2(y, x) with u_A, v_A turning
-// with A and u_B with B.
+// Force::MobilityLinearSpring on a pin); g is derived here: d/dt atan2(y, x) with u_A, v_A
+// turning with A and u_B with B.
 // When they also rotate about other axes, theta remains the angle, about A's axis, of u_B's
 // projection on A's plane normal to that axis: a tilt changes it only as far as it turns that
 // projection. g then leaves the axis, so the torque has components normal to a_A (those of
