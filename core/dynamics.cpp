@@ -238,6 +238,7 @@ void Dynamics::assemble(const State& state) {
       applyAt(ws_.contact_wrench[a.value], state.bodies[a.value].position, rec.point.position, -f);
   }
   accumulateSprings(state);
+  accumulateBushingsAndTorsion(state);
   joint_forces_.accumulate(state, ws_);
 }
 
@@ -267,6 +268,31 @@ void Dynamics::accumulateSprings(const State& state) {
       applyAt(ws_.spring_wrench[s.body_b.value], state.bodies[s.body_b.value].position, pb, f_b);
     if (!s.body_a.isWorld())
       applyAt(ws_.spring_wrench[s.body_a.value], state.bodies[s.body_a.value].position, pa, -f_b);
+  }
+}
+
+void Dynamics::accumulateBushingsAndTorsion(const State& state) {
+  auto apply = [&](BodyIndex body, const Vec3& point, const Vec3& force, const Vec3& torque) {
+    if (body.isWorld()) return;
+    Wrench& w = ws_.spring_wrench[body.value];
+    applyAt(w, state.bodies[body.value].position, point, force);
+    w.torque += torque;
+  };
+  for (const Bushing& bushing : model_->bushings) {
+    const BushingDeflection d =
+        bushingDeflection(bushing, bodyKinematics(state, ws_.rotation, bushing.body_a),
+                          bodyKinematics(state, ws_.rotation, bushing.body_b));
+    const PairWrench w = bushingWrench(bushing, d);
+    apply(bushing.body_b, w.point, w.force, w.torque);
+    apply(bushing.body_a, w.point, -w.force, -w.torque);  // the same point: no net moment
+  }
+  for (const TorsionalSpring& spring : model_->torsional_springs) {
+    const TorsionalDeflection d =
+        torsionalDeflection(spring, bodyKinematics(state, ws_.rotation, spring.body_a),
+                            bodyKinematics(state, ws_.rotation, spring.body_b));
+    const Vec3 torque = torsionalTorque(spring, d);
+    if (!spring.body_b.isWorld()) ws_.spring_wrench[spring.body_b.value].torque += torque;
+    if (!spring.body_a.isWorld()) ws_.spring_wrench[spring.body_a.value].torque -= torque;
   }
 }
 

@@ -8,8 +8,8 @@
 //                      lookup and state view, contact/stick_anchor.hpp; dynamic laws: the
 //                      internal state's record, force and state rate,
 //                      contact/dynamic_friction.hpp)
-//   assemble           wrenches by source: contacts, spring-dampers, joint forces
-//                      (core/joint_forces.hpp)
+//   assemble           wrenches by source: contacts, force elements (spring-dampers,
+//                      bushings, torsional springs), joint forces (core/joint_forces.hpp)
 //   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations
 //   solveConstraints   Lagrange multipliers (core/constraint_solver.hpp), then joint
 //                      friction under reaction load
@@ -98,6 +98,7 @@ class Dynamics {
   void solveConstraints(const State& state);
 
   void accumulateSprings(const State& state);
+  void accumulateBushingsAndTorsion(const State& state);  // core/bushing.hpp, torsional_spring.hpp
 
   std::shared_ptr<const Model> model_;
   contact::CollisionDetector detector_;

@@ -54,6 +54,14 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
         (end(sp.body_b, sp.point_b) - end(sp.body_a, sp.point_a)).norm() - sp.rest_length;
     a.elastic += 0.5 * sp.stiffness * stretch * stretch;
   }
+  for (const Bushing& bushing : model.bushings)
+    a.elastic += bushingEnergy(
+        bushing, bushingDeflection(bushing, bodyKinematics(state, ws.rotation, bushing.body_a),
+                                   bodyKinematics(state, ws.rotation, bushing.body_b)));
+  for (const TorsionalSpring& spring : model.torsional_springs)
+    a.elastic += torsionalEnergy(
+        spring, torsionalDeflection(spring, bodyKinematics(state, ws.rotation, spring.body_a),
+                                    bodyKinematics(state, ws.rotation, spring.body_b)));
   for (const auto& c : ws.contacts) {
     const ContactPair& pair = model.contact_pairs[c.point.pair];
     a.elastic += contactPotential(model.materials[pair.material].normal, c.point.depth);

@@ -2,10 +2,12 @@
 //
 //   E     = sum over dynamic bodies (1/2 m v.v + 1/2 w.I_W w - m g.p)
 //         + sum over springs 1/2 k (L - L0)^2
+//         + sum over bushings 1/2 d^T K_t d + 1/2 phi^T K_r phi  (core/bushing.hpp)
+//         + sum over torsional springs 1/2 k delta^2             (core/torsional_spring.hpp)
 //         + sum over contact points U(d):  1/2 k d^2 (linear),  k d^(p+1) / (p+1) (Hunt-Crossley)
 //   P_in  = power delivered by sources:
-//           - (F_X . v_X + T_X . w_X)  over kinematic bodies X, F_X, T_X the contact and spring
-//                                      wrenches on X (moving walls, rotating drums)
+//           - (F_X . v_X + T_X . w_X)  over kinematic bodies X, F_X, T_X the contact and force
+//                                      element wrenches on X (moving walls, rotating drums)
 //           - F_X . s_X                over each contact side X with a surface velocity s_X
 //                                      (belts; F_X the contact force on that side)
 //           + (F_c . v + T_c . w)       over dynamic bodies, F_c, T_c the joint constraint
@@ -13,7 +15,7 @@
 //                                      Baumgarte correction and moving parents do work) and
 //                                      the joint elements' wrench (limits, springs, dampers,
 //                                      friction, drives: their energy is not in E)
-// Along an exact solution dE/dt = P_in - D with D >= 0 (contact and spring damping, friction
+// Along an exact solution dE/dt = P_in - D with D >= 0 (contact and force element damping, friction
 // slip, the clipped tension of a separating penalty contact), so E_net = E - integral(P_in dt)
 // never rises. The guard integrates P_in with the trapezoidal rule between checks and
 // compares E_net with its running minimum (at time s):

@@ -2,8 +2,8 @@
 // another body (or the world).
 //
 //   F_B = -(k (L - L0) + c dL/dt) e,   e = (p_B - p_A) / L,   F_A = -F_B
-// with L the distance between the attachment points. Not here: nonlinear or torsional
-// springs, bushings.
+// with L the distance between the attachment points. Not here: nonlinear springs; bushings
+// (core/bushing.hpp) and torsional springs (core/torsional_spring.hpp).
 #pragma once
 
 #include <string>

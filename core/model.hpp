@@ -14,9 +14,11 @@
 #include "contact/contact_force.hpp"
 #include "contact/shape.hpp"
 #include "core/body.hpp"
+#include "core/bushing.hpp"
 #include "core/constraint_options.hpp"
 #include "core/force_element.hpp"
 #include "core/joint.hpp"
+#include "core/torsional_spring.hpp"
 #include "friction/name_table.hpp"
 
 namespace tribo {
@@ -89,6 +91,8 @@ struct Model {
   std::vector<Joint> joints;
   std::vector<JointCoupling> couplings;  // mimic constraints between joint coordinates
   std::vector<SpringDamper> springs;
+  std::vector<Bushing> bushings;
+  std::vector<TorsionalSpring> torsional_springs;
   std::vector<contact::Material> materials;
   std::vector<ContactPair> contact_pairs;
   // True when the builder made contact_pairs from every pair of geometries that may touch

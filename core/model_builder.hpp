@@ -76,6 +76,15 @@ class ModelBuilder {
   // configuration; a negative rest length means "the initial distance".
   void addSpring(const std::string& name, BodyIndex a, const Vec3& point_a_world, BodyIndex b,
                  const Vec3& point_b_world, double stiffness, double damping, double rest_length);
+  // Force elements with rotation (core/model_builder_elements.cpp). A bushing's frames are
+  // given in their bodies' frames (the world's for the world; core/bushing.hpp); gains finite
+  // and >= 0, the bodies different.
+  void addBushing(const Bushing& bushing);
+  // Torsional spring-damper about `axis_world` (any length > 0, at the initial configuration,
+  // fixed in A from there; core/torsional_spring.hpp); its angle is 0 at the initial
+  // configuration and it is relaxed at `rest_angle` [rad].
+  void addTorsionalSpring(const std::string& name, BodyIndex a, BodyIndex b, const Vec3& axis_world,
+                          double stiffness, double damping, double rest_angle);
 
   SimulationOptions& options() { return options_; }
   std::optional<BodyIndex> findBody(const std::string& name) const;

@@ -60,6 +60,23 @@ double bodyMass(const Model& model, BodyIndex i) {
              : model.bodies[i.value].mass;
 }
 
+// Moment of inertia of body i about an axis through its centre of mass (unit, world, at the
+// initial pose); infinite for the world and kinematic bodies.
+double axisInertia(const Model& model, BodyIndex i, const Vec3& axis) {
+  if (std::isinf(bodyMass(model, i))) return std::numeric_limits<double>::infinity();
+  const Body& b = model.bodies[i.value];
+  const Vec3 local = b.orientation.conjugate() * axis;
+  return local.dot(b.inertia * local);
+}
+
+// Two bodies turning against each other about one axis: I_a I_b / (I_a + I_b).
+double reducedInertia(const Model& model, BodyIndex a, BodyIndex b, const Vec3& axis) {
+  const double ia = axisInertia(model, a, axis), ib = axisInertia(model, b, axis);
+  if (std::isinf(ia)) return ib;
+  if (std::isinf(ib)) return ia;
+  return ia * ib / (ia + ib);
+}
+
 double reducedMass(const Model& model, BodyIndex a, BodyIndex b) {
   const double ma = bodyMass(model, a), mb = bodyMass(model, b);
   if (std::isinf(ma)) return mb;
@@ -452,6 +469,34 @@ StabilityReport estimateStableStep(const Model& model) {
   for (const SpringDamper& s : model.springs) {
     const double m = reducedMass(model, s.body_a, s.body_b);
     consider(s.stiffness / m, s.damping / m, [&] { return "spring '" + s.name + "'"; });
+  }
+  // Bushings: per axis of frame A (at the initial pose), translation on the reduced mass and
+  // rotation on the reduced moment about that axis.
+  for (const Bushing& bushing : model.bushings) {
+    const double m = reducedMass(model, bushing.body_a, bushing.body_b);
+    const Quat frame_a =
+        (bushing.body_a.isWorld() ? Quat::Identity()
+                                  : model.bodies[bushing.body_a.value].orientation) *
+        bushing.orientation_a;
+    for (int i = 0; i < 3; ++i) {
+      const char* axis_name[] = {"x", "y", "z"};
+      auto who = [&](const char* what) {
+        return "bushing '" + bushing.name + "' " + what + " " + axis_name[i];
+      };
+      consider(bushing.stiffness[i] / m, bushing.damping[i] / m, [&] { return who("along"); });
+      const double inertia =
+          reducedInertia(model, bushing.body_a, bushing.body_b, frame_a * Vec3::Unit(i));
+      consider(bushing.rotational_stiffness[i] / inertia, bushing.rotational_damping[i] / inertia,
+               [&] { return who("about"); });
+    }
+  }
+  for (const TorsionalSpring& spring : model.torsional_springs) {
+    const Quat to_world =
+        spring.body_a.isWorld() ? Quat::Identity() : model.bodies[spring.body_a.value].orientation;
+    const double inertia =
+        reducedInertia(model, spring.body_a, spring.body_b, to_world * spring.axis_a);
+    consider(spring.stiffness / inertia, spring.damping / inertia,
+             [&] { return "torsional spring '" + spring.name + "'"; });
   }
   // Joint elements on the coordinate's inertia (core/joint_forces.hpp): spring and limit
   // stiffness, damping and the friction's sticking slope (both held to I_q / (2 h) at fixed

@@ -47,6 +47,12 @@
 //                  fastest kinematic body or moving surface (or the law's stick speed): a
 //                  driven stick-slip slips at up to 3.5 times its drive;
 //   spring-damper: k, c as given, m as above;
+//   bushing:       per axis of frame A at the initial pose, k, c as given; translation on m
+//                  as above, rotation on the bodies' reduced moment of inertia about that
+//                  axis (I_a I_b / (I_a + I_b), or the dynamic body's); the coupling of
+//                  rotation and translation through a frame away from the centre of mass is
+//                  left out;
+//   torsional spring: k, c on the reduced moment of inertia about its axis, likewise;
 //   friction:      c/m = g mu'(v) (the sticking slope of the law under the body's weight), at
 //                  the steepest of 16 samples over [0, stick speed]; for a law whose slope is
 //                  unbounded at zero slip (roh_yoo with beta < 1) the slope at the stick speed,

@@ -37,7 +37,8 @@ struct Workspace {
   // per record of State::friction_states the contact point that used it (-1: none).
   std::vector<double> friction_state_rate;
   std::vector<int> friction_state_contact;
-  // assemble, per body, by source (gravity is m g, not stored). joint_wrench: joint limits,
+  // assemble, per body, by source (gravity is m g, not stored). spring_wrench: the force
+  // elements (spring-dampers, bushings, torsional springs). joint_wrench: joint limits,
   // springs, dampers, efforts, constant-load friction; solveConstraints adds the friction
   // under reaction load.
   std::vector<Wrench> contact_wrench;

@@ -40,6 +40,15 @@
 //   [simulation.constraints]: {[projection], [tolerance], [iterations], [project_initial],
 //             [redundant: error|remove], [solver: auto|dense|sparse], [sparse_threshold]}
 //   [springs]: - name a point_a b point_b stiffness [damping] [rest_length]
+//   [bushings]: - name a b [frame_a: {[position], [orientation | rpy]}] [frame_b: ...]
+//                 [stiffness] [damping] [rotational_stiffness] [rotational_damping]
+//               frames in their body's frame (the world's for a: world), identity when
+//               absent; each gain 3 numbers >= 0 per axis of frame A (N/m, N s/m, N m/rad,
+//               N m s/rad; 0 when absent); deflected at t = 0 if the frames differ there
+//               (core/bushing.hpp)
+//   [torsional_springs]: - name a b axis stiffness [damping] [rest_angle]
+//               axis in world coordinates at t = 0, fixed in a from there; the angle is 0 at
+//               t = 0 and the spring relaxed at rest_angle [rad] (core/torsional_spring.hpp)
 //   [friction_laws]: {LAW: {key: value}}     LAW is a name known to makeFrictionLaw; a value
 //                 is a number, an expression over parameters, or an option's word
 //   [materials]: - name [normal: {[law: linear|hertz|hunt_crossley|recurdyn], [stiffness],
@@ -309,8 +318,9 @@ class Loader {
 
   Scene load(const std::vector<std::string>& overrides, const RunSettings& settings) {
     const Value root(file_, params_, root_, "");
-    const Map m(root, {"parameters", "simulation", "bodies", "robots", "joints", "springs",
-                       "friction_laws", "materials", "contacts", "output"});
+    const Map m(root,
+                {"parameters", "simulation", "bodies", "robots", "joints", "springs", "bushings",
+                 "torsional_springs", "friction_laws", "materials", "contacts", "output"});
     if (auto p = m.get("parameters")) readParameters(*p);
     params_.applyOverrides(overrides, file_);
     if (auto s = m.get("simulation")) readSimulation(*s);
@@ -323,6 +333,10 @@ class Loader {
       for (const Value& v : j->items("joints", true)) readJoint(v);
     if (auto s = m.get("springs"))
       for (const Value& v : s->items("springs", true)) readSpring(v);
+    if (auto s = m.get("bushings"))
+      for (const Value& v : s->items("bushings", true)) readBushing(v);
+    if (auto s = m.get("torsional_springs"))
+      for (const Value& v : s->items("torsional_springs", true)) readTorsionalSpring(v);
     if (auto f = m.get("friction_laws")) readFrictionLaws(*f);
     readJointReferences();
     if (auto mat = m.get("materials"))
@@ -795,6 +809,58 @@ class Loader {
     const double c = damping ? damping->number() : 0.0;
     const double l0 = rest ? rest->nonNegative() : -1.0;  // < 0: the initial distance
     guarded(v, [&] { builder_.addSpring(name, a, pa, b, pb, k, c, l0); });
+  }
+
+  // A bushing frame {[position], [orientation | rpy]} in its body's frame (identity when
+  // absent).
+  static void readFrame(const std::optional<Value>& v, Vec3& position, Quat& rotation) {
+    if (!v) return;
+    const Map m(*v, {"position", "orientation", "rpy"});
+    position = m.vec3("position", Vec3::Zero());
+    rotation = orientation(m);
+  }
+
+  // Three gains >= 0, each checked at its own item; zero when absent.
+  static Vec3 gains(const Map& m, const std::string& key) {
+    const auto v = m.get(key);
+    if (!v) return Vec3::Zero();
+    const std::string what = "3 numbers >= 0 [x, y, z] (per axis of frame A)";
+    v->numbers({3}, what);  // the length first
+    const std::vector<Value> items = v->items(what);
+    return {items[0].nonNegative(), items[1].nonNegative(), items[2].nonNegative()};
+  }
+
+  void readBushing(const Value& v) {
+    const Map m(v, {"name", "a", "b", "frame_a", "frame_b", "stiffness", "damping",
+                    "rotational_stiffness", "rotational_damping"});
+    Bushing bushing;
+    bushing.name = m.required("name").text();
+    bushing.body_a = body(m.required("a"));
+    bushing.body_b = body(m.required("b"));
+    readFrame(m.get("frame_a"), bushing.position_a, bushing.orientation_a);
+    readFrame(m.get("frame_b"), bushing.position_b, bushing.orientation_b);
+    bushing.stiffness = gains(m, "stiffness");
+    bushing.damping = gains(m, "damping");
+    bushing.rotational_stiffness = gains(m, "rotational_stiffness");
+    bushing.rotational_damping = gains(m, "rotational_damping");
+    guarded(v, [&] { builder_.addBushing(bushing); });
+  }
+
+  void readTorsionalSpring(const Value& v) {
+    const Map m(v, {"name", "a", "b", "axis", "stiffness", "damping", "rest_angle"});
+    const std::string name = m.required("name").text();
+    const BodyIndex a = body(m.required("a"));
+    const BodyIndex b = body(m.required("b"));
+    const Value axis_value = m.required("axis");
+    const Vec3 axis = axis_value.vec3("3 numbers [x, y, z] (the axis, world)");
+    if (!(axis.norm() > 0.0))
+      axis_value.fail("expected a non-zero axis, found " + axis_value.found());
+    const double k = m.required("stiffness").nonNegative();
+    const auto damping = m.get("damping");
+    const auto rest = m.get("rest_angle");
+    const double c = damping ? damping->nonNegative() : 0.0;
+    const double rest_angle = rest ? rest->number() : 0.0;
+    guarded(v, [&] { builder_.addTorsionalSpring(name, a, b, axis, k, c, rest_angle); });
   }
 
   // The value of a law entry that is an expression over parameters, or nothing when the text

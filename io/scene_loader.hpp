@@ -1,9 +1,9 @@
-// Scene files: a YAML description of bodies, geometry, joints, springs, friction laws,
+// Scene files: a YAML description of bodies, geometry, joints, force elements, friction laws,
 // materials, contact pairs and output, turned into a validated, immutable Model through
 // ModelBuilder. The format is documented on scenes/belt.yaml and in io/scene_loader.cpp;
 // in short, the top-level keys are
-//   parameters, simulation, bodies, robots (URDF files), joints, springs, friction_laws,
-//   materials, contacts, output
+//   parameters, simulation, bodies, robots (URDF files), joints, springs, bushings,
+//   torsional_springs, friction_laws, materials, contacts, output
 // and a scalar "$name" anywhere stands for parameter `name` (io/scene_parameters.hpp).
 // The loader is strict: unknown keys, wrong types and dangling names are SceneErrors that
 // give file:line:col, the key path (e.g. "bodies[1].mass") and what was expected vs found;
