@@ -13,6 +13,7 @@
 
 #include "io/output_channels.hpp"
 #include "python/bindings.hpp"
+#include "python/python_law.hpp"
 #include "python/scene_handle.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
@@ -81,6 +82,7 @@ py::object runHandle(const SceneHandle& h, const py::object& duration, const py:
     py::gil_scoped_release release;
     result.reset(new PyResult{scene, study::runScene(*scene, options), {}});
   }
+  raisePythonLawErrors(h.user_laws);  // a Python law's exception stopped the run
   result->summary_text = study::summaryJsonText(*scene, result->run);
   py::object owner = py::cast(std::move(result));
   if (by_signal) {
@@ -243,20 +245,25 @@ void bindScene(py::module_& m) {
 
   m.def(
       "load_scene",
-      [](const py::object& source, const py::object& set, const py::object& package_paths) {
+      [](const py::object& source, const py::object& set, const py::object& package_paths,
+         const py::object& laws) {
         const std::string text =
             py::isinstance<py::str>(source)
                 ? source.cast<std::string>()
                 : py::module_::import("os").attr("fspath")(source).cast<std::string>();
         auto overrides = overridesFrom(set);
         auto paths = pathsFrom(package_paths);
+        auto user_laws = userLawsFrom(laws);
         py::gil_scoped_release release;
-        return loadSceneHandle(text, std::move(overrides), std::move(paths));
+        return loadSceneHandle(text, std::move(overrides), std::move(paths), std::move(user_laws));
       },
       py::arg("source"), py::arg("set") = py::none(), py::arg("package_paths") = py::none(),
+      py::arg("laws") = py::none(),
       "load_scene(path_or_yaml_text, set={name: value}, package_paths=[...]) -> Scene. A str "
       "naming an existing file is a path, other text with a line break or a colon is YAML. "
-      "Raises SceneError.");
+      "laws={name: law} adds friction laws a material's `friction:` may select: a "
+      "tribo.FrictionLaw, a callable mu(v) or an object with mu(v) (and optionally slope(v), "
+      "stick_speed, max_coefficient(v_max)). Raises SceneError.");
   m.def(
       "load_urdf",
       [](const py::object& path, const py::object& set, const py::object& package_paths,

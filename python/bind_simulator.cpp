@@ -13,6 +13,7 @@
 
 #include "core/simulator.hpp"
 #include "python/bindings.hpp"
+#include "python/python_law.hpp"
 #include "python/scene_handle.hpp"
 
 namespace tribo::python {
@@ -90,9 +91,11 @@ py::dict contactsOf(const Model& model, const Workspace& ws) {
 // The Python-side simulator: the core one and the status of its last step.
 struct PySimulator {
   std::shared_ptr<const Model> model;
+  io::UserLaws user_laws;  // the scene's Python laws, for their exceptions
   Simulator sim;
   StepStatus status;
-  explicit PySimulator(const SceneHandle& scene) : model(scene.scene.model), sim(model) {}
+  explicit PySimulator(const SceneHandle& scene)
+      : model(scene.scene.model), user_laws(scene.user_laws), sim(model) {}
 };
 
 }  // namespace
@@ -145,13 +148,14 @@ void bindSimulator(py::module_& m) {
             if (n < 1) throw py::value_error("step(n): n must be >= 1");
             if (n == 1) {  // no GIL hand-over for one step: it costs more than the call
               s.status = s.sim.step();
-              return s.status.ok;
+            } else {
+              py::gil_scoped_release release;
+              for (long i = 0; i < n; ++i) {
+                s.status = s.sim.step();
+                if (!s.status.ok) break;
+              }
             }
-            py::gil_scoped_release release;
-            for (long i = 0; i < n; ++i) {
-              s.status = s.sim.step();
-              if (!s.status.ok) break;
-            }
+            if (!s.status.ok) raisePythonLawErrors(s.user_laws);
             return s.status.ok;
           },
           py::arg("n") = 1,

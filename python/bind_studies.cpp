@@ -2,7 +2,9 @@
 // does (study/sweep/sweep_runner.hpp: the same plan, the same results.csv) and returns its
 // rows as a list of dicts; tribo.modes analyses a scene's linear stability as `tribo modes`
 // does (study/modes.hpp) and returns the steady state's figures and the modes as a dict.
-// The GIL is released while they run. Not here: plotting, the tradeoff study.
+// tribo.tradeoff measures the speed-accuracy ladder as `tribo tradeoff` does
+// (study/tradeoff.hpp) and returns its rows. The GIL is released while they run. Not here:
+// plotting.
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
 
@@ -15,6 +17,7 @@
 #include "python/bindings.hpp"
 #include "python/scene_handle.hpp"
 #include "study/modes.hpp"
+#include "study/tradeoff.hpp"
 #include "study/sweep/sweep_results.hpp"
 #include "study/sweep/sweep_runner.hpp"
 
@@ -29,6 +32,9 @@ std::pair<std::string, std::string> sweepSceneText(const py::object& scene) {
       throw py::value_error(
           "sweep: a URDF scene cannot be swept; write a scene file with a "
           "robots: entry");
+    if (!h.user_laws.empty())
+      throw py::value_error("sweep: a scene with laws given in Python cannot be swept (each "
+                            "sweep thread loads the scene from its text)");
     if (!h.overrides.empty())
       throw py::value_error("sweep: give the scene's overrides as sweep(..., set=...)");
     if (h.source == SceneHandle::Source::kText) return {h.origin, h.scene.path};
@@ -165,6 +171,56 @@ py::dict runModes(const SceneHandle& scene, bool settle, double settle_time) {
   return d;
 }
 
+py::list runTradeoff(const py::object& scene, const py::object& set,
+                     const std::vector<std::string>& integrators, double window, int repeat) {
+  study::TradeoffSpec spec;
+  if (py::isinstance<SceneHandle>(scene)) {
+    const auto& h = scene.cast<const SceneHandle&>();
+    if (h.source != SceneHandle::Source::kFile || !h.user_laws.empty())
+      throw py::value_error("tradeoff: give a scene file (the study loads it once per setting)");
+    spec.scene_path = h.origin;
+    spec.overrides = h.overrides;
+  } else {
+    spec.scene_path = py::module_::import("os").attr("fspath")(scene).cast<std::string>();
+  }
+  for (const std::string& o : overridesFrom(set)) spec.overrides.push_back(o);
+  if (!integrators.empty()) {
+    spec.integrators.clear();
+    for (const std::string& name : integrators) {
+      try {
+        spec.integrators.push_back(integratorFromName(name));
+      } catch (const std::invalid_argument& e) {
+        throw py::value_error(e.what());
+      }
+    }
+  }
+  spec.window = window;
+  spec.repeat = repeat;
+  study::TradeoffResult result;
+  {
+    py::gil_scoped_release release;
+    result = study::measureTradeoff(spec);
+  }
+  py::list rows;
+  for (const study::TradeoffRow& r : result.rows) {
+    py::dict d;
+    d["setting"] = r.setting.label();
+    d["integrator"] = integratorName(r.setting.integrator);
+    d[r.setting.valueName()] = r.setting.value();
+    d["status"] = r.status;
+    d["message"] = r.message;
+    d["amplitude"] = r.amplitude;
+    d["amplitude_error"] = r.amplitude_error;
+    d["trajectory_error"] = r.trajectory_error;
+    d["wall"] = r.wall;
+    d["cpu"] = r.cpu;
+    d["steps"] = r.steps;
+    d["evaluations"] = r.evaluations;
+    rows.append(d);
+  }
+  return rows;
+}
+
 }  // namespace
 
 void bindStudies(py::module_& m) {
@@ -180,6 +236,13 @@ void bindStudies(py::module_& m) {
         "modes(scene, settle=False) -> dict: the linear stability of the scene's steady "
         "sliding, as `tribo modes` computes it (modes sorted by decreasing growth rate; "
         "'unstable' counts the unstable ones). Raises NoSteadyState, ModesError.");
+  m.def("tradeoff", &runTradeoff, py::arg("scene"), py::arg("set") = py::none(),
+        py::arg("integrators") = std::vector<std::string>{}, py::arg("window") = 10.0,
+        py::arg("repeat") = 1,
+        "tradeoff(scene_file, set={...}, integrators=[...], window=10, repeat=1) -> list of "
+        "dicts, one per setting (the rows of tradeoff.csv; the first is the reference at half "
+        "its step), as `tribo tradeoff` measures them: amplitude and trajectory errors "
+        "against a converged reference, and the processor time.");
 }
 
 }  // namespace tribo::python

@@ -20,9 +20,10 @@ io::Scene SceneHandle::withSettings(const io::RunSettings& settings) const {
   if (!anySetting(settings)) return scene;
   switch (source) {
     case Source::kFile:
-      return io::loadScene(origin, overrides, package_paths, settings);
+      return io::loadScene(origin, overrides, package_paths, settings, user_laws);
     case Source::kText:
-      return io::loadSceneFromString(origin, scene.path, overrides, package_paths, settings);
+      return io::loadSceneFromString(origin, scene.path, overrides, package_paths, settings,
+                                     user_laws);
     case Source::kUrdf: {
       // A URDF scene's run settings are its parameters (io/urdf_scene.hpp).
       if (settings.relative_tolerance || settings.absolute_tolerance || settings.event_location ||
@@ -42,7 +43,7 @@ io::Scene SceneHandle::withSettings(const io::RunSettings& settings) const {
 }
 
 SceneHandle loadSceneHandle(const std::string& source, std::vector<std::string> overrides,
-                            std::vector<std::string> package_paths) {
+                            std::vector<std::string> package_paths, io::UserLaws user_laws) {
   SceneHandle h;
   // A string that names an existing file is a path; anything else with a line break or a
   // colon is YAML text; the rest a path that does not exist (the loader says so).
@@ -53,8 +54,10 @@ SceneHandle loadSceneHandle(const std::string& source, std::vector<std::string> 
   h.origin = source;
   h.overrides = std::move(overrides);
   h.package_paths = std::move(package_paths);
-  h.scene = is_text ? io::loadSceneFromString(source, "<string>", h.overrides, h.package_paths)
-                    : io::loadScene(source, h.overrides, h.package_paths);
+  h.user_laws = std::move(user_laws);
+  h.scene = is_text ? io::loadSceneFromString(source, "<string>", h.overrides, h.package_paths, {},
+                                              h.user_laws)
+                    : io::loadScene(source, h.overrides, h.package_paths, {}, h.user_laws);
   return h;
 }
 

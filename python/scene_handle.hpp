@@ -19,6 +19,7 @@ struct SceneHandle {
   std::vector<std::string> overrides;
   std::vector<std::string> package_paths;
   bool strict_urdf = false;
+  io::UserLaws user_laws;  // laws given by the caller (python/python_law.hpp)
   io::Scene scene;
 
   // The same scene with `settings` replacing its own (itself when none is given).
@@ -26,7 +27,7 @@ struct SceneHandle {
 };
 
 SceneHandle loadSceneHandle(const std::string& source, std::vector<std::string> overrides,
-                            std::vector<std::string> package_paths);
+                            std::vector<std::string> package_paths, io::UserLaws user_laws);
 SceneHandle loadUrdfHandle(const std::string& path, std::vector<std::string> overrides,
                            std::vector<std::string> package_paths, bool strict);
 

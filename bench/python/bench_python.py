@@ -2,12 +2,16 @@
   - Simulator.step() called once per step from Python against step(n) looping in C++ over
     the same steps (the belt scene, rk4 at 1 ms): the difference is the per-call overhead;
   - a built-in law's mu over a NumPy array of 1e6 slip speeds (one call, the loop in C++)
-    against mu called once per speed from Python.
+    against mu called once per speed from Python;
+  - a friction law written in Python (roh_yoo as a Python function) against the built-in
+    one on the belt (20 s): the extra time per law call (one call per contact point and
+    force evaluation: 4 corners).
 Prints the figures; asserts nothing (timings are not tests).
 
     PYTHONPATH=build/python python3 bench/python/bench_python.py [--repeat N]
 """
 import argparse
+import math
 import pathlib
 import time
 
@@ -58,6 +62,23 @@ def main():
     scalar = best(lambda: [mu(float(x)) for x in few], max(1, args.repeat // 2)) / few.size
     print(f"roh_yoo mu over 1e6 speeds: {vectorized * 1e9:.1f} ns a speed in one call; "
           f"{scalar * 1e9:.0f} ns a speed called one at a time ({scalar / vectorized:.0f}x)")
+
+    def python_roh_yoo(v, mu_s=0.35, mu_k=0.3, v_s=0.01, a=1.5, beta=1 / 3):
+        s, v = math.copysign(1.0, v), abs(v)
+        if v <= v_s:
+            return s * mu_s * (v / v_s) ** beta
+        return s * (mu_k + (mu_s - mu_k) * a ** -(v - v_s))
+
+    settings = {"duration": 20}
+    builtin_scene = tribo.load_scene(BELT, set=settings)
+    python_scene = tribo.load_scene(BELT, set={**settings, "friction": "py"},
+                                    laws={"py": python_roh_yoo})
+    builtin = best(builtin_scene.run, args.repeat)
+    python = best(python_scene.run, args.repeat)
+    calls = 4 * python_scene.run().summary["run"]["force_evaluations"]
+    print(f"belt 20 s: built-in roh_yoo {builtin * 1e3:.1f} ms, Python roh_yoo "
+          f"{python * 1e3:.1f} ms: {(python - builtin) / calls * 1e9:.0f} ns added per law call "
+          f"({calls} calls)")
 
 
 if __name__ == "__main__":

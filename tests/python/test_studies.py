@@ -69,3 +69,25 @@ bodies:
     with pytest.raises(tribo.Error) as e:
         tribo.modes(tribo.load_scene(kinematic_only))
     assert "dynamic" in str(e.value) or "no body" in str(e.value)
+
+
+def test_tradeoff_rows_equal_the_cli(cli, belt, tmp_path):
+    fixed = {"duration": 4}
+    rows = tribo.tradeoff(belt, set=fixed, integrators=["rk4"], window=3)
+    subprocess.run([cli, "tradeoff", belt, "--out", str(tmp_path), "--integrators", "rk4",
+                    "--window", "3", "--set", "duration=4"], check=True, capture_output=True)
+    with open(tmp_path / "tradeoff.csv", newline="") as f:
+        cli_rows = list(csv.DictReader(f))
+    assert len(rows) == len(cli_rows) > 5
+    assert rows[0]["status"] == "reference"
+    for ours, theirs in zip(rows, cli_rows):
+        assert ours["status"] == theirs["status"]
+        for key in ("amplitude_error", "trajectory_error"):
+            if theirs[key] == "":
+                assert math.isnan(ours[key])
+            else:  # the file keeps 4 significant digits of the errors
+                assert format(ours[key], ".4g") == theirs[key]
+    # rk4 converges: the error of the finest complete step is below the coarsest's
+    done = [r for r in rows[1:] if r["status"] == "complete"]
+    assert done[-1]["dt"] < done[0]["dt"]
+    assert done[-1]["trajectory_error"] < done[0]["trajectory_error"]
