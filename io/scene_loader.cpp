@@ -1020,8 +1020,9 @@ Scene SceneDocument::load(const std::vector<std::string>& overrides,
                           const std::vector<std::string>& package_paths,
                           const RunSettings& settings, const UserLaws& user_laws) const {
   for (const auto& [name, law] : user_laws) {
-    for (const auto* known : {&friction::knownFrictionLaws(), &friction::knownStatefulFrictionLaws(),
-                              &friction::knownDynamicFrictionLaws()})
+    for (const auto* known :
+         {&friction::knownFrictionLaws(), &friction::knownStatefulFrictionLaws(),
+          &friction::knownDynamicFrictionLaws()})
       if (std::find(known->begin(), known->end(), name) != known->end() || name == "tabulated")
         throw SceneError(name_ + ": user friction law '" + name +
                          "' takes a built-in law's name; give it another");

@@ -17,9 +17,9 @@
 #include "python/bindings.hpp"
 #include "python/scene_handle.hpp"
 #include "study/modes.hpp"
-#include "study/tradeoff.hpp"
 #include "study/sweep/sweep_results.hpp"
 #include "study/sweep/sweep_runner.hpp"
+#include "study/tradeoff.hpp"
 
 namespace tribo::python {
 namespace {
@@ -33,8 +33,9 @@ std::pair<std::string, std::string> sweepSceneText(const py::object& scene) {
           "sweep: a URDF scene cannot be swept; write a scene file with a "
           "robots: entry");
     if (!h.user_laws.empty())
-      throw py::value_error("sweep: a scene with laws given in Python cannot be swept (each "
-                            "sweep thread loads the scene from its text)");
+      throw py::value_error(
+          "sweep: a scene with laws given in Python cannot be swept (each "
+          "sweep thread loads the scene from its text)");
     if (!h.overrides.empty())
       throw py::value_error("sweep: give the scene's overrides as sweep(..., set=...)");
     if (h.source == SceneHandle::Source::kText) return {h.origin, h.scene.path};
