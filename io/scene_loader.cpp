@@ -313,8 +313,12 @@ struct LawEntry {
 
 class Loader {
  public:
-  Loader(std::string file, const YAML::Node& root, std::vector<std::string> package_paths)
-      : file_(std::move(file)), root_(root), package_paths_(std::move(package_paths)) {}
+  Loader(std::string file, const YAML::Node& root, std::vector<std::string> package_paths,
+         const UserLaws& user_laws)
+      : file_(std::move(file)),
+        root_(root),
+        package_paths_(std::move(package_paths)),
+        user_laws_(user_laws) {}
 
   Scene load(const std::vector<std::string>& overrides, const RunSettings& settings) {
     const Value root(file_, params_, root_, "");
@@ -757,9 +761,14 @@ class Loader {
   // The friction law an entry of friction_laws names, built on first use.
   std::shared_ptr<const friction::FrictionLaw> frictionLaw(const Value& name) {
     const auto it = laws_.find(name.text());
-    if (it == laws_.end())
+    if (it == laws_.end()) {
+      if (const auto user = user_laws_.find(name.text()); user != user_laws_.end())
+        return user->second;
+      Keys defined = law_names_;
+      for (const auto& [user_name, law] : user_laws_) defined.push_back(user_name);
       name.fail("friction law '" + name.text() +
-                "' is not defined in friction_laws (defined: " + joined(law_names_) + ")");
+                "' is not defined in friction_laws (defined: " + joined(defined) + ")");
+    }
     LawEntry& law = it->second;
     if (!law.law && law.spec.name == "tabulated") law.law = tabulatedLaw(law, name);
     if (!law.law) {
@@ -1048,6 +1057,7 @@ class Loader {
   std::set<std::string> body_surfaces_;  // surfaces of the bodies: section's geometry
   std::vector<GazeboSurface> gazebo_surfaces_;
   std::vector<std::string> package_paths_;  // --package-path folders
+  const UserLaws& user_laws_;
   std::vector<std::string> notes_;
 };
 
@@ -1074,9 +1084,18 @@ SceneDocument::SceneDocument(const std::string& yaml, const std::string& name_fo
 
 Scene SceneDocument::load(const std::vector<std::string>& overrides,
                           const std::vector<std::string>& package_paths,
-                          const RunSettings& settings) const {
+                          const RunSettings& settings, const UserLaws& user_laws) const {
+  for (const auto& [name, law] : user_laws) {
+    for (const auto* known :
+         {&friction::knownFrictionLaws(), &friction::knownStatefulFrictionLaws(),
+          &friction::knownDynamicFrictionLaws()})
+      if (std::find(known->begin(), known->end(), name) != known->end() || name == "tabulated")
+        throw SceneError(name_ + ": user friction law '" + name +
+                         "' takes a built-in law's name; give it another");
+    if (!law) throw SceneError(name_ + ": user friction law '" + name + "' is empty");
+  }
   try {
-    return Loader(name_, *root_, package_paths).load(overrides, settings);
+    return Loader(name_, *root_, package_paths, user_laws).load(overrides, settings);
   } catch (const YAML::Exception& e) {  // any the reader did not foresee
     yamlError(e, name_);
   }
@@ -1085,19 +1104,20 @@ Scene SceneDocument::load(const std::vector<std::string>& overrides,
 Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
                           const std::vector<std::string>& overrides,
                           const std::vector<std::string>& package_paths,
-                          const RunSettings& settings) {
-  return SceneDocument(yaml, name_for_errors).load(overrides, package_paths, settings);
+                          const RunSettings& settings, const UserLaws& user_laws) {
+  return SceneDocument(yaml, name_for_errors).load(overrides, package_paths, settings, user_laws);
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
-                const std::vector<std::string>& package_paths, const RunSettings& settings) {
+                const std::vector<std::string>& package_paths, const RunSettings& settings,
+                const UserLaws& user_laws) {
   std::error_code ec;
   std::ifstream in(path);
   if (!std::filesystem::is_regular_file(path, ec) || !in)
     throw SceneError("cannot open scene file '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
-  return loadSceneFromString(text.str(), path, overrides, package_paths, settings);
+  return loadSceneFromString(text.str(), path, overrides, package_paths, settings, user_laws);
 }
 
 }  // namespace tribo::io

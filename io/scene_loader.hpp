@@ -13,6 +13,7 @@
 // by io/urdf_model.hpp); writing scene files.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,12 +74,17 @@ struct RunSettings {
   std::optional<double> output_interval;     // [s] output.interval
 };
 
+// Friction laws the caller defines (e.g. one written in Python), by name: a material's
+// `friction: NAME` may select one as it selects an entry of friction_laws. A name may not be
+// a built-in law's (SceneError).
+using UserLaws = std::map<std::string, std::shared_ptr<const friction::FrictionLaw>>;
+
 // Loads a scene file. `overrides` are NAME=VALUE strings (the command line's --set), applied
 // to the parameters: section before any "$name" is resolved; `package_paths` are the
 // command line's --package-path folders for the robots' package:// meshes. Throws SceneError.
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
                 const std::vector<std::string>& package_paths = {},
-                const RunSettings& settings = {});
+                const RunSettings& settings = {}, const UserLaws& user_laws = {});
 
 // `settings` (RunSettings) replace the scene's own run settings.
 // The same from YAML text; `name_for_errors` stands for the file name in messages and in
@@ -86,7 +92,7 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
 Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_errors,
                           const std::vector<std::string>& overrides = {},
                           const std::vector<std::string>& package_paths = {},
-                          const RunSettings& settings = {});
+                          const RunSettings& settings = {}, const UserLaws& user_laws = {});
 
 // A scene's YAML text parsed once and built into Scenes many times: a sweep's points differ
 // only in their overrides, and parsing the text is most of the cost of loading a small
@@ -98,8 +104,8 @@ class SceneDocument {
  public:
   SceneDocument(const std::string& yaml, const std::string& name_for_errors);
   Scene load(const std::vector<std::string>& overrides = {},
-             const std::vector<std::string>& package_paths = {},
-             const RunSettings& settings = {}) const;
+             const std::vector<std::string>& package_paths = {}, const RunSettings& settings = {},
+             const UserLaws& user_laws = {}) const;
 
  private:
   std::string name_;

@@ -11,6 +11,8 @@ PACKAGES=(build-essential cmake pkg-config clang-format
           libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
           libsundials-dev libmuparser-dev gnuplot-nox
           openmpi-bin libopenmpi-dev
+          pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/)
+          python3-matplotlib  # examples/fig4_belt.py
           clang libclang-rt-14-dev)  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
 
 missing=()

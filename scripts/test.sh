@@ -2,7 +2,8 @@
 # Installs the dependencies, checks the formatting, builds Tribo with GCC (Release, warnings
 # as errors) and runs the whole test suite there; then builds it once more with clang in
 # build-sanitize/ (warnings as errors, AddressSanitizer, UBSan and libFuzzer's coverage
-# instrumentation, -O1 with line tables only, benches left out), runs the whole suite again
+# instrumentation, -O1 with line tables only, benches and the Python module left out: an
+# instrumented extension does not load into an uninstrumented interpreter), runs the whole suite again
 # in that build and, from the same tree, the libFuzzer harnesses for a fixed number of
 # inputs each (scripts/fuzz.sh --ci, docs/fuzzing.md). Two compilers check the warnings;
 # one sanitized tree serves the tests and the fuzzers. Each phase prints its duration, and a
@@ -33,7 +34,8 @@ phase() {  # NAME COMMAND...: runs COMMAND, records how long it took (also when 
 release_build() { CMAKE_ARGS="-DTRIBO_WERROR=ON ${CMAKE_ARGS:-}" scripts/setup.sh; }
 sanitized_build() {
   BUILD_DIR=build-sanitize CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DTRIBO_SANITIZE=ON -DTRIBO_FUZZ=ON -DTRIBO_BUILD_BENCH=OFF -DTRIBO_WERROR=ON" scripts/setup.sh
+    -DTRIBO_SANITIZE=ON -DTRIBO_FUZZ=ON -DTRIBO_BUILD_BENCH=OFF -DTRIBO_WERROR=ON \
+    -DTRIBO_PYTHON=OFF" scripts/setup.sh
 }
 sanitized_tests() {
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \

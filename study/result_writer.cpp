@@ -69,8 +69,7 @@ void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecor
   csv.commit();
 }
 
-void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
-                      const RunResult& result) {
+std::string summaryJsonText(const io::Scene& scene, const RunResult& result) {
   const Model& model = *scene.model;
   const SimulationOptions& o = model.options;
   nlohmann::json j;
@@ -185,11 +184,17 @@ void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
       {"force_evaluations", result.stats.evaluations},
       {"events", result.stats.events},
       {"joint_friction_unconverged_steps", result.stats.joint_friction_unconverged}};
+  return j.dump(2);
+}
+
+void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
+                      const RunResult& result) {
+  const std::string text = summaryJsonText(scene, result);
   const auto tmp = partialPath(file);
   {
     std::ofstream out(tmp);
     if (!out) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
-    out << j.dump(2) << '\n';
+    out << text << '\n';
     if (!out) throw std::runtime_error("error writing '" + tmp.string() + "'");
   }
   commitFile(file);

@@ -45,6 +45,8 @@ class TrajectoryCsvFile : public RowSink {
 void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory);
 void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
                       const RunResult& result);
+// The text writeSummaryJson writes (without its final newline), e.g. for the Python module.
+std::string summaryJsonText(const io::Scene& scene, const RunResult& result);
 // Both files into `dir` (created if missing), from a recorder that keeps its rows.
 void writeResults(const std::filesystem::path& dir, const io::Scene& scene,
                   const RunResult& result);

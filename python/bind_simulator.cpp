@@ -1,0 +1,200 @@
+// Step-by-step control: tribo.Simulator(scene) owns a core Simulator (core/simulator.hpp)
+// and steps it as `tribo run` does; its state is a tribo.State whose positions,
+// orientations, velocities and angular velocities are NumPy arrays viewing the State's own
+// memory ((n, 3) and (n, 4), writable: edit them, then assign the State back). A State
+// also carries the friction laws' internal states, so state get/set round-trips bit for
+// bit. contacts() gives the current contact points and forces as arrays; status the last
+// step's outcome with the same message the command line prints.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cstddef>
+#include <memory>
+
+#include "core/simulator.hpp"
+#include "python/bindings.hpp"
+#include "python/python_law.hpp"
+#include "python/scene_handle.hpp"
+
+namespace tribo::python {
+namespace {
+
+// BodyState is four Eigen members; the arrays stride over them in place.
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
+static_assert(sizeof(Quat) == 4 * sizeof(double), "Quat must be four packed doubles");
+
+// An (n, width) array over member `offset` of every BodyState; keeps `owner` alive.
+py::array bodyArray(const py::object& owner, State& s, std::size_t offset, py::ssize_t width) {
+  auto* base = reinterpret_cast<double*>(reinterpret_cast<char*>(s.bodies.data()) + offset);
+  return py::array_t<double>(
+      {static_cast<py::ssize_t>(s.bodies.size()), width},
+      {static_cast<py::ssize_t>(sizeof(BodyState)), static_cast<py::ssize_t>(sizeof(double))}, base,
+      owner);
+}
+
+template <std::size_t Offset, py::ssize_t Width>
+py::cpp_function bodyField() {
+  return py::cpp_function(
+      [](const py::object& self) { return bodyArray(self, self.cast<State&>(), Offset, Width); });
+}
+
+py::dict statusDict(const StepStatus& s) {
+  py::dict d;
+  d["ok"] = s.ok;
+  d["message"] = s.message;
+  d["time"] = s.time;
+  d["body"] = s.body;
+  d["quantity"] = s.quantity;
+  return d;
+}
+
+// One array per contact quantity, one row per contact point of the current evaluation.
+py::dict contactsOf(const Model& model, const Workspace& ws) {
+  const auto n = static_cast<py::ssize_t>(ws.contacts.size());
+  py::array_t<double> position({n, py::ssize_t{3}}), normal({n, py::ssize_t{3}}),
+      friction({n, py::ssize_t{3}}), slip({n, py::ssize_t{3}});
+  py::array_t<double> depth(n), normal_force(n), mu(n);
+  py::list body_a, body_b;
+  auto bodyName = [&](int geometry) {
+    const BodyIndex b = model.geometries[static_cast<std::size_t>(geometry)].body;
+    return b.isWorld() ? std::string("world")
+                       : model.bodies[static_cast<std::size_t>(b.value)].name;
+  };
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const contact::ContactRecord& c = ws.contacts[static_cast<std::size_t>(i)];
+    for (int k = 0; k < 3; ++k) {
+      position.mutable_at(i, k) = c.point.position[k];
+      normal.mutable_at(i, k) = c.point.normal[k];
+      friction.mutable_at(i, k) = c.friction_force[k];
+      slip.mutable_at(i, k) = c.slip[k];
+    }
+    depth.mutable_at(i) = c.point.depth;
+    normal_force.mutable_at(i) = c.normal_force;
+    mu.mutable_at(i) = c.mu;
+    const ContactPair& pair = model.contact_pairs[static_cast<std::size_t>(c.point.pair)];
+    body_a.append(bodyName(pair.geometry_a));
+    body_b.append(bodyName(pair.geometry_b));
+  }
+  py::dict d;
+  d["position"] = position;
+  d["normal"] = normal;  // from A into B
+  d["depth"] = depth;
+  d["normal_force"] = normal_force;
+  d["friction_force"] = friction;  // on B
+  d["slip"] = slip;                // B relative to A
+  d["mu"] = mu;
+  d["body_a"] = body_a;
+  d["body_b"] = body_b;
+  return d;
+}
+
+// The Python-side simulator: the core one and the status of its last step.
+struct PySimulator {
+  std::shared_ptr<const Model> model;
+  io::UserLaws user_laws;  // the scene's Python laws, for their exceptions
+  Simulator sim;
+  StepStatus status;
+  explicit PySimulator(const SceneHandle& scene)
+      : model(scene.scene.model), user_laws(scene.user_laws), sim(model) {}
+};
+
+}  // namespace
+
+void bindSimulator(py::module_& m) {
+  py::class_<State>(m, "State",
+                    "A run's state: time, per-body arrays viewing this object's memory, and "
+                    "the friction laws' internal states (opaque).")
+      .def_readwrite("time", &State::time)
+      .def_property_readonly("positions", bodyField<offsetof(BodyState, position), 3>(),
+                             "(n, 3) world positions of the body origins [m]")
+      .def_property_readonly("orientations", bodyField<offsetof(BodyState, orientation), 4>(),
+                             "(n, 4) body-to-world unit quaternions (x, y, z, w)")
+      .def_property_readonly("velocities", bodyField<offsetof(BodyState, velocity), 3>(),
+                             "(n, 3) world velocities of the body origins [m/s]")
+      .def_property_readonly("angular_velocities",
+                             bodyField<offsetof(BodyState, angular_velocity), 3>(),
+                             "(n, 3) world angular velocities [rad/s]")
+      .def_property_readonly(
+          "friction_values",
+          [](const State& s) {
+            return py::array_t<double>(static_cast<py::ssize_t>(s.friction_values.size()),
+                                       s.friction_values.data());
+          },
+          "A copy of the dynamic friction laws' internal states.")
+      .def("copy", [](const State& s) { return State(s); })
+      .def("__eq__", [](const State& a, const State& b) {
+        // Bit for bit on everything a restart needs.
+        if (a.time != b.time || a.bodies.size() != b.bodies.size() ||
+            a.friction_values != b.friction_values ||
+            a.stick_anchors.size() != b.stick_anchors.size() ||
+            a.friction_states.size() != b.friction_states.size())
+          return false;
+        for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+          const BodyState &x = a.bodies[i], &y = b.bodies[i];
+          if (x.position != y.position || x.orientation.coeffs() != y.orientation.coeffs() ||
+              x.velocity != y.velocity || x.angular_velocity != y.angular_velocity)
+            return false;
+        }
+        return true;
+      });
+
+  py::class_<PySimulator>(m, "Simulator",
+                          "Step-by-step control of a scene's run (the same steps `tribo run` "
+                          "takes).")
+      .def(py::init<const SceneHandle&>(), py::arg("scene"))
+      .def(
+          "step",
+          [](PySimulator& s, long n) {
+            if (n < 1) throw py::value_error("step(n): n must be >= 1");
+            if (n == 1) {  // no GIL hand-over for one step: it costs more than the call
+              s.status = s.sim.step();
+            } else {
+              py::gil_scoped_release release;
+              for (long i = 0; i < n; ++i) {
+                s.status = s.sim.step();
+                if (!s.status.ok) break;
+              }
+            }
+            if (!s.status.ok) raisePythonLawErrors(s.user_laws);
+            return s.status.ok;
+          },
+          py::arg("n") = 1,
+          "Advances n model time steps (stops at a failed one); True when all succeeded. "
+          "status says why a step failed.")
+      .def_property_readonly(
+          "status", [](const PySimulator& s) { return statusDict(s.status); },
+          "The last step's outcome: ok, message, time, body, quantity.")
+      .def_property_readonly("time", [](const PySimulator& s) { return s.sim.state().time; })
+      .def_property(
+          "state", [](const PySimulator& s) { return State(s.sim.state()); },
+          [](PySimulator& s, const State& state) {
+            if (state.bodies.size() != s.model->bodies.size())
+              throw py::value_error("state has " + std::to_string(state.bodies.size()) +
+                                    " bodies, the scene " + std::to_string(s.model->bodies.size()));
+            s.sim.setState(state);
+          },
+          "A copy of the current state; assigning one restarts from it.")
+      .def_property_readonly("body_names",
+                             [](const PySimulator& s) {
+                               std::vector<std::string> names;
+                               for (const Body& b : s.model->bodies) names.push_back(b.name);
+                               return names;
+                             })
+      .def(
+          "contacts", [](PySimulator& s) { return contactsOf(*s.model, s.sim.current()); },
+          "The contact points of the current state: position, normal (A into B), depth, "
+          "normal_force, friction_force (on B), slip (B rel. A), mu, body_a, body_b.")
+      .def_property_readonly("stats", [](const PySimulator& s) {
+        const StepStats& st = s.sim.stats();
+        py::dict d;
+        d["steps"] = st.steps;
+        d["evaluations"] = st.evaluations;
+        d["max_penetration"] = st.max_penetration;
+        d["max_constraint_error"] = st.max_constraint_error;
+        d["integrator_steps"] = st.integrator_steps;
+        d["rejected_steps"] = st.rejected_steps;
+        return d;
+      });
+}
+
+}  // namespace tribo::python

@@ -1,0 +1,35 @@
+// The parts of the `tribo` Python module, one function per concern, called in this order by
+// module.cpp: exceptions first (the others' docstrings name them), then friction laws,
+// scenes and runs, the step-by-step simulator, and the studies (sweep, modes).
+// Conventions shared by all parts (docs/python.md):
+//   - arrays of per-body vectors are (n, 3) float64, quaternions (n, 4) in (x, y, z, w) order
+//     (Eigen's and scipy's), world frame, SI units;
+//   - arrays that view memory a result owns keep that result alive (no copy);
+//   - the GIL is released while the engine runs (runs, steps, sweeps, modes, law loops).
+// Not here: physics, analysis or file formats of their own; everything is the C++ library's.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <vector>
+
+namespace tribo::python {
+
+namespace py = pybind11;
+
+void bindErrors(py::module_& m);
+void bindFriction(py::module_& m);
+void bindScene(py::module_& m);
+void bindSimulator(py::module_& m);
+void bindStudies(py::module_& m);
+
+// "NAME=VALUE" strings (the command line's --set) from a dict of name -> str, int, float or
+// bool; floats in Python's shortest round-trip spelling, so a value crosses exactly.
+std::vector<std::string> overridesFrom(const py::object& set);
+// A list of str / os.PathLike (or None) as strings.
+std::vector<std::string> pathsFrom(const py::object& paths);
+// Python's json.loads of a JSON text (the engine's own JSON, e.g. summary.json's).
+py::object jsonToPython(const std::string& text);
+
+}  // namespace tribo::python

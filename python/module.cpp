@@ -1,0 +1,15 @@
+// The `tribo` Python module: its entry point (python/bindings.hpp lists the parts).
+#include "python/bindings.hpp"
+
+PYBIND11_MODULE(tribo, m) {
+  m.doc() =
+      "Tribo: rigid multibody dynamics with swappable friction laws (docs/python.md).\n"
+      "load_scene/load_urdf -> Scene; Scene.run -> Result (trajectory as NumPy arrays, summary "
+      "as a dict); Simulator for step-by-step control; friction_law for the laws' mu(v); sweep "
+      "and modes for studies.";
+  tribo::python::bindErrors(m);
+  tribo::python::bindFriction(m);
+  tribo::python::bindScene(m);
+  tribo::python::bindSimulator(m);
+  tribo::python::bindStudies(m);
+}

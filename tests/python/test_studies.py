@@ -1,0 +1,93 @@
+"""Studies from Python: tribo.sweep gives the rows `tribo sweep` writes to results.csv, and
+tribo.modes the belt's unstable pair at the growth rate of the 1-DOF formula
+sigma = -(c + N mu'(v_b)) / (2 m) and the damped frequency, computed here from the law's slope."""
+import csv
+import math
+import subprocess
+
+import pytest
+
+import tribo
+
+
+def test_sweep_rows_equal_the_cli(cli, belt, tmp_path):
+    grid = {"v_b": "0.5:1.5:3", "k": [200, 300]}
+    fixed = {"duration": 3}
+    rows = tribo.sweep(belt, grid=grid, set=fixed, jobs=2)
+    assert len(rows) == 6
+    args = [cli, "sweep", belt, "--out", str(tmp_path / "cli"), "--quiet", "--jobs", "1",
+            "--grid", "v_b=0.5:1.5:3", "--list", "k=200,300", "--set", "duration=3"]
+    subprocess.run(args, check=True, capture_output=True)
+    with open(tmp_path / "cli" / "results.csv", newline="") as f:
+        cli_rows = list(csv.DictReader(f))
+    assert len(cli_rows) == 6
+    skip = {"wall_seconds", "simulated_per_wall"}  # clock readings differ from run to run
+    for ours, theirs in zip(rows, cli_rows):
+        assert set(ours) == set(theirs)
+        for key, text in theirs.items():
+            if key in skip:
+                continue
+            value = ours[key]
+            if text == "":
+                assert value is None, key
+            elif isinstance(value, float):
+                assert value == float(text), key
+            else:
+                assert value == text, key
+
+
+def test_sweep_into_a_folder_resumes(belt, tmp_path):
+    out = tmp_path / "map"
+    first = tribo.sweep(belt, grid={"v_b": [1.0, 2.0]}, set={"duration": 2}, out=out)
+    again = tribo.sweep(belt, grid={"v_b": [1.0, 2.0]}, set={"duration": 2}, out=out)
+    assert (out / "results.csv").exists()
+    assert [r["v_b"] for r in first] == [1.0, 2.0]
+    assert again == first  # nothing re-run: the same rows, timings included
+
+
+@pytest.mark.parametrize("v_b,k", [(1.5, 300.0), (0.4, 300.0), (3.0, 120.0)])
+def test_modes_of_the_belt_follow_the_formula(belt, v_b, k):
+    scene = tribo.load_scene(belt, set={"v_b": v_b, "k": k})
+    result = tribo.modes(scene)
+    m, g = 10.0, 9.81
+    law = tribo.friction_law("roh_yoo", mu_s=0.35, mu_k=0.3, v_s=0.01, a=1.5, beta=1 / 3)
+    sigma = -(0.0 + m * g * law.slope(v_b)) / (2 * m)  # the belt spring has no damping
+    freq = math.sqrt(k / m - sigma**2) / (2 * math.pi)
+    lead = result["modes"][0]
+    assert lead["unstable"] and result["unstable"] >= 1
+    assert lead["growth_rate"] == pytest.approx(sigma, rel=1e-4)
+    assert lead["frequency"] == pytest.approx(freq, rel=1e-4)
+    assert lead["shape"]["box.x"][0] == pytest.approx(1.0)
+
+
+def test_modes_errors():
+    kinematic_only = """
+simulation: {duration: 1, time_step: 1.0e-3}
+bodies:
+  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: halfspace}]}
+"""
+    with pytest.raises(tribo.Error) as e:
+        tribo.modes(tribo.load_scene(kinematic_only))
+    assert "dynamic" in str(e.value) or "no body" in str(e.value)
+
+
+def test_tradeoff_rows_equal_the_cli(cli, belt, tmp_path):
+    fixed = {"duration": 4}
+    rows = tribo.tradeoff(belt, set=fixed, integrators=["rk4"], window=3)
+    subprocess.run([cli, "tradeoff", belt, "--out", str(tmp_path), "--integrators", "rk4",
+                    "--window", "3", "--set", "duration=4"], check=True, capture_output=True)
+    with open(tmp_path / "tradeoff.csv", newline="") as f:
+        cli_rows = list(csv.DictReader(f))
+    assert len(rows) == len(cli_rows) > 5
+    assert rows[0]["status"] == "reference"
+    for ours, theirs in zip(rows, cli_rows):
+        assert ours["status"] == theirs["status"]
+        for key in ("amplitude_error", "trajectory_error"):
+            if theirs[key] == "":
+                assert math.isnan(ours[key])
+            else:  # the file keeps 4 significant digits of the errors
+                assert format(ours[key], ".4g") == theirs[key]
+    # rk4 converges: the error of the finest complete step is below the coarsest's
+    done = [r for r in rows[1:] if r["status"] == "complete"]
+    assert done[-1]["dt"] < done[0]["dt"]
+    assert done[-1]["trajectory_error"] < done[0]["trajectory_error"]
