@@ -100,7 +100,7 @@ std::shared_ptr<py::error_already_set> PythonCalls::takeError() const {
 }
 
 PythonDynamicLaw::PythonDynamicLaw(std::string name, const py::object& law)
-    : calls_(std::move(name), law) {
+    : PythonCurveLaw(std::move(name), law) {
   const std::string& n = calls_.name();
   size_ = law.attr("state_size").cast<int>();
   if (size_ < 1) throw py::value_error("law '" + n + "': state_size must be >= 1");

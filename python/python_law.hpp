@@ -60,9 +60,11 @@ class PythonCalls {
   mutable std::shared_ptr<py::error_already_set> error_;
 };
 
-class PythonLaw : public friction::FrictionLaw {
+// The steady curve's part of a law's interface, answered by the Python object.
+template <class Base>
+class PythonCurveLaw : public Base {
  public:
-  PythonLaw(std::string name, const py::object& law) : calls_(std::move(name), law) {}
+  PythonCurveLaw(std::string name, const py::object& law) : calls_(std::move(name), law) {}
   double coefficient(double v) const override { return calls_.mu(v); }
   double slope(double v) const override { return calls_.slope(v); }
   double maxCoefficient(double v_max) const override { return calls_.maxCoefficient(v_max); }
@@ -71,20 +73,18 @@ class PythonLaw : public friction::FrictionLaw {
   std::string_view name() const override { return calls_.name(); }
   const PythonCalls& calls() const { return calls_; }
 
- private:
+ protected:
   PythonCalls calls_;
 };
 
-class PythonDynamicLaw : public friction::DynamicFrictionLaw {
+class PythonLaw final : public PythonCurveLaw<friction::FrictionLaw> {
+ public:
+  using PythonCurveLaw::PythonCurveLaw;
+};
+
+class PythonDynamicLaw final : public PythonCurveLaw<friction::DynamicFrictionLaw> {
  public:
   PythonDynamicLaw(std::string name, const py::object& law);
-  double coefficient(double v) const override { return calls_.mu(v); }
-  double slope(double v) const override { return calls_.slope(v); }
-  double maxCoefficient(double v_max) const override { return calls_.maxCoefficient(v_max); }
-  double stickSpeed() const override { return calls_.stickSpeed(); }
-  std::vector<double> breakpoints() const override { return {}; }
-  std::string_view name() const override { return calls_.name(); }
-
   int stateSize() const override { return size_; }
   int tangentVectors() const override { return tangent_vectors_; }
   std::string stateName(int i) const override { return "z" + std::to_string(i); }
@@ -95,14 +95,12 @@ class PythonDynamicLaw : public friction::DynamicFrictionLaw {
   void stableStep(double* z, const Eigen::Vector3d& slip, double fn, double h) const override;
   Presliding presliding() const override { return presliding_; }
   double stateStiffness(double v_max) const override;
-  const PythonCalls& calls() const { return calls_; }
 
  private:
   // The Python result `r` copied into out[0..n) (NaN and a recorded error when it is not a
   // sequence of n numbers).
   void copyOut(const py::object& r, double* out, int n, const char* what) const;
 
-  PythonCalls calls_;
   int size_ = 0, tangent_vectors_ = 0;
   Presliding presliding_;
   std::vector<double> initial_;
