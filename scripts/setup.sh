@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(build-essential cmake pkg-config clang-format
           libeigen3-dev libfcl-dev libccd-dev liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
-          libsundials-dev libmuparser-dev gnuplot-nox
+          libsundials-dev libmuparser-dev libspectra-dev gnuplot-nox
           openmpi-bin libopenmpi-dev
           clang libclang-rt-14-dev)  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
 
