@@ -52,7 +52,7 @@ double cayleyShift(const Eigen::MatrixXd& a);
 
 // Throws LinearizationFailure (study/modes_error.hpp) when A is not finite, A - s I cannot be
 // factorized, Arnoldi does not converge, a residual is too large or the guard disagrees;
-// ModesError when A has fewer than count + 3 states (use the dense solver).
+// ModesError when count < 1 or A has fewer than 2 count + 4 states (use the dense solver).
 SparseEigenpairs sparseEigenpairs(const Eigen::MatrixXd& a, const SparseEigenOptions& options);
 
 }  // namespace tribo::study
