@@ -27,8 +27,9 @@ constexpr const char* kUsage =
     "  --steady-tolerance  largest acceleration accepted at the steady state (1e-8 m/s^2);\n"
     "              stiff springs anchored far away round above the default\n"
     "  --solver    dense: every mode (Eigen, cubic in the states); sparse: the N modes of\n"
-    "              largest growth rate (Arnoldi on a Cayley transform, Spectra), checked by\n"
-    "              residual and a second run, yet not proof that no growing mode is missed;\n"
+    "              largest growth rate among those near the imaginary axis (shift-and-invert\n"
+    "              Arnoldi at shifts i w scanning the frequency band, Spectra), residual-\n"
+    "              checked; modes far left of the axis are not searched;\n"
     "              auto (default): dense up to 400 states, sparse above, dense again with a\n"
     "              warning if the sparse one fails\n"
     "  --modes N   modes the sparse solver returns, a complex pair once (12)\n"
@@ -130,9 +131,10 @@ void printTable(const io::Scene& scene, const study::ModesResult& r) {
       r.coordinates, 2 * r.coordinates, r.steps.position, r.steps.velocity, r.worst_disagreement);
   if (r.solver.method == "sparse")
     std::printf(
-        "eigensolver      sparse: %zu modes of largest growth rate (Cayley shift %.3g 1/s, "
-        "worst residual %.2g, guard %.2g 1/s)\n",
-        r.modes.size(), r.solver.shift, r.solver.worst_residual, r.solver.guard_difference);
+        "eigensolver      sparse: %zu modes of largest growth rate of %d found (%d shifts "
+        "covering 0..%.3g 1/s, |Re| < %.3g 1/s; worst residual %.2g)\n",
+        r.modes.size(), r.solver.found, r.solver.shifts, r.solver.band_top, r.solver.strip,
+        r.solver.worst_residual);
   else
     std::printf("eigensolver      dense: every mode\n");
   std::printf("\n%-5s %-15s %-15s %-14s %-9s %s\n", "mode", "frequency [Hz]", "growth [1/s]",

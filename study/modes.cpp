@@ -85,9 +85,11 @@ std::vector<Mode> sparseModesOf(const Eigen::MatrixXd& a, const ReducedCoordinat
   if (report) {
     report->method = "sparse";
     report->requested = options.count;
-    report->shift = pairs.shift;
+    report->shifts = pairs.shifts;
+    report->found = pairs.found;
+    report->band_top = pairs.band_top;
+    report->strip = pairs.strip;
     report->worst_residual = pairs.worst_residual;
-    report->guard_difference = pairs.guard_difference;
     report->sparse_factorization = pairs.sparse_factorization;
     report->operations = pairs.operations;
   }

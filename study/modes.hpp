@@ -9,8 +9,9 @@
 // phase [deg] relative to it. A mode is unstable when sigma > growth_tolerance. A complex
 // pair is reported once (omega >= 0). Modes are sorted by decreasing growth rate.
 // Two eigensolvers (ModesSpec::solver): dense, every eigenpair (Eigen::EigenSolver, cubic in
-// the states), and sparse, the `sparse_modes` modes of largest growth rate only (Arnoldi on a
-// Cayley transform, study/sparse_modes.hpp; residual-checked, with a guard run). auto takes
+// the states), and sparse, the `sparse_modes` modes of largest growth rate among those near
+// the imaginary axis (shift-and-invert Arnoldi scanning the frequency band,
+// study/sparse_modes.hpp; residual-checked). auto takes
 // the dense one up to kSparseAboveStates states and the sparse one above, falling back to
 // the dense one with a warning when the sparse one fails (docs/stability.md has the timings
 // the threshold comes from). The sparse solver's unstable_count counts the modes it returned.
@@ -20,8 +21,8 @@
 // non-finite linearization, an eigenproblem that fails); NoSteadyState from the steady-state
 // search. Never a table of NaN.
 // Not here: the internal states of stateful friction laws, nonlinear (limit-cycle)
-// amplitudes, a proof that the sparse solver missed no growing mode (its guard is a check,
-// study/sparse_modes.hpp), files (apps/modes_command.cpp).
+// amplitudes, modes outside the sparse solver's scanned discs (study/sparse_modes.hpp says
+// what its scan certifies), files (apps/modes_command.cpp).
 #pragma once
 
 #include <complex>
@@ -53,11 +54,13 @@ struct ModesSpec {
 struct SolverReport {
   std::string method = "dense";       // "dense" or "sparse"
   int requested = 0;                  // sparse: modes asked for
-  double shift = 0.0;                 // sparse: the Cayley shift s [1/s]
+  int shifts = 0;                     // sparse: shifts i w of the band scan
+  int found = 0;                      // sparse: distinct eigenvalues found (a pair once)
+  double band_top = 0.0;              // sparse: the scan covers i [0, band_top] [1/s]
+  double strip = 0.0;                 // sparse: ... and |Re lambda| < strip along it [1/s]
   double worst_residual = 0.0;        // sparse: largest ||A v - lambda v|| / (||A||_F ||v||)
-  double guard_difference = 0.0;      // sparse: leading growth rates of the two runs apart [1/s]
-  bool sparse_factorization = false;  // sparse: A - s I by SparseLU (else dense LU)
-  int operations = 0;                 // sparse: applications of the Cayley transform
+  bool sparse_factorization = false;  // sparse: A - i w I by SparseLU (else dense LU)
+  int operations = 0;                 // sparse: applications of a shifted inverse
 };
 
 struct ShapeEntry {

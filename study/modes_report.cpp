@@ -64,9 +64,11 @@ void writeModesJson(const std::filesystem::path& file, const io::Scene& scene,
                         {"step_check_disagreement", r.worst_disagreement}};
   j["eigensolver"] = {{"method", r.solver.method},
                       {"modes_requested", r.solver.requested},
-                      {"cayley_shift", r.solver.shift},
+                      {"shifts", r.solver.shifts},
+                      {"eigenvalues_found", r.solver.found},
+                      {"band_top", r.solver.band_top},
+                      {"strip", r.solver.strip},
                       {"worst_residual", r.solver.worst_residual},
-                      {"guard_difference", r.solver.guard_difference},
                       {"sparse_factorization", r.solver.sparse_factorization},
                       {"operations", r.solver.operations}};
   j["warnings"] = r.warnings;

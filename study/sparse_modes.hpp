@@ -1,27 +1,31 @@
 // The few eigenpairs of a large real matrix A (y' = A y, study/linearization.hpp) that decide
-// its stability: those with the largest growth rate Re(lambda), found by Arnoldi iteration
-// (Spectra's GenEigsSolver, https://spectralib.org) on the Cayley transform
-//   C = (A - s I)^-1 (A + s I),   mu = (lambda + s) / (lambda - s),   lambda = s (mu + 1) / (mu -
-//   1)
-// (Saad, "Numerical Methods for Large Eigenvalue Problems", 2nd ed. 2011, ch. 7; Meerbergen,
-// Spence & Roose 1994, BIT 34:409-423). For a real shift s > 0, |mu| > 1 exactly when
-// Re(lambda) > 0, so every growing mode outranks every decaying one in magnitude, which is
-// what Arnoldi finds first. C is applied as C x = x + 2 s (A - s I)^-1 x through one LU
-// factorization of A - s I (Eigen's SparseLU when A has few nonzeros, dense PartialPivLU
-// otherwise). The eigenvectors are C's, which are A's; each eigenvalue is the Rayleigh
-// quotient v^H A v / v^H v of its vector (more accurate than the mapped mu for modes far from
-// s) and each pair must pass ||A v - lambda v|| <= tol ||A||_F ||v||.
-// The shift (cayleyShift): the geometric mean over the states of sqrt|(A^2)_ii|, zeros
-// skipped. For A = [[0, I], [K, C]] the first half is sqrt|K_ii|, each coordinate's natural
-// frequency, so s sits inside the band of the structure's frequencies, where C spreads the
-// modes apart; far from s (|lambda| >> s) the modes crowd towards |mu| = 1.
-// The guard: a second Arnoldi run from another start vector asking for more modes; the two
-// leading growth rates must agree. It catches a run that converged to the wrong set; it does
-// not prove that no mode is missed (both runs can miss a mode crowded near |mu| = 1), and
-// among more growing modes than asked for the ones returned are those of largest |mu| (largest
-// Re(lambda) s / |lambda - s|^2), not necessarily of largest growth rate.
+// its stability: those of largest growth rate Re(lambda) among the eigenvalues near the
+// imaginary axis, found by scanning the frequency band with shift-and-invert Arnoldi at
+// shifts sigma_k = i w_k (Saad, "Numerical Methods for Large Eigenvalue Problems", 2nd ed.,
+// SIAM 2011, ch. 7, shift-and-invert; Ericsson & Ruhe 1980, Math. Comp. 35:1251-1268, the
+// spectral transformation; Arnoldi by Spectra's GenEigsSolver, https://spectralib.org).
+// One shift: (A - sigma I)^-1 by one LU factorization (Eigen's SparseLU when A has few
+// nonzeros, dense PartialPivLU otherwise; complex for sigma != 0). Its eigenvalues
+// theta = 1 / (lambda - sigma) are largest for the lambda nearest sigma, so Arnoldi finds the
+// `per_shift` eigenvalues of A nearest sigma quickly and reliably, however spread the rest
+// (a mechanical structure's lightly damped modes over decades of frequency, which defeat a
+// single real shift). Spectra wants a real operator: for complex sigma it runs on the real
+// 2n x 2n form of (A - sigma I)^-1 ([[Re, -Im], [Im, Re]]), whose eigenvalues are the theta
+// and their conjugates, the eigenvector's upper half an eigenvector of A. Each eigenvalue is
+// the Rayleigh quotient v^H A v / v^H v of its vector and each pair must pass
+// ||A v - lambda v|| <= tol ||A||_F ||v||.
+// The scan: w_0 = 0 (real, covers the low band and real eigenvalues near 0); after shift k,
+// r_k = the distance from sigma_k to the farthest of its eigenvalues, and w_{k+1} = w_k +
+// 0.9 r_k, so consecutive discs overlap and their union covers the segment [0, top] of the
+// imaginary axis. It stops when top reaches w_max = max_i (sqrt|(A^2)_ii| + |A_ii|) (for
+// A = [[0, I], [K, C]] about the largest coordinate's natural frequency or damping rate: a
+// heuristic bound of the band, not a proof) or when a shift finds no eigenvalue the earlier ones had not.
+// What it certifies: when every Arnoldi run converged, every eigenvalue inside the union of
+// the discs |lambda - i w_k| < r_k is found (and its conjugate). Not: eigenvalues outside
+// the discs (far left of the axis, stiff heavily damped or real ones, or above `top`),
+// multiplicities (eigenvalues within the deduplication tolerance are reported once).
 // Not here: mode shapes and sorting (study/modes.hpp), the dense solver (Eigen::EigenSolver in
-// study/modes.cpp), generalized problems (M y' = A y), complex shifts.
+// study/modes.cpp), generalized problems (M y' = A y).
 #pragma once
 
 #include <Eigen/Dense>
@@ -29,30 +33,32 @@
 namespace tribo::study {
 
 struct SparseEigenOptions {
-  int count = 12;                    // eigenvalues wanted, a complex pair counted once
+  int count = 12;                    // eigenvalues returned, a complex pair counted once
   double residual_tolerance = 1e-8;  // largest ||A v - lambda v|| / (||A||_F ||v||)
-  bool guard = true;                 // the second run (see above)
-  double shift = 0.0;                // the Cayley shift s; 0: cayleyShift(a)
-  double arnoldi_tolerance = 1e-12;  // Spectra's relative tolerance on the Ritz values of C
-  int subspace = 0;                  // Arnoldi basis size ncv; 0: max(4 nev + 1, nev + 40)
+  int per_shift = 20;                // eigenvalues of A (both of a pair) sought at each shift
+  double arnoldi_tolerance = 1e-12;  // Spectra's relative tolerance on the Ritz values
+  int max_shifts = 400;              // the scan fails beyond this many shifts
 };
 
 struct SparseEigenpairs {
-  Eigen::VectorXcd values;   // one per complex pair (Im >= 0), largest |mu| first
-  Eigen::MatrixXcd vectors;  // unit columns
-  double shift = 0.0;
+  Eigen::VectorXcd values;      // one per complex pair (Im >= 0), decreasing growth rate
+  Eigen::MatrixXcd vectors;     // unit columns
+  int shifts = 0;               // shifts of the scan (factorizations)
+  int found = 0;                // distinct eigenvalues (Im >= 0) the scan found in all
+  double band_top = 0.0;        // the discs cover the imaginary axis from 0 to i band_top [1/s]
+  double strip = 0.0;           // and the strip |Re lambda| < strip along it [1/s]
   double worst_residual = 0.0;  // of the returned pairs, relative as above
   bool sparse_factorization = false;
-  int operations = 0;             // applications of C, both runs
-  double guard_difference = 0.0;  // |leading growth rate of run 1 - of run 2| [1/s]
+  int operations = 0;  // applications of a shifted inverse, all shifts
 };
 
-// The shift s > 0 described above (1 when A has no nonzero (A^2)_ii).
-double cayleyShift(const Eigen::MatrixXd& a);
+// w_max above: max_i (sqrt|(A^2)_ii| + |A_ii|) (1 when that is 0).
+double bandBound(const Eigen::MatrixXd& a);
 
-// Throws LinearizationFailure (study/modes_error.hpp) when A is not finite, A - s I cannot be
-// factorized, Arnoldi does not converge, a residual is too large or the guard disagrees;
-// ModesError when count < 1 or A has fewer than 2 count + 4 states (use the dense solver).
+// Throws LinearizationFailure (study/modes_error.hpp) when A is not finite, A - sigma I cannot
+// be factorized, an Arnoldi run does not converge, the scan needs more than max_shifts shifts
+// or a residual is too large; ModesError when count < 1 or A has fewer than
+// 2 per_shift + 4 states (use the dense solver).
 SparseEigenpairs sparseEigenpairs(const Eigen::MatrixXd& a, const SparseEigenOptions& options);
 
 }  // namespace tribo::study
