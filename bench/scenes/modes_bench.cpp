@@ -10,9 +10,9 @@
 // without parsing the text again), BM_ModesChain/<law>/<n> (a chain of n boxes pressed on a
 // belt, tests/support/chain_on_belt.hpp), BM_ModesSolver/<dense|sparse>/<n> (the
 // eigensolvers alone on the chain's A, linearized once per n: every mode by Eigen's dense
-// solver against the 12 of largest growth rate by study/sparse_modes.hpp; the sparse case
-// reports dense_over_sparse, the ratio to the dense case's time measured just before in
-// the same process); BM_Baseline_BeltClosedForm.
+// solver against the 12 of largest growth rate by study/sparse_modes.hpp's band scan; the sparse
+// case reports dense_over_sparse, the ratio to the dense case's time measured just before in the
+// same process); BM_Baseline_BeltClosedForm.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Eigenvalues>
