@@ -30,7 +30,7 @@ constexpr const char* kUsage =
     "              largest growth rate among those near the imaginary axis (shift-and-invert\n"
     "              Arnoldi at shifts i w scanning the frequency band, Spectra), residual-\n"
     "              checked; modes far left of the axis are not searched;\n"
-    "              auto (default): dense up to 400 states, sparse above, dense again with a\n"
+    "              auto (default): dense up to 200 states, sparse above, dense again with a\n"
     "              warning if the sparse one fails\n"
     "  --modes N   modes the sparse solver returns, a complex pair once (12)\n"
     "exit status: 0 stable, 1 usage, 2 bad scene, 4 output error, 8 unstable,\n"

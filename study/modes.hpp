@@ -40,7 +40,7 @@ namespace tribo::study {
 enum class EigenSolverChoice { kAuto, kDense, kSparse };
 
 // auto: dense up to this many states (2 x coordinates, plus friction states), sparse above.
-inline constexpr int kSparseAboveStates = 400;
+inline constexpr int kSparseAboveStates = 200;
 
 struct ModesSpec {
   SteadyStateOptions steady;
