@@ -19,11 +19,13 @@
 // 0.9 r_k, so consecutive discs overlap and their union covers the segment [0, top] of the
 // imaginary axis. It stops when top reaches w_max = max_i (sqrt|(A^2)_ii| + |A_ii|) (for
 // A = [[0, I], [K, C]] about the largest coordinate's natural frequency or damping rate: a
-// heuristic bound of the band, not a proof) or when a shift finds no eigenvalue the earlier ones had not.
+// heuristic bound of the band, not a proof) or when a shift finds nothing new.
+//
 // What it certifies: when every Arnoldi run converged, every eigenvalue inside the union of
 // the discs |lambda - i w_k| < r_k is found (and its conjugate). Not: eigenvalues outside
 // the discs (far left of the axis, stiff heavily damped or real ones, or above `top`),
 // multiplicities (eigenvalues within the deduplication tolerance are reported once).
+//
 // Not here: mode shapes and sorting (study/modes.hpp), the dense solver (Eigen::EigenSolver in
 // study/modes.cpp), generalized problems (M y' = A y).
 #pragma once
