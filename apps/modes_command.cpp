@@ -1,5 +1,6 @@
 #include "apps/modes_command.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -15,6 +16,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: tribo modes SCENE.yaml --out DIR [--set NAME=VALUE ...] [--settle]\n"
     "                   [--boundary NAME=LO:HI] [--growth-tolerance X] [--steady-tolerance X]\n"
+    "                   [--solver auto|dense|sparse] [--modes N]\n"
     "  linear stability of steady sliding: finds the steady state (dynamic bodies at rest,\n"
     "  belts moving), linearizes about it and prints each mode's frequency, growth rate,\n"
     "  damping ratio and what moves; writes DIR/modes.json and DIR/modes.csv\n"
@@ -24,6 +26,13 @@ constexpr const char* kUsage =
     "  --growth-tolerance  growth rate above which a mode counts as unstable (1e-6 1/s)\n"
     "  --steady-tolerance  largest acceleration accepted at the steady state (1e-8 m/s^2);\n"
     "              stiff springs anchored far away round above the default\n"
+    "  --solver    dense: every mode (Eigen, cubic in the states); sparse: the N modes of\n"
+    "              largest growth rate among those near the imaginary axis (shift-and-invert\n"
+    "              Arnoldi at shifts i w scanning the frequency band, Spectra), residual-\n"
+    "              checked; modes far left of the axis are not searched;\n"
+    "              auto (default): dense up to 200 states, sparse above, dense again with a\n"
+    "              warning if the sparse one fails\n"
+    "  --modes N   modes the sparse solver returns, a complex pair once (12)\n"
     "exit status: 0 stable, 1 usage, 2 bad scene, 4 output error, 8 unstable,\n"
     "             9 no steady state, 10 linearization or eigenproblem failed\n";
 
@@ -54,12 +63,28 @@ study::BoundarySpec parseBoundary(const std::string& text) {
   return b;
 }
 
+study::EigenSolverChoice solverChoice(const std::string& text) {
+  if (text == "auto") return study::EigenSolverChoice::kAuto;
+  if (text == "dense") return study::EigenSolverChoice::kDense;
+  if (text == "sparse") return study::EigenSolverChoice::kSparse;
+  throw std::invalid_argument("--solver: expected auto, dense or sparse, found '" + text + "'");
+}
+
+int modeCount(const std::string& text) {
+  const auto v = io::parseNumber(text);
+  if (!v || *v < 1 || *v > 100000 || *v != std::floor(*v))
+    throw std::invalid_argument("--modes: expected a whole number of modes >= 1, found '" + text +
+                                "'");
+  return static_cast<int>(*v);
+}
+
 Arguments parse(const std::vector<std::string>& args) {
   Arguments a;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& s = args[i];
     const bool takes_value = s == "--set" || s == "--out" || s == "--boundary" ||
-                             s == "--growth-tolerance" || s == "--steady-tolerance";
+                             s == "--growth-tolerance" || s == "--steady-tolerance" ||
+                             s == "--solver" || s == "--modes";
     if (takes_value && i + 1 >= args.size()) throw std::invalid_argument(s + " needs a value");
     if (s == "--set")
       a.overrides.push_back(args[++i]);
@@ -71,6 +96,10 @@ Arguments parse(const std::vector<std::string>& args) {
       a.spec.growth_tolerance = number(s, args[++i]);
     else if (s == "--steady-tolerance")
       a.spec.steady.tolerance = number(s, args[++i]);
+    else if (s == "--solver")
+      a.spec.solver = solverChoice(args[++i]);
+    else if (s == "--modes")
+      a.spec.sparse_modes = modeCount(args[++i]);
     else if (s == "--settle")
       a.spec.steady.settle = true;
     else if (s.rfind("--", 0) == 0)
@@ -100,6 +129,14 @@ void printTable(const io::Scene& scene, const study::ModesResult& r) {
       "coordinates      %d independent, %d states; steps %.2g (position), %.2g "
       "(velocity), check %.2g\n",
       r.coordinates, 2 * r.coordinates, r.steps.position, r.steps.velocity, r.worst_disagreement);
+  if (r.solver.method == "sparse")
+    std::printf(
+        "eigensolver      sparse: %zu modes of largest growth rate of %d found (%d shifts "
+        "covering 0..%.3g 1/s, |Re| < %.3g 1/s; worst residual %.2g)\n",
+        r.modes.size(), r.solver.found, r.solver.shifts, r.solver.band_top, r.solver.strip,
+        r.solver.worst_residual);
+  else
+    std::printf("eigensolver      dense: every mode\n");
   std::printf("\n%-5s %-15s %-15s %-14s %-9s %s\n", "mode", "frequency [Hz]", "growth [1/s]",
               "damping ratio", "unstable", "moves");
   for (std::size_t i = 0; i < r.modes.size() && i < kRowsShown; ++i) {

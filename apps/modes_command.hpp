@@ -1,6 +1,8 @@
 // `tribo modes SCENE.yaml --out DIR [--set NAME=VALUE ...] [--settle] [--boundary NAME=LO:HI]
-//  [--growth-tolerance X]`: will steady sliding squeal? Finds the scene's steady state,
-// linearizes about it and prints its modes (study/modes.hpp says how); writes
+//  [--growth-tolerance X] [--solver auto|dense|sparse] [--modes N]`: will steady sliding
+// squeal? Finds the scene's steady state, linearizes about it and prints its modes (all of
+// them by the dense eigensolver, the N of largest growth rate by the sparse one; auto picks
+// by size: study/modes.hpp says how); writes
 // DIR/modes.json and DIR/modes.csv (study/modes_report.hpp) and, with --boundary, bisects
 // the parameter NAME over [LO, HI] for the value where the largest growth rate crosses zero
 // (study/stability_boundary.hpp) into DIR/boundary.json.

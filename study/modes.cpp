@@ -45,6 +45,11 @@ Mode makeMode(std::complex<double> lambda, const Eigen::VectorXcd& vector,
   return mode;
 }
 
+void sortByGrowth(std::vector<Mode>& modes) {
+  std::stable_sort(modes.begin(), modes.end(),
+                   [](const Mode& x, const Mode& y) { return x.growth_rate > y.growth_rate; });
+}
+
 }  // namespace
 
 std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& coords,
@@ -65,9 +70,61 @@ std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& co
     if (values(i).imag() < 0) continue;  // the conjugate of a pair reported once
     modes.push_back(makeMode(values(i), vectors.col(i), coords, growth_tolerance));
   }
-  std::stable_sort(modes.begin(), modes.end(),
-                   [](const Mode& x, const Mode& y) { return x.growth_rate > y.growth_rate; });
+  sortByGrowth(modes);
   return modes;
+}
+
+std::vector<Mode> sparseModesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& coords,
+                                double growth_tolerance, const SparseEigenOptions& options,
+                                SolverReport* report) {
+  const SparseEigenpairs pairs = sparseEigenpairs(a, options);
+  std::vector<Mode> modes;
+  for (Eigen::Index i = 0; i < pairs.values.size(); ++i)
+    modes.push_back(makeMode(pairs.values(i), pairs.vectors.col(i), coords, growth_tolerance));
+  sortByGrowth(modes);
+  if (report) {
+    report->method = "sparse";
+    report->requested = options.count;
+    report->shifts = pairs.shifts;
+    report->found = pairs.found;
+    report->band_top = pairs.band_top;
+    report->strip = pairs.strip;
+    report->worst_residual = pairs.worst_residual;
+    report->sparse_factorization = pairs.sparse_factorization;
+    report->operations = pairs.operations;
+  }
+  return modes;
+}
+
+SolvedModes solveModes(const Eigen::MatrixXd& a, const ReducedCoordinates& coords,
+                       const ModesSpec& spec) {
+  SolvedModes out;
+  const bool sparse = spec.solver == EigenSolverChoice::kSparse ||
+                      (spec.solver == EigenSolverChoice::kAuto && a.rows() > kSparseAboveStates);
+  if (!sparse) {
+    out.modes = modesOf(a, coords, spec.growth_tolerance);
+    return out;
+  }
+  SparseEigenOptions options;
+  options.count = spec.sparse_modes;
+  try {
+    out.modes = sparseModesOf(a, coords, spec.growth_tolerance, options, &out.solver);
+  } catch (const ModesError& e) {
+    if (spec.solver != EigenSolverChoice::kAuto) throw;
+    out.warnings.push_back(std::string("the sparse eigensolver failed (") + e.what() +
+                           "); every mode computed by the dense one instead");
+    out.solver = SolverReport{};
+    out.modes = modesOf(a, coords, spec.growth_tolerance);
+    return out;
+  }
+  const bool all_grow =
+      std::all_of(out.modes.begin(), out.modes.end(), [](const Mode& m) { return m.unstable; });
+  if (all_grow)
+    out.warnings.push_back("all " + std::to_string(out.modes.size()) +
+                           " modes the sparse eigensolver returned grow: more may, and the "
+                           "leading one may be among them; ask for more (--modes) or use "
+                           "--solver dense");
+  return out;
 }
 
 ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
@@ -100,10 +157,13 @@ ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
   out.coordinates = coords.size();
   out.steps = chooseSteps(dynamics, x);
   const Linearization lin = linearize(dynamics, coords, x, out.steps, true, spec.check_tolerance);
-  out.modes = modesOf(firstOrderMatrix(lin), coords, spec.growth_tolerance);
+  SolvedModes solved = solveModes(firstOrderMatrix(lin), coords, spec);
+  out.modes = std::move(solved.modes);
+  out.solver = solved.solver;
   out.linearize_seconds = secondsSince(start);
   out.worst_disagreement = lin.worst_disagreement;
   out.warnings = lin.warnings;
+  out.warnings.insert(out.warnings.end(), solved.warnings.begin(), solved.warnings.end());
   out.evaluations = out.steady.evaluations + lin.evaluations + 1;
   for (const Mode& m : out.modes) out.unstable_count += m.unstable ? 1 : 0;
   return out;

@@ -62,6 +62,15 @@ void writeModesJson(const std::filesystem::path& file, const io::Scene& scene,
                         {"position_step", r.steps.position},
                         {"velocity_step", r.steps.velocity},
                         {"step_check_disagreement", r.worst_disagreement}};
+  j["eigensolver"] = {{"method", r.solver.method},
+                      {"modes_requested", r.solver.requested},
+                      {"shifts", r.solver.shifts},
+                      {"eigenvalues_found", r.solver.found},
+                      {"band_top", r.solver.band_top},
+                      {"strip", r.solver.strip},
+                      {"worst_residual", r.solver.worst_residual},
+                      {"sparse_factorization", r.solver.sparse_factorization},
+                      {"operations", r.solver.operations}};
   j["warnings"] = r.warnings;
   j["notes"] = scene.notes;
   j["timing"] = {{"steady_state_s", r.steady_seconds},

@@ -2,9 +2,11 @@
 //   modes.json  scene, parameters, verdict (stable / unstable, unstable_count), the leading
 //               mode, the steady state (every dynamic body's position and orientation,
 //               Newton's iterations and residual), the finite-difference steps and their
-//               check, warnings, timings, and every mode: eigenvalue (re, im), frequency
-//               [Hz], growth rate [1/s], damping ratio, unstable, dominant coordinates and
-//               the shape (coordinate, magnitude, phase [deg]);
+//               check, the eigensolver (method dense or sparse; the sparse one's modes
+//               asked for, shifts, eigenvalues found, band_top and strip covered, worst
+//               residual, factorization, operations), warnings, timings, and every mode computed:
+//               eigenvalue (re, im), frequency [Hz], growth rate [1/s], damping ratio, unstable,
+//               dominant coordinates and the shape (coordinate, magnitude, phase [deg]);
 //   modes.csv   one row per mode: mode, frequency_hz, growth_rate, damping_ratio,
 //               eigen_re, eigen_im, unstable (0/1), dominant, then one magnitude column per
 //               full coordinate (e.g. box.x);

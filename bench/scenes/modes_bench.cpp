@@ -8,11 +8,18 @@
 // the YAML parsed once, io::SceneDocument: what a point of `tribo sweep --analysis modes`
 // adds), BM_SweepModesPoint/{reparsed,parsed_once} (a whole sweep point of the belt, with and
 // without parsing the text again), BM_ModesChain/<law>/<n> (a chain of n boxes pressed on a
-// belt, generated here); BM_Baseline_BeltClosedForm.
+// belt, tests/support/chain_on_belt.hpp), BM_ModesSolver/<dense|sparse>/<n> (the
+// eigensolvers alone on the chain's A, linearized once per n: every mode by Eigen's dense
+// solver against the 12 of largest growth rate by study/sparse_modes.hpp's band scan; the sparse
+// case reports dense_over_sparse, the ratio to the dense case's time measured just before in the
+// same process); BM_Baseline_BeltClosedForm.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Eigenvalues>
+#include <chrono>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -20,6 +27,7 @@
 #include "io/scene_loader.hpp"
 #include "study/modes.hpp"
 #include "study/sweep/sweep_point.hpp"
+#include "support/chain_on_belt.hpp"
 
 namespace {
 
@@ -83,46 +91,74 @@ void BM_SweepModesPoint(benchmark::State& st, bool parsed_once) {
   }
 }
 
-// A chain of n boxes (1 kg, 0.2 x 0.2 x 0.1 m, each on a planar joint) pressed on a belt by
-// their weight, joined in a row by springs of 300 N/m and tied to a wall at the first: n
-// coupled belt oscillators, 2n coordinates (x and z per box), 4n contact points.
-std::string chainScene(int n, const std::string& law) {
-  std::ostringstream y;
-  y << "simulation: {duration: 1, time_step: 0.001, integrator: rk4, gravity: [0, 0, -9.81]}\n"
-       "bodies:\n  - {name: belt, kind: kinematic, surface_velocity: [1.5, 0, 0],\n"
-       "     geometry: [{name: surface, shape: halfspace}]}\n";
-  for (int i = 0; i < n; ++i)
-    y << "  - {name: b" << i << ", mass: 1, position: [" << 0.3 * i << ", 0, 0.0499],"
-      << " geometry: [{name: g" << i << ", shape: box, size: [0.2, 0.2, 0.1]}]}\n";
-  y << "joints:\n";
-  for (int i = 0; i < n; ++i)
-    y << "  - {name: j" << i << ", type: planar_translation, parent: world, child: b" << i
-      << ", anchor: [" << 0.3 * i << ", 0, 0.0499], axis: [0, 1, 0]}\n";
-  y << "springs:\n  - {name: s0, a: world, point_a: [-0.3, 0, 0.0499], b: b0,"
-       " point_b: [0, 0, 0.0499], stiffness: 300}\n";
-  for (int i = 1; i < n; ++i)
-    y << "  - {name: s" << i << ", a: b" << i - 1 << ", point_a: [" << 0.3 * (i - 1)
-      << ", 0, 0.0499], b: b" << i << ", point_b: [" << 0.3 * i
-      << ", 0, 0.0499], stiffness: 300}\n";
-  y << "friction_laws:\n  roh_yoo: {mu_s: 0.35, mu_k: 0.3, v_s: 0.01, a: 1.5, beta: 0.3333}\n"
-       "  lugre: {sigma0: 1.0e4, sigma1: 30, sigma2: 0, mu_c: 0.3, mu_s: 0.35, v_s: 0.01}\n"
-       "materials:\n  - {name: belt_box, normal: {law: linear, stiffness: 2.5e5, damping: 1.5e3},"
-       " friction: "
-    << law << "}\ncontacts:\n";
-  for (int i = 0; i < n; ++i) y << "  - {a: surface, b: g" << i << ", material: belt_box}\n";
-  return y.str();
-}
-
 // tribo modes on the chain (steady state included); the range argument is n, the law
 // roh_yoo (memoryless: 4n coordinates in A) or lugre (plus 12 bristle states per box).
 void BM_ModesChain(benchmark::State& st, const std::string& law) {
   const int n = static_cast<int>(st.range(0));
-  const auto scene = tribo::io::loadSceneFromString(chainScene(n, law), "chain.yaml");
+  const auto scene = tribo::io::loadSceneFromString(tribo::test::chainOnBelt(n, law), "chain.yaml");
   for (auto _ : st) {
     const auto r = tribo::study::analyzeModes(scene);
     benchmark::DoNotOptimize(r.leading().growth_rate);
   }
   st.counters["states"] = static_cast<double>(4 * n + (law == "lugre" ? 12 * n : 0));
+}
+
+// The chain (damped springs of 0.5 N s/m between the boxes, so that a few in-phase modes
+// grow rather than all of them at one tied rate): its steady state, coordinates and A as
+// analyzeModes makes them, once per n.
+struct ChainSystem {
+  tribo::io::Scene scene;  // the coordinates refer to its model
+  std::unique_ptr<tribo::study::ReducedCoordinates> coords;
+  Eigen::MatrixXd a;
+};
+
+const ChainSystem& chainSystem(int n) {
+  static std::map<int, ChainSystem> cache;
+  auto found = cache.find(n);
+  if (found != cache.end()) return found->second;
+  ChainSystem system;
+  system.scene =
+      tribo::io::loadSceneFromString(tribo::test::chainOnBelt(n, "roh_yoo", 0.5), "chain.yaml");
+  const tribo::io::Scene& scene = system.scene;
+  tribo::Dynamics dynamics(scene.model);
+  dynamics.setSteadyFriction(true);
+  const tribo::State steady = tribo::study::findSteadyState(dynamics).state;
+  dynamics.setSteadyFriction(false);
+  system.coords = std::make_unique<tribo::study::ReducedCoordinates>(*scene.model, steady);
+  const auto steps = tribo::study::chooseSteps(dynamics, steady);
+  system.a = tribo::study::firstOrderMatrix(
+      tribo::study::linearize(dynamics, *system.coords, steady, steps, true, 1e-4));
+  return cache.emplace(n, std::move(system)).first->second;
+}
+
+// Seconds per dense solve by n, left by the dense case for the sparse one's ratio.
+std::map<int, double>& denseSeconds() {
+  static std::map<int, double> seconds;
+  return seconds;
+}
+
+void BM_ModesSolver(benchmark::State& st, bool sparse) {
+  const int n = static_cast<int>(st.range(0));
+  const ChainSystem& system = chainSystem(n);
+  double total = 0.0;
+  for (auto _ : st) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<tribo::study::Mode> modes;
+    try {
+      modes = sparse ? tribo::study::sparseModesOf(system.a, *system.coords, 1e-6, {})
+                     : tribo::study::modesOf(system.a, *system.coords, 1e-6);
+    } catch (const std::exception& e) {
+      st.SkipWithError(e.what());
+      return;
+    }
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(modes.front().growth_rate);
+  }
+  const double each = total / static_cast<double>(st.iterations());
+  st.counters["states"] = static_cast<double>(system.a.rows());
+  if (!sparse) denseSeconds()[n] = each;
+  if (sparse && denseSeconds().count(n))
+    st.counters["dense_over_sparse"] = denseSeconds()[n] / each;
 }
 
 void BM_Baseline_BeltClosedForm(benchmark::State& st) {
@@ -161,5 +197,22 @@ BENCHMARK_CAPTURE(BM_ModesChain, lugre, std::string("lugre"))
     ->Arg(8)
     ->Arg(16)
     ->Arg(32)
+    ->Unit(benchmark::kMillisecond);
+// Boxes 25..500: 100..2000 states. Each dense case runs before its sparse one.
+BENCHMARK_CAPTURE(BM_ModesSolver, dense, false)
+    ->Name("BM_ModesSolver/dense")
+    ->Arg(25)
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(200)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModesSolver, sparse, true)
+    ->Name("BM_ModesSolver/sparse")
+    ->Arg(25)
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(200)
+    ->Arg(500)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Baseline_BeltClosedForm)->Unit(benchmark::kMicrosecond);

@@ -2,8 +2,11 @@
 // steady state, 2 bad scene, 1 usage), the files it writes (modes.json whole and parseable,
 // modes.csv one row per mode), and --boundary's boundary.json. The figures themselves are
 // checked at library level (tests/study/modes_test.cpp, mode_coupling_test.cpp).
+#include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "support/chain_on_belt.hpp"
 #include "support/cli_support.hpp"
 
 namespace tribo::test {
@@ -54,6 +57,44 @@ TEST_F(ModesCli, BoundaryWritesTheCriticalValue) {
   EXPECT_EQ(
       runTribo("modes " + kCoupling + " --out " + dir_.string() + " --boundary mu=0.1:0.3").status,
       2);
+}
+
+// --solver sparse and --solver dense on a chain of 10 boxes (40 states): the same leading mode
+// (the dense solver is the reference; 1e-8 relative: both solvers' backward errors are ~1e-13
+// of ||A|| ~ 1e6 and the leading pair is well separated), and the solver named in modes.json.
+TEST_F(ModesCli, SparseAndDenseSolversGiveTheSameLeadingMode) {
+  fs::create_directories(dir_);
+  const fs::path scene = dir_ / "chain.yaml";
+  std::ofstream(scene) << chainOnBelt(10, "roh_yoo", 0.5);
+  const Result dense =
+      runTribo("modes " + scene.string() + " --solver dense --out " + (dir_ / "dense").string());
+  const Result sparse = runTribo("modes " + scene.string() + " --solver sparse --modes 4 --out " +
+                                 (dir_ / "sparse").string());
+  EXPECT_EQ(dense.status, 8) << dense.output;  // the in-phase modes grow
+  EXPECT_EQ(sparse.status, 8) << sparse.output;
+  const auto d = nlohmann::json::parse(slurp(dir_ / "dense" / "modes.json"));
+  const auto s = nlohmann::json::parse(slurp(dir_ / "sparse" / "modes.json"));
+  EXPECT_EQ(d["eigensolver"]["method"], "dense");
+  EXPECT_EQ(s["eigensolver"]["method"], "sparse");
+  EXPECT_EQ(s["modes"].size(), 4u);
+  const double dr = d["leading"]["eigenvalue"][0].get<double>();
+  const double di = d["leading"]["eigenvalue"][1].get<double>();
+  const double sr = s["leading"]["eigenvalue"][0].get<double>();
+  const double si = s["leading"]["eigenvalue"][1].get<double>();
+  EXPECT_LE(std::hypot(dr - sr, di - si), 1e-8 * std::hypot(dr, di));
+}
+
+TEST_F(ModesCli, BadSolverAndZeroModesAreUsageErrors) {
+  const Result bad = runTribo("modes " + kBelt + " --solver fast --out " + dir_.string());
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.output.find("--solver: expected auto, dense or sparse"), std::string::npos)
+      << bad.output;
+  const Result zero = runTribo("modes " + kBelt + " --modes 0 --out " + dir_.string());
+  EXPECT_EQ(zero.status, 1);
+  EXPECT_NE(zero.output.find("--modes"), std::string::npos) << zero.output;
+  EXPECT_EQ(runTribo("modes " + kBelt + " --modes 2.5 --out " + dir_.string()).status, 1);
+  // The belt's 4 states are too few for the sparse solver: refused, not guessed.
+  EXPECT_EQ(runTribo("modes " + kBelt + " --solver sparse --out " + dir_.string()).status, 2);
 }
 
 }  // namespace
