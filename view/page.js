@@ -5,7 +5,8 @@
 // #tribo-status for tests: errors, bodies, time, frame, camera, each body's projected
 // screen position, frame times. URL hash parameters (docs/view.md): t, paused, speed,
 // camera=ex,ey,ez,tx,ty,tz[,fov], follow, trails, plot, forces, stickslip, test,
-// click=ID,...,scrub:FRAME (controls clicked in order, clickdelay ms apart).
+// click=ID,...,scrub:FRAME,wait (controls clicked in order, clickdelay ms apart), size=WxH,
+// bench=N.
 // Not here: geometry (scene.js), overlays (overlays.js), the plot (plot.js).
 (function () {
   var data = window.TRIBO_DATA;
@@ -58,10 +59,13 @@
   var built = TriboView.buildScene(data, extent, test);
   var renderer = new THREE.WebGLRenderer({ antialias: !test, preserveDrawingBuffer: true });
   renderer.setPixelRatio(test ? 1 : (window.devicePixelRatio || 1));
-  renderer.setSize(window.innerWidth, window.innerHeight);
+  // size=WxH fixes the canvas (tests: the same pixels in a screenshot as in the status).
+  var fixed = hash.size ? hash.size.split("x").map(Number) : null;
+  function width() { return fixed ? fixed[0] : window.innerWidth; }
+  function height() { return fixed ? fixed[1] : window.innerHeight; }
+  renderer.setSize(width(), height());
   document.getElementById("view").appendChild(renderer.domElement);
-  var fov = 45;
-  var camera = new THREE.PerspectiveCamera(fov, window.innerWidth / window.innerHeight, extent * 1e-3, extent * 1e3);
+  var camera = new THREE.PerspectiveCamera(45, width() / height(), extent * 1e-3, extent * 1e3);
 
   var view = {
     data: data, series: series, frames: frames, columnIndex: columnIndex, pos: pos,
@@ -137,7 +141,7 @@
     if (test || built.bodies.length <= 50 || renders % 30 === 0 || !state.playing) writeStatus();
   }
 
-  function seek(t) { state.t = Math.max(T[0], Math.min(T[frames - 1], t)); render(); }
+  function seek(t) { state.t = Math.max(T[0], Math.min(T[frames - 1], t)); reanchor(); render(); }
   function stepFrame(d) {
     state.playing = false;
     var k = locate(state.t)[0];
@@ -146,18 +150,22 @@
     seek(T[k]);
   }
 
+  // While playing, replay time runs with the clock from where play (or a speed change)
+  // anchored it, whatever the frame rate; pausing reads it once more.
+  var anchor = { t: state.t, clock: performance.now() };
+  function reanchor() { anchor = { t: state.t, clock: performance.now() }; }
+  function advance() {
+    if (!state.playing) return;
+    state.t = anchor.t + (performance.now() - anchor.clock) / 1000 * state.speed;
+    if (state.t >= T[frames - 1]) { state.t = T[frames - 1]; state.playing = false; }
+  }
   function tick(stamp) {
     if (lastStamp !== null) {
-      var dt = stamp - lastStamp;
-      frameTimes.push(dt);
+      frameTimes.push(stamp - lastStamp);
       if (frameTimes.length > 240) frameTimes.shift();
-      if (state.playing) {
-        state.t += dt / 1000 * state.speed;
-        if (state.t >= T[frames - 1]) { state.t = T[frames - 1]; state.playing = false; }
-      }
     }
     lastStamp = stamp;
-    if (state.playing) render();
+    if (state.playing) { advance(); render(); }
     requestAnimationFrame(tick);
   }
 
@@ -169,6 +177,19 @@
   }
 
   var actions = [];
+  var bench = null;
+  // bench=N: N frames across the run rendered back to back, each waited for (a one-pixel
+  // read makes the GPU finish), for the cost of a frame of this scene in this browser.
+  function runBench(n) {
+    var gl = renderer.getContext(), px = new Uint8Array(4), times = [];
+    for (var i = 0; i < n; ++i) {
+      var r0 = performance.now();
+      seek(T[0] + (T[frames - 1] - T[0]) * i / Math.max(n - 1, 1));
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+      times.push(performance.now() - r0);
+    }
+    bench = stats(times);
+  }
   function writeStatus() {
     var w = renderer.domElement.width, h = renderer.domElement.height;
     var screen = {}, colours = {};
@@ -185,7 +206,7 @@
       canvas: [w, h], window: [window.innerWidth, window.innerHeight],
       camera: { eye: camera.position.toArray(), target: orbit.target.toArray(), fov: camera.fov },
       screen: screen, colours: colours, actions: actions,
-      frame_ms: stats(frameTimes), render_ms: stats(renderTimes)
+      frame_ms: stats(frameTimes), render_ms: stats(renderTimes), bench: bench
     });
   }
 
@@ -193,9 +214,9 @@
   function byId(id) { return document.getElementById(id); }
   byId("play").addEventListener("click", function () {
     if (state.t >= T[frames - 1]) state.t = T[0];
-    state.playing = true; render();
+    state.playing = true; reanchor(); render();
   });
-  byId("pause").addEventListener("click", function () { state.playing = false; render(); });
+  byId("pause").addEventListener("click", function () { advance(); state.playing = false; render(); });
   byId("step").addEventListener("click", function () { stepFrame(1); });
   byId("back").addEventListener("click", function () { stepFrame(-1); });
   scrub.addEventListener("input", function () { state.playing = false; seek(T[+scrub.value]); });
@@ -204,7 +225,7 @@
     var o = document.createElement("option"); o.value = String(s); o.textContent = "x" + s; speed.appendChild(o);
   });
   speed.value = "1";
-  speed.addEventListener("change", function () { state.speed = +speed.value; render(); });
+  speed.addEventListener("change", function () { advance(); state.speed = +speed.value; reanchor(); render(); });
   var follow = byId("follow"), trails = byId("trails"), channels = byId("channels");
   built.bodies.forEach(function (b, i) {
     var o = document.createElement("option"); o.value = String(i); o.textContent = b.name; follow.appendChild(o);
@@ -229,8 +250,8 @@
     if (e.key === "ArrowLeft") stepFrame(-1);
   });
   window.addEventListener("resize", function () {
-    renderer.setSize(window.innerWidth, window.innerHeight);
-    camera.aspect = window.innerWidth / window.innerHeight;
+    renderer.setSize(width(), height());
+    camera.aspect = width() / height();
     camera.updateProjectionMatrix();
     render();
   });
@@ -261,15 +282,20 @@
   if ("forces" in hash) byId("forces").click();
   if ("stickslip" in hash) byId("stickslip").click();
   if (hash.t) state.t = Math.max(T[0], Math.min(T[frames - 1], +hash.t));
+  reanchor();
   render();
+  if (hash.bench) { state.playing = false; runBench(+hash.bench); }
   writeStatus();
 
-  // Scripted clicks for tests: click=play,pause,step,back,scrub:FRAME, clickdelay ms apart.
+  // Scripted clicks for tests: click=play,pause,step,back,scrub:FRAME,wait, clickdelay ms apart;
+  // each action logs the time, frame and playing state just after it.
   if (hash.click) {
     var delay = hash.clickdelay ? +hash.clickdelay : 300;
     hash.click.split(",").forEach(function (a, n) {
       setTimeout(function () {
-        if (a.indexOf("scrub:") === 0) {
+        if (a === "wait") {
+          // nothing: records the status a moment after the previous action
+        } else if (a.indexOf("scrub:") === 0) {
           scrub.value = a.slice(6);
           scrub.dispatchEvent(new Event("input"));
         } else {
