@@ -259,7 +259,7 @@
   // Title and notes.
   byId("title").textContent = meta.scene_path + (meta.status ? "  (" + meta.status + ")" : "");
   var notes = ["holds " + frames + " frames of " + meta.rows + " recorded rows" +
-               (meta.stride > 1 ? " (every " + meta.stride + "th; cap " + meta.frame_cap + ")" : "")];
+               (meta.stride > 1 ? " (one in " + meta.stride + "; cap " + meta.frame_cap + " frames)" : "")];
   if (!hasOrientation) notes.push("no orientation recorded: bodies keep their initial orientation " +
                                   "(add orientation to output.channels, or run with --view)");
   if (overlays.hasForces) notes.push("force arrows: magnitudes recorded; normal drawn along +z" +

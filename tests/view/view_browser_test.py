@@ -4,7 +4,7 @@ page is opened in headless Chromium (software WebGL), and its DOM status and scr
 checked against expectations computed here from trajectory.csv and the camera parameters.
 
     view_browser_test.py TRIBO SOURCE_DIR WORK_DIR CASE
-CASE: loads | position | controls | orientation_note. Exit 0 pass, 1 fail, 77 skipped (no
+CASE: loads | position | controls | orientation | orientation_note. Exit 0 pass, 1 fail, 77 skipped (no
 chromium). Not here: the page's own logic (view/*.js), the C++ generator's unit tests.
 """
 import csv
@@ -64,11 +64,11 @@ def browse(work, url, mode, width=900, height=700, budget=3000, out=None):
         fail("status is not JSON: " + text[:500])
 
 
-def make_run(tribo, source, work, sets):
+def make_run(tribo, source, work, sets, scene="scenes/belt.yaml"):
     out = os.path.join(work, "run")
     if os.path.exists(out):
         shutil.rmtree(out)
-    args = [tribo, "run", os.path.join(source, "scenes", "belt.yaml"), "--out", out, "--quiet"]
+    args = [tribo, "run", os.path.join(source, scene), "--out", out, "--quiet"]
     for s in sets:
         args += ["--set", s]
     result = subprocess.run(args + ["--view"], capture_output=True, text=True, timeout=120)
@@ -203,6 +203,63 @@ def case_controls(tribo, source, work):
           "after scrubbing the replay stays where it was put")
 
 
+def rotate(q, v):
+    """v rotated by the unit quaternion q = (w, x, y, z)."""
+    w, x, y, z = q
+    r = [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+    return [sum(r[i][j] * v[j] for j in range(3)) for i in range(3)]
+
+
+def long_axis_angle(png, colour, width, height, tolerance=40):
+    """Angle [deg, 0..180) of the principal axis of the pixels of one colour (y down)."""
+    from PIL import Image
+    image = Image.open(png).convert("RGB")
+    target = tuple(int(colour[i:i + 2], 16) for i in (1, 3, 5))
+    pixels = image.load()
+    points = [(x + 0.5, y + 0.5) for y in range(height) for x in range(width)
+              if sum(abs(pixels[x, y][i] - target[i]) for i in range(3)) <= tolerance]
+    if len(points) < 100:
+        fail("the bar covers only %d pixels" % len(points))
+    mx = sum(p[0] for p in points) / len(points)
+    my = sum(p[1] for p in points) / len(points)
+    sxx = sum((p[0] - mx) ** 2 for p in points)
+    syy = sum((p[1] - my) ** 2 for p in points)
+    sxy = sum((p[0] - mx) * (p[1] - my) for p in points)
+    return math.degrees(0.5 * math.atan2(2 * sxy, sxx - syy)) % 180.0
+
+
+def case_orientation(tribo, source, work):
+    run = make_run(tribo, source, work, [], scene="tests/view/spinning_bar.yaml")
+    traj = read_csv(os.path.join(run, "trajectory.csv"))
+    width, height = 500, 500
+    eye, target, fov = [0.0, -0.05, 1.2], [0.0, 0.0, 0.0], 30.0
+    camera = ",".join(str(v) for v in eye + target + [fov])
+    angles = []
+    for t in (0.3, 1.2):
+        url = "file://%s/view.html#test&paused&t=%g&size=%dx%d&camera=%s" % (
+            run, t, width, height, camera)
+        status = browse(work, url, "dom", budget=500)
+        check(status["errors"] == [] and status["orientation"], "no errors, orientations held")
+        png = os.path.join(work, "bar_t%g.png" % t)
+        browse(work, url, "shot", budget=500, out=png)
+        q = [interpolate(traj["t"], traj["bar." + a], t) for a in ("qw", "qx", "qy", "qz")]
+        n = math.sqrt(sum(c * c for c in q))
+        q = [c / n for c in q]
+        centre = [interpolate(traj["t"], traj["bar." + a], t) for a in "xyz"]
+        ends = [project([centre[i] + s * rotate(q, [0.2, 0, 0])[i] for i in range(3)],
+                        eye, target, fov, width, height) for s in (-1, 1)]
+        expected = math.degrees(math.atan2(ends[1][1] - ends[0][1], ends[1][0] - ends[0][0])) % 180.0
+        drawn = long_axis_angle(png, status["colours"]["bar"], width, height)
+        error = abs((drawn - expected + 90.0) % 180.0 - 90.0)
+        angles.append(drawn)
+        check(error < 1.5, "t=%g: the bar's long axis drawn at %.2f deg, the recorded quaternion "
+              "puts it at %.2f deg: %.2f deg off (tolerance 1.5 deg)" % (t, drawn, expected, error))
+    turned = abs((angles[1] - angles[0] + 90.0) % 180.0 - 90.0)
+    check(turned > 30, "the bar turned %.1f deg on screen between the two times" % turned)
+
+
 def case_orientation_note(tribo, source, work):
     out = os.path.join(work, "run")
     if os.path.exists(out):
@@ -234,7 +291,7 @@ def main():
     work = os.path.abspath(work)
     os.makedirs(work, exist_ok=True)
     {"loads": case_loads, "position": case_position, "controls": case_controls,
-     "orientation_note": case_orientation_note}[case](os.path.abspath(tribo), source, work)
+     "orientation_note": case_orientation_note, "orientation": case_orientation}[case](os.path.abspath(tribo), source, work)
     print("PASS")
 
 
