@@ -291,8 +291,13 @@
   // each action logs the time, frame and playing state just after it.
   if (hash.click) {
     var delay = hash.clickdelay ? +hash.clickdelay : 300;
-    hash.click.split(",").forEach(function (a, n) {
+    var script = hash.click.split(",");
+    // Each action is timed from the one before, so that the delays hold however late a
+    // timer fires.
+    var next = function (n) {
+      if (n >= script.length) return;
       setTimeout(function () {
+        var a = script[n];
         if (a === "wait") {
           // nothing: records the status a moment after the previous action
         } else if (a.indexOf("scrub:") === 0) {
@@ -301,10 +306,13 @@
         } else {
           byId(a).click();
         }
-        actions.push({ action: a, time: state.t, frame: view.frame, playing: state.playing });
+        actions.push({ action: a, time: state.t, frame: view.frame, playing: state.playing,
+                       clock: +performance.now().toFixed(1) });
         writeStatus();
-      }, delay * (n + 1));
-    });
+        next(n + 1);
+      }, delay);
+    };
+    next(0);
   }
   requestAnimationFrame(tick);
 })();

@@ -130,7 +130,7 @@ def centroid(png, colour, width, height, tolerance=40):
 
 def case_loads(tribo, source, work):
     run = make_run(tribo, source, work, ["duration=2"])
-    status = browse(work, "file://" + run + "/view.html#t=0.5", "dom", budget=1500)
+    status = browse(work, "file://" + run + "/view.html#t=0.5", "dom", budget=800)
     check(status.get("ready") is True, "the page ran to the end of its script")
     check(status["errors"] == [], "no JavaScript or console errors: %s" % status["errors"])
     check(status["bodies"] == 2 and status["names"] == ["belt", "box"],
@@ -139,8 +139,7 @@ def case_loads(tribo, source, work):
     check(status["frames"] == rows and status["stride"] == 1,
           "all %d rows held (%d frames)" % (rows, status["frames"]))
     check(status["orientation"] is True, "tribo run --view recorded orientations")
-    check(status["playing"] is True and status["time"] > 0.5,
-          "plays from t=0.5 on its own (t=%.3f)" % status["time"])
+    check(status["time"] > 0.5, "plays from t=0.5 on its own (t=%.3f)" % status["time"])
 
 
 def case_position(tribo, source, work):
@@ -184,12 +183,16 @@ def case_controls(tribo, source, work):
            "click=wait,play,pause,wait,step,step,back,scrub:1500,wait" % run)
     status = browse(work, url, "dom", budget=5000)
     check(status["errors"] == [], "no errors: %s" % status["errors"])
+    print("actions: %s" % json.dumps(status["actions"]))
     a = {i: x for i, x in enumerate(status["actions"])}
     check(len(a) == 9, "all nine scripted actions ran (%d)" % len(a))
     check(a[0]["time"] == 0.5 and not a[0]["playing"], "paused: t stays at 0.5 (%.4f)" % a[0]["time"])
     check(a[1]["playing"], "play starts the replay")
-    check(0.1 < a[2]["time"] - a[1]["time"] < 0.8 and not a[2]["playing"],
-          "played %.3f s of 0.4 s between the clicks, then paused" % (a[2]["time"] - a[1]["time"]))
+    # Replay time runs with the page's clock at speed 1: what it played between the two
+    # clicks is the clock time between them (each action logs performance.now()).
+    played, clock = a[2]["time"] - a[1]["time"], (a[2]["clock"] - a[1]["clock"]) / 1000.0
+    check(clock >= 0.39 and abs(played - clock) < 0.01 and not a[2]["playing"],
+          "played %.4f s in the %.4f s between the clicks, then paused" % (played, clock))
     check(a[3]["time"] == a[2]["time"], "paused: the time does not move (%.4f, %.4f)" %
           (a[2]["time"], a[3]["time"]))
     k = a[3]["frame"]
