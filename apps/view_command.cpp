@@ -6,12 +6,14 @@
 
 #include "io/scene_parameters.hpp"
 #include "study/view_page.hpp"
+#include "study/view_sweep.hpp"
 
 namespace tribo::app {
 namespace {
 
 constexpr const char* kUsage =
     "usage: tribo view RUN_DIR [--frames N] [--three PATH]\n"
+    "       tribo view SWEEP_DIR (a folder of tribo sweep: sweep.json, results.csv)\n"
     "  writes RUN_DIR/view.html: the run replayed in a browser (one file, no server, no\n"
     "  network): the scene's bodies and geometry, the recorded motion, play/pause/speed/\n"
     "  scrub/frame steps, orbit camera (drag: turn, right drag: pan, wheel: zoom), follow a\n"
@@ -23,6 +25,8 @@ constexpr const char* kUsage =
     "            /usr/share/javascript/three/three.min.js)\n"
     "  tribo run SCENE --out DIR --view  does the same after the run and records\n"
     "  orientations for it\n"
+    "  A sweep's folder gets a heat map of a chosen result over two swept parameters\n"
+    "  (a line over one); points kept with --keep-trajectories link to their replay.\n"
     "exit status: 0 written, 1 usage, 2 run, scene or three.js unreadable, 4 write error\n";
 
 int usage(const std::string& problem) {
@@ -79,6 +83,21 @@ int viewCommand(const std::vector<std::string>& args) {
     }
   }
   if (run_dir.empty()) return usage("no run folder given");
+  if (study::isSweepDir(run_dir)) {
+    study::ViewOptions options;
+    options.frame_cap = frames;
+    options.three_js = three_js;
+    try {
+      const study::SweepViewInfo info = study::writeSweepView(run_dir, options);
+      std::printf("view             %s (%.3g MB, %zu points, %zu with a replay page)\n",
+                  info.file.string().c_str(), static_cast<double>(info.bytes) / 1e6, info.points,
+                  info.linked);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tribo view: %s\n", e.what());
+      return 2;
+    }
+    return 0;
+  }
   return writeView(run_dir, frames, three_js);
 }
 

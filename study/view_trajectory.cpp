@@ -9,9 +9,7 @@
 
 namespace tribo::study {
 
-namespace {
-
-std::vector<std::string> splitFields(const std::string& line) {
+std::vector<std::string> csvFieldsOf(const std::string& line) {
   std::vector<std::string> fields;
   std::string field;
   bool quoted = false;
@@ -28,6 +26,8 @@ std::vector<std::string> splitFields(const std::string& line) {
   fields.push_back(field);
   return fields;
 }
+
+namespace {
 
 double parseNumber(const std::string& text) {
   if (text.empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -50,7 +50,7 @@ ViewTrajectory readViewTrajectory(const std::filesystem::path& csv, std::size_t 
   ViewTrajectory v;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error("'" + csv.string() + "' is empty");
-  v.columns = splitFields(line);
+  v.columns = csvFieldsOf(line);
   if (v.columns.empty() || v.columns[0] != "t")
     throw std::runtime_error("'" + csv.string() + "' has no column t first");
   while (std::getline(in, line))
@@ -67,7 +67,7 @@ ViewTrajectory readViewTrajectory(const std::filesystem::path& csv, std::size_t 
     if (line.empty()) continue;
     const bool last = row + 1 == v.rows;
     if (row % v.stride == 0 || last) {
-      const std::vector<std::string> fields = splitFields(line);
+      const std::vector<std::string> fields = csvFieldsOf(line);
       if (fields.size() != v.columns.size())
         throw std::runtime_error("'" + csv.string() + "' row " + std::to_string(row + 1) + " has " +
                                  std::to_string(fields.size()) + " fields, the header " +

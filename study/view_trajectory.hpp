@@ -21,6 +21,9 @@ struct ViewTrajectory {
   int column(const std::string& name) const;
 };
 
+// The fields of one CSV line (RFC 4180 quotes; the result files' own form).
+std::vector<std::string> csvFieldsOf(const std::string& line);
+
 // Throws std::runtime_error naming the file when it cannot be read, has no "t" column first
 // or a row of the wrong width.
 ViewTrajectory readViewTrajectory(const std::filesystem::path& csv, std::size_t frame_cap,

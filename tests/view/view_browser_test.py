@@ -4,7 +4,7 @@ page is opened in headless Chromium (software WebGL), and its DOM status and scr
 checked against expectations computed here from trajectory.csv and the camera parameters.
 
     view_browser_test.py TRIBO SOURCE_DIR WORK_DIR CASE
-CASE: loads | position | controls | orientation | orientation_note. Exit 0 pass, 1 fail, 77 skipped (no
+CASE: loads | position | controls | orientation | orientation_note | sweep. Exit 0 pass, 1 fail, 77 skipped (no
 chromium). Not here: the page's own logic (view/*.js), the C++ generator's unit tests.
 """
 import csv
@@ -263,6 +263,47 @@ def case_orientation(tribo, source, work):
     check(turned > 30, "the bar turned %.1f deg on screen between the two times" % turned)
 
 
+def case_sweep(tribo, source, work):
+    out = os.path.join(work, "sweep")
+    if os.path.exists(out):
+        shutil.rmtree(out)
+    result = subprocess.run([tribo, "sweep", os.path.join(source, "scenes", "belt.yaml"), "--out", out,
+                             "--grid", "mu_k=0.2:0.3:3", "--grid", "v_b=1:2:2", "--set", "duration=3",
+                             "--keep-trajectories", "--jobs", "1"], capture_output=True, text=True,
+                            timeout=120)
+    check(result.returncode == 0, "a 3 x 2 sweep keeping its trajectories")
+    result = subprocess.run([tribo, "view", out], capture_output=True, text=True, timeout=120)
+    check(result.returncode == 0 and "6 points, 6 with a replay page" in result.stdout,
+          "tribo view SWEEP_DIR: " + result.stdout.strip() + result.stderr.strip())
+    for p in range(6):
+        check(os.path.exists(os.path.join(out, "points", str(p), "view.html")), "point %d has its page" % p)
+    url = "file://" + out + "/view.html#metric=amplitude_pp"
+    status = browse(work, url, "dom", width=1000, height=800, budget=500)
+    check(status["errors"] == [] and status["points"] == 6 and status["linked"] == 6,
+          "the sweep page loads with 6 points, all linked")
+    with open(os.path.join(out, "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    expected = {r["point"]: float(r["amplitude_pp"]) for r in rows}
+    cells = status["cells"]
+    check(sorted(c["point"] for c in cells) == sorted(expected),
+          "one cell per point of results.csv")
+    for c in cells:
+        check(abs(c["value"] - expected[c["point"]]) <= 1e-9 * abs(expected[c["point"]]),
+              "point %s shows amplitude_pp %.6g" % (c["point"], c["value"]))
+    png = os.path.join(work, "sweep.png")
+    browse(work, url, "shot", width=1000, height=800, budget=500, out=png)
+    from PIL import Image
+    image = Image.open(png).convert("RGB")
+    ox, oy = status["offset"]
+    def brightness(c):
+        p = image.getpixel((int(ox + c["x"] + 20), int(oy + c["y"])))  # beside the link dot
+        return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]
+    by_value = [c["point"] for c in sorted(cells, key=lambda c: c["value"])]
+    by_brightness = [c["point"] for c in sorted(cells, key=brightness)]
+    check(by_value == by_brightness, "cells brighter where amplitude_pp is larger: %s, %s" %
+          (by_value, by_brightness))
+
+
 def case_orientation_note(tribo, source, work):
     out = os.path.join(work, "run")
     if os.path.exists(out):
@@ -294,7 +335,7 @@ def main():
     work = os.path.abspath(work)
     os.makedirs(work, exist_ok=True)
     {"loads": case_loads, "position": case_position, "controls": case_controls,
-     "orientation_note": case_orientation_note, "orientation": case_orientation}[case](os.path.abspath(tribo), source, work)
+     "orientation_note": case_orientation_note, "orientation": case_orientation, "sweep": case_sweep}[case](os.path.abspath(tribo), source, work)
     print("PASS")
 
 
