@@ -43,7 +43,7 @@ TriboView.Overlays = function (view) {
     return m;
   }
 
-  // Arrows for bodies that recorded forces; the largest is 0.15 of the scene's size.
+  // Arrows for bodies that recorded forces; the largest is 0.3 of the scene's size.
   var forceBodies = [];
   var movingSurface = [0, 0, 0];
   view.data.scene.bodies.forEach(function (b) {
@@ -81,7 +81,7 @@ TriboView.Overlays = function (view) {
 
   this.update = function (frame, stickSlip) {
     Object.keys(trails).forEach(function (k) { trails[k].geometry.setDrawRange(0, frame + 1); });
-    var scale = 0.15 * view.extent / forceMax;
+    var scale = 0.3 * view.extent / forceMax;
     arrows.forEach(function (a) {
       var f = a.f, body = view.bodies[f.i].group;
       var value = view.series[a.kind === "normal" ? f.normal : f.friction][frame] || 0;
