@@ -24,6 +24,7 @@
 #include "apps/modes_command.hpp"
 #include "apps/sweep_command.hpp"
 #include "apps/tradeoff_command.hpp"
+#include "apps/view_command.hpp"
 #include "io/scene_loader.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
@@ -34,12 +35,13 @@
 #include "study/result_writer.hpp"
 #include "study/run_progress.hpp"
 #include "study/scene_run.hpp"
+#include "study/view_page.hpp"
 
 namespace {
 
 constexpr const char* kUsage =
     "usage: tribo run SCENE.yaml --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
-    "                [--quiet | --progress] [--profile]\n"
+    "                [--quiet | --progress] [--profile] [--view]\n"
     "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "                [--strict] [--verbose]\n"
     "       tribo info FILE.urdf [--package-path DIR ...] [--strict] [--verbose]\n"
@@ -49,6 +51,8 @@ constexpr const char* kUsage =
     "see tribo tradeoff --help)\n"
     "       tribo modes SCENE.yaml --out DIR (stability of steady sliding; see tribo modes "
     "--help)\n"
+    "       tribo view RUN_DIR (RUN_DIR/view.html: replay the run in a browser; see tribo view "
+    "--help)\n"
     "\n"
     "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
     "  --out   output folder (created if missing)\n"
@@ -56,6 +60,7 @@ constexpr const char* kUsage =
     "  --progress  show the progress line of a long run even when stderr is not a terminal\n"
     "  --quiet     never show it\n"
     "  --profile   time each stage of the step and print the share of each\n"
+    "  --view      also record orientations and write DIR/view.html (tribo view)\n"
     "  info    print a URDF robot's tree, masses, joint types, model checks and what run "
     "would do\n"
     "  --strict   refuse URDF that urdfdom refuses (a joint without <limit>, an undeclared "
@@ -172,7 +177,7 @@ int run(const std::vector<std::string>& args) {
   std::string out_dir;
   std::vector<std::string> overrides;
   std::vector<std::string> package_paths;
-  bool quiet = false, progress = false, profile = false;
+  bool quiet = false, progress = false, profile = false, view = false;
   tribo::io::UrdfReadOptions read;
   bool verbose = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -185,6 +190,8 @@ int run(const std::vector<std::string>& args) {
       progress = true;
     } else if (a == "--profile") {
       profile = true;
+    } else if (a == "--view") {
+      view = true;
     } else if (a == "--out" || a == "--set" || a == "--package-path") {
       if (i + 1 >= args.size()) return usage(a + " needs a value");
       if (a == "--out")
@@ -219,6 +226,9 @@ int run(const std::vector<std::string>& args) {
     return 2;
   }
   tribo::app::printGrouped(stderr, "note", scene.notes, verbose);  // before the run: why
+  // The replay page needs orientations to turn the bodies.
+  if (view && !tribo::io::hasGroup(scene.output.channels, "orientation"))
+    scene.output.channels.push_back("orientation");
   namespace study = tribo::study;
   const std::filesystem::path out(out_dir);
   try {
@@ -273,6 +283,11 @@ int run(const std::vector<std::string>& args) {
   }
   if (profile) printProfile(result.stats);
   printSummary(scene, result, out_dir);
+  if (view) {
+    lock.reset();
+    const int status = tribo::app::writeView(out, tribo::study::ViewOptions{}.frame_cap, "");
+    if (status != 0 && result.complete) return status;
+  }
   if (result.interrupted) {
     std::fprintf(stderr, "tribo: %s; results up to there written\n", result.message.c_str());
     return 5;
@@ -298,5 +313,6 @@ int main(int argc, char** argv) {
   if (args[0] == "sweep") return tribo::app::sweepCommand({args.begin() + 1, args.end()});
   if (args[0] == "tradeoff") return tribo::app::tradeoffCommand({args.begin() + 1, args.end()});
   if (args[0] == "modes") return tribo::app::modesCommand({args.begin() + 1, args.end()});
+  if (args[0] == "view") return tribo::app::viewCommand({args.begin() + 1, args.end()});
   return usage("unknown command '" + args[0] + "'");
 }

@@ -1,0 +1,19 @@
+// `tribo view RUN_DIR [--frames N] [--three PATH]`: writes RUN_DIR/view.html, a replay of
+// the run that opens in a browser without a server (study/view_page.hpp; docs/view.md).
+// Also used by `tribo run ... --view` after the run. Exit status: 0 written, 1 usage,
+// 2 the run folder, its scene or three.js cannot be read, 4 the page cannot be written.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tribo::app {
+
+int viewCommand(const std::vector<std::string>& args);
+
+// Writes the page of a finished run and prints where; returns the exit status above.
+int writeView(const std::filesystem::path& run_dir, std::size_t frame_cap,
+              const std::string& three_js);
+
+}  // namespace tribo::app

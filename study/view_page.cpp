@@ -1,0 +1,140 @@
+#include "study/view_page.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "io/scene_loader.hpp"
+#include "study/csv_text.hpp"
+#include "study/file_commit.hpp"
+#include "study/view_assets.hpp"
+#include "study/view_scene.hpp"
+#include "study/view_trajectory.hpp"
+
+namespace tribo::study {
+
+namespace {
+
+std::string readText(const std::filesystem::path& file, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + what + " '" + file.string() + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Text placed inside <script> must not close it.
+std::string scriptSafe(std::string text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    out.push_back(text[i]);
+    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') out.push_back('\\');
+  }
+  return out;
+}
+
+void appendSeries(std::string& out, const std::vector<double>& values) {
+  out.push_back('[');
+  char buf[40];
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i) out.push_back(',');
+    const double v = values[i];
+    if (!std::isfinite(v)) {
+      out += "null";
+      continue;
+    }
+    char* end = csvNumberTo(buf, buf + sizeof buf, v, 7);
+    out.append(buf, end);
+  }
+  out.push_back(']');
+}
+
+void replaceOnce(std::string& page, const std::string& marker, const std::string& text) {
+  const std::size_t at = page.find(marker);
+  if (at == std::string::npos) throw std::logic_error("view page template lacks " + marker);
+  page.replace(at, marker.size(), text);
+}
+
+}  // namespace
+
+std::filesystem::path threeJsPath(const ViewOptions& options) {
+  if (!options.three_js.empty()) return options.three_js;
+  if (const char* env = std::getenv("TRIBO_THREE_JS"); env && *env) return env;
+  return "/usr/share/javascript/three/three.min.js";
+}
+
+ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOptions& options) {
+  const std::filesystem::path three_path = threeJsPath(options);
+  if (!std::filesystem::exists(three_path))
+    throw std::runtime_error("three.js not found at '" + three_path.string() +
+                             "': install Debian's libjs-three (scripts/setup.sh) or set "
+                             "TRIBO_THREE_JS");
+  const nlohmann::json summary = [&] {
+    try {
+      return nlohmann::json::parse(readText(run_dir / "summary.json", "run summary"));
+    } catch (const nlohmann::json::exception& e) {
+      throw std::runtime_error("'" + (run_dir / "summary.json").string() + "': " + e.what());
+    }
+  }();
+  const std::string scene_path = summary.value("scene", "");
+  std::vector<std::string> overrides;
+  if (summary.contains("parameters") && summary["parameters"].is_object())
+    for (const auto& [name, value] : summary["parameters"].items())
+      overrides.push_back(name + "=" +
+                          (value.is_string() ? value.get<std::string>() : value.dump()));
+  io::Scene scene;
+  try {
+    scene = io::loadScene(scene_path, overrides);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot reload the run's scene '" + scene_path + "' (" + e.what() +
+                             "); run tribo view from the folder the run was started in");
+  }
+  const ViewTrajectory traj =
+      readViewTrajectory(run_dir / "trajectory.csv", options.frame_cap, options.value_budget);
+
+  ViewPageInfo info;
+  info.file = run_dir / "view.html";
+  info.frames = traj.frames();
+  info.rows = traj.rows;
+  info.orientation = false;
+  for (const auto& c : traj.columns)
+    if (c.size() > 3 && c.compare(c.size() - 3, 3, ".qw") == 0) info.orientation = true;
+
+  nlohmann::json meta = {
+      {"kind", "run"},
+      {"scene_path", scene_path},
+      {"run_dir", run_dir.string()},
+      {"status", summary.value("status", "")},
+      {"parameters", summary.value("parameters", nlohmann::json::object())},
+      {"stick_speed", scene.output.summary.stick_speed},
+      {"observed", summary.contains("observed") ? summary["observed"].value("channel", "") : ""},
+      {"rows", traj.rows},
+      {"stride", traj.stride},
+      {"frame_cap", options.frame_cap},
+      {"columns", traj.columns}};
+  std::string data =
+      "{\"meta\":" + meta.dump() + ",\"scene\":" + viewSceneJson(*scene.model) + ",\"series\":[";
+  for (std::size_t c = 0; c < traj.values.size(); ++c) {
+    if (c) data += ",\n";
+    appendSeries(data, traj.values[c]);
+  }
+  data += "]}";
+
+  std::string page(view_assets::kPageHtml);
+  replaceOnce(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss));
+  replaceOnce(page, "/*TRIBO_THREE*/", scriptSafe(readText(three_path, "three.js")));
+  replaceOnce(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data) + ";");
+  std::string js;
+  for (std::string_view part : view_assets::kScripts) js += std::string(part) + "\n";
+  replaceOnce(page, "/*TRIBO_JS*/", scriptSafe(js));
+  writeFileWhole(info.file, page);
+  info.bytes = page.size();
+  return info;
+}
+
+}  // namespace tribo::study

@@ -1,0 +1,99 @@
+#include "study/view_sweep.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "study/file_commit.hpp"
+#include "study/view_assets.hpp"
+#include "study/view_trajectory.hpp"
+
+namespace tribo::study {
+
+namespace {
+
+std::string readText(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read '" + file.string() + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void replaceOnce(std::string& page, const std::string& marker, const std::string& text) {
+  const std::size_t at = page.find(marker);
+  if (at == std::string::npos) throw std::logic_error("sweep page template lacks " + marker);
+  page.replace(at, marker.size(), text);
+}
+
+std::string scriptSafe(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    out.push_back(text[i]);
+    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') out.push_back('\\');
+  }
+  return out;
+}
+
+}  // namespace
+
+bool isSweepDir(const std::filesystem::path& dir) {
+  return std::filesystem::exists(dir / "sweep.json");
+}
+
+SweepViewInfo writeSweepView(const std::filesystem::path& dir, const ViewOptions& options) {
+  nlohmann::json manifest;
+  try {
+    manifest = nlohmann::json::parse(readText(dir / "sweep.json"));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error("'" + (dir / "sweep.json").string() + "': " + e.what());
+  }
+  std::ifstream in(dir / "results.csv");
+  if (!in) throw std::runtime_error("cannot read '" + (dir / "results.csv").string() + "'");
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> columns = csvFieldsOf(line);
+  nlohmann::json rows = nlohmann::json::array();
+  nlohmann::json linked = nlohmann::json::object();
+  SweepViewInfo info;
+  std::size_t kept = 0;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const std::vector<std::string> fields = csvFieldsOf(line);
+    rows.push_back(fields);
+    const std::filesystem::path point = dir / "points" / fields.front();
+    if (!std::filesystem::exists(point / "summary.json")) continue;
+    if (++kept > kSweepPointViewCap) continue;
+    try {
+      writeRunView(point, options);
+      linked[fields.front()] = "points/" + fields.front() + "/view.html";
+      ++info.linked;
+    } catch (const std::exception&) {
+      // not linked; the page says which points kept a trajectory without a page
+    }
+  }
+  info.points = rows.size();
+  const nlohmann::json data = {{"meta",
+                                {{"kind", "sweep"},
+                                 {"scene", manifest.value("scene", "")},
+                                 {"set", manifest.value("set", nlohmann::json::array())},
+                                 {"axes", manifest.value("axes", nlohmann::json::array())},
+                                 {"columns", columns},
+                                 {"kept", kept},
+                                 {"point_view_cap", kSweepPointViewCap}}},
+                               {"rows", rows},
+                               {"linked", linked}};
+  std::string page(view_assets::kSweepHtml);
+  replaceOnce(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss));
+  replaceOnce(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data.dump()) + ";");
+  replaceOnce(page, "/*TRIBO_JS*/", scriptSafe(std::string(view_assets::kSweepScript)));
+  info.file = dir / "view.html";
+  writeFileWhole(info.file, page);
+  info.bytes = page.size();
+  return info;
+}
+
+}  // namespace tribo::study

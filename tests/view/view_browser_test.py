@@ -1,0 +1,343 @@
+#!/usr/bin/python3
+"""Browser tests of the replay page (tribo view): a run is made with `tribo run --view`, the
+page is opened in headless Chromium (software WebGL), and its DOM status and screenshots are
+checked against expectations computed here from trajectory.csv and the camera parameters.
+
+    view_browser_test.py TRIBO SOURCE_DIR WORK_DIR CASE
+CASE: loads | position | controls | orientation | orientation_note | sweep. Exit 0 pass, 1 fail, 77 skipped (no
+chromium). Not here: the page's own logic (view/*.js), the C++ generator's unit tests.
+"""
+import csv
+import html
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
+                  "--hide-scrollbars", "--no-first-run", "--mute-audio"]
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def check(condition, message):
+    if not condition:
+        fail(message)
+    print("ok: " + message)
+
+
+def chromium():
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def browse(work, url, mode, width=900, height=700, budget=3000, out=None):
+    """Runs headless Chromium on url; mode 'dom' returns the page's status JSON, 'shot'
+    writes a screenshot to out."""
+    profile = os.path.join(work, "profile-" + mode)
+    args = [chromium()] + CHROMIUM_FLAGS + ["--user-data-dir=" + profile,
+                                            "--window-size=%d,%d" % (width, height),
+                                            "--virtual-time-budget=%d" % budget]
+    args += ["--dump-dom"] if mode == "dom" else ["--screenshot=" + out]
+    result = subprocess.run(args + [url], capture_output=True, text=True, timeout=90)
+    if mode == "shot":
+        if not os.path.exists(out):
+            fail("no screenshot written: " + result.stderr[-2000:])
+        return None
+    dom = result.stdout
+    start = dom.find('<pre id="tribo-status">')
+    if start < 0:
+        fail("no status element in the DOM: " + dom[:500] + result.stderr[-1000:])
+    start += len('<pre id="tribo-status">')
+    text = html.unescape(dom[start:dom.find("</pre>", start)])
+    try:
+        return json.loads(text)
+    except ValueError:
+        fail("status is not JSON: " + text[:500])
+
+
+def make_run(tribo, source, work, sets, scene="scenes/belt.yaml"):
+    out = os.path.join(work, "run")
+    if os.path.exists(out):
+        shutil.rmtree(out)
+    args = [tribo, "run", os.path.join(source, scene), "--out", out, "--quiet"]
+    for s in sets:
+        args += ["--set", s]
+    result = subprocess.run(args + ["--view"], capture_output=True, text=True, timeout=120)
+    if result.returncode != 0:
+        fail("tribo run --view failed: " + result.stdout + result.stderr)
+    return out
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    header = rows[0]
+    return {name: [float(r[i]) for r in rows[1:]] for i, name in enumerate(header)}
+
+
+def interpolate(times, values, t):
+    for k in range(len(times) - 1):
+        if times[k] <= t <= times[k + 1]:
+            u = (t - times[k]) / (times[k + 1] - times[k])
+            return values[k] + u * (values[k + 1] - values[k])
+    return values[-1] if t > times[-1] else values[0]
+
+
+def project(point, eye, target, fov_deg, width, height):
+    """Pixel of a world point through a perspective camera (z up), computed here."""
+    def sub(a, b): return [a[i] - b[i] for i in range(3)]
+    def dot(a, b): return sum(a[i] * b[i] for i in range(3))
+    def cross(a, b): return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                             a[0] * b[1] - a[1] * b[0]]
+    def unit(a):
+        n = math.sqrt(dot(a, a))
+        return [x / n for x in a]
+    forward = unit(sub(target, eye))
+    right = unit(cross(forward, [0.0, 0.0, 1.0]))
+    up = cross(right, forward)
+    d = sub(point, eye)
+    depth = dot(d, forward)
+    tan_half = math.tan(math.radians(fov_deg) / 2.0)
+    ndc_x = dot(d, right) / (depth * tan_half * width / height)
+    ndc_y = dot(d, up) / (depth * tan_half)
+    return ((ndc_x + 1.0) / 2.0 * width, (1.0 - ndc_y) / 2.0 * height)
+
+
+def centroid(png, colour, width, height, tolerance=40):
+    from PIL import Image
+    image = Image.open(png).convert("RGB")
+    target = tuple(int(colour[i:i + 2], 16) for i in (1, 3, 5))
+    pixels = image.load()
+    sx = sy = n = 0
+    for y in range(min(height, image.size[1])):
+        for x in range(min(width, image.size[0])):
+            p = pixels[x, y]
+            if abs(p[0] - target[0]) + abs(p[1] - target[1]) + abs(p[2] - target[2]) <= tolerance:
+                sx += x + 0.5
+                sy += y + 0.5
+                n += 1
+    return (sx / n, sy / n, n) if n else (None, None, 0)
+
+
+def case_loads(tribo, source, work):
+    run = make_run(tribo, source, work, ["duration=2"])
+    status = browse(work, "file://" + run + "/view.html#t=0.5", "dom", budget=800)
+    check(status.get("ready") is True, "the page ran to the end of its script")
+    check(status["errors"] == [], "no JavaScript or console errors: %s" % status["errors"])
+    check(status["bodies"] == 2 and status["names"] == ["belt", "box"],
+          "the belt scene's two bodies, belt and box: %s" % status["names"])
+    rows = len(read_csv(os.path.join(run, "trajectory.csv"))["t"])
+    check(status["frames"] == rows and status["stride"] == 1,
+          "all %d rows held (%d frames)" % (rows, status["frames"]))
+    check(status["orientation"] is True, "tribo run --view recorded orientations")
+    check(status["time"] > 0.5, "plays from t=0.5 on its own (t=%.3f)" % status["time"])
+
+
+def case_position(tribo, source, work):
+    run = make_run(tribo, source, work, ["duration=2"])
+    traj = read_csv(os.path.join(run, "trajectory.csv"))
+    width, height = 640, 480
+    eye, target, fov = [0.1, -0.35, 0.9], [0.1, 0.0, 0.05], 40.0
+    camera = ",".join(str(v) for v in eye + target + [fov])
+    errors = []
+    previous = None
+    for t in (0.35, 0.9, 1.45):
+        url = "file://%s/view.html#test&paused&t=%g&size=%dx%d&camera=%s" % (
+            run, t, width, height, camera)
+        status = browse(work, url, "dom", budget=500)
+        check(status["errors"] == [], "no errors at t=%g" % t)
+        png = os.path.join(work, "box_t%g.png" % t)
+        browse(work, url, "shot", budget=500, out=png)
+        p = [interpolate(traj["t"], traj["box." + a], t) for a in "xyz"]
+        ex, ey = project(p, eye, target, fov, width, height)
+        sx, sy = status["screen"]["box"]
+        check(abs(sx - ex) < 0.5 and abs(sy - ey) < 0.5,
+              "t=%g: the page projects the box to (%.1f, %.1f), computed here (%.1f, %.1f)" %
+              (t, sx, sy, ex, ey))
+        cx, cy, n = centroid(png, status["colours"]["box"], width, height)
+        check(n > 500, "t=%g: the box's colour covers %d pixels" % (t, n))
+        error = math.hypot(cx - ex, cy - ey)
+        errors.append(error)
+        check(error < 3.0, "t=%g: box drawn at (%.1f, %.1f), trajectory.csv puts it at (%.1f, %.1f):"
+              " %.2f px off (tolerance 3 px)" % (t, cx, cy, ex, ey, error))
+        if previous:
+            moved = math.hypot(cx - previous[0], cy - previous[1])
+            check(moved > 10, "t=%g: the box moved %.1f px on screen since the last time" % (t, moved))
+        previous = (cx, cy)
+    print("largest position error %.2f px" % max(errors))
+
+
+def case_controls(tribo, source, work):
+    run = make_run(tribo, source, work, ["duration=2"])
+    traj = read_csv(os.path.join(run, "trajectory.csv"))
+    url = ("file://%s/view.html#paused&t=0.5&clickdelay=400&"
+           "click=wait,play,pause,wait,step,step,back,scrub:1500,wait" % run)
+    status = browse(work, url, "dom", budget=5000)
+    check(status["errors"] == [], "no errors: %s" % status["errors"])
+    print("actions: %s" % json.dumps(status["actions"]))
+    a = {i: x for i, x in enumerate(status["actions"])}
+    check(len(a) == 9, "all nine scripted actions ran (%d)" % len(a))
+    check(a[0]["time"] == 0.5 and not a[0]["playing"], "paused: t stays at 0.5 (%.4f)" % a[0]["time"])
+    check(a[1]["playing"], "play starts the replay")
+    # Replay time runs with the page's clock at speed 1: what it played between the two
+    # clicks is the clock time between them (each action logs performance.now()).
+    played, clock = a[2]["time"] - a[1]["time"], (a[2]["clock"] - a[1]["clock"]) / 1000.0
+    check(clock >= 0.39 and abs(played - clock) < 0.01 and not a[2]["playing"],
+          "played %.4f s in the %.4f s between the clicks, then paused" % (played, clock))
+    check(a[3]["time"] == a[2]["time"], "paused: the time does not move (%.4f, %.4f)" %
+          (a[2]["time"], a[3]["time"]))
+    k = a[3]["frame"]
+    check(a[4]["frame"] == k + 1 and a[4]["time"] == traj["t"][k + 1],
+          "frame step: frame %d at t=%.4f (trajectory.csv row %d: %.4f)" %
+          (a[4]["frame"], a[4]["time"], k + 1, traj["t"][k + 1]))
+    check(a[5]["frame"] == k + 2 and a[6]["frame"] == k + 1, "step again, then back one frame")
+    check(a[7]["frame"] == 1500 and a[7]["time"] == traj["t"][1500] and not a[7]["playing"],
+          "scrub to frame 1500: t=%.4f (trajectory.csv: %.4f)" % (a[7]["time"], traj["t"][1500]))
+    check(a[8]["time"] == a[7]["time"] and status["time"] == a[7]["time"],
+          "after scrubbing the replay stays where it was put")
+
+
+def rotate(q, v):
+    """v rotated by the unit quaternion q = (w, x, y, z)."""
+    w, x, y, z = q
+    r = [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+    return [sum(r[i][j] * v[j] for j in range(3)) for i in range(3)]
+
+
+def long_axis_angle(png, colour, width, height, tolerance=40):
+    """Angle [deg, 0..180) of the principal axis of the pixels of one colour (y down)."""
+    from PIL import Image
+    image = Image.open(png).convert("RGB")
+    target = tuple(int(colour[i:i + 2], 16) for i in (1, 3, 5))
+    pixels = image.load()
+    points = [(x + 0.5, y + 0.5) for y in range(height) for x in range(width)
+              if sum(abs(pixels[x, y][i] - target[i]) for i in range(3)) <= tolerance]
+    if len(points) < 100:
+        fail("the bar covers only %d pixels" % len(points))
+    mx = sum(p[0] for p in points) / len(points)
+    my = sum(p[1] for p in points) / len(points)
+    sxx = sum((p[0] - mx) ** 2 for p in points)
+    syy = sum((p[1] - my) ** 2 for p in points)
+    sxy = sum((p[0] - mx) * (p[1] - my) for p in points)
+    return math.degrees(0.5 * math.atan2(2 * sxy, sxx - syy)) % 180.0
+
+
+def case_orientation(tribo, source, work):
+    run = make_run(tribo, source, work, [], scene="tests/view/spinning_bar.yaml")
+    traj = read_csv(os.path.join(run, "trajectory.csv"))
+    width, height = 500, 500
+    eye, target, fov = [0.0, -0.05, 1.2], [0.0, 0.0, 0.0], 30.0
+    camera = ",".join(str(v) for v in eye + target + [fov])
+    angles = []
+    for t in (0.3, 1.2):
+        url = "file://%s/view.html#test&paused&t=%g&size=%dx%d&camera=%s" % (
+            run, t, width, height, camera)
+        status = browse(work, url, "dom", budget=500)
+        check(status["errors"] == [] and status["orientation"], "no errors, orientations held")
+        png = os.path.join(work, "bar_t%g.png" % t)
+        browse(work, url, "shot", budget=500, out=png)
+        q = [interpolate(traj["t"], traj["bar." + a], t) for a in ("qw", "qx", "qy", "qz")]
+        n = math.sqrt(sum(c * c for c in q))
+        q = [c / n for c in q]
+        centre = [interpolate(traj["t"], traj["bar." + a], t) for a in "xyz"]
+        ends = [project([centre[i] + s * rotate(q, [0.2, 0, 0])[i] for i in range(3)],
+                        eye, target, fov, width, height) for s in (-1, 1)]
+        expected = math.degrees(math.atan2(ends[1][1] - ends[0][1], ends[1][0] - ends[0][0])) % 180.0
+        drawn = long_axis_angle(png, status["colours"]["bar"], width, height)
+        error = abs((drawn - expected + 90.0) % 180.0 - 90.0)
+        angles.append(drawn)
+        check(error < 1.5, "t=%g: the bar's long axis drawn at %.2f deg, the recorded quaternion "
+              "puts it at %.2f deg: %.2f deg off (tolerance 1.5 deg)" % (t, drawn, expected, error))
+    turned = abs((angles[1] - angles[0] + 90.0) % 180.0 - 90.0)
+    check(turned > 30, "the bar turned %.1f deg on screen between the two times" % turned)
+
+
+def case_sweep(tribo, source, work):
+    out = os.path.join(work, "sweep")
+    if os.path.exists(out):
+        shutil.rmtree(out)
+    result = subprocess.run([tribo, "sweep", os.path.join(source, "scenes", "belt.yaml"), "--out", out,
+                             "--grid", "mu_k=0.2:0.3:3", "--grid", "v_b=1:2:2", "--set", "duration=3",
+                             "--keep-trajectories", "--jobs", "1"], capture_output=True, text=True,
+                            timeout=120)
+    check(result.returncode == 0, "a 3 x 2 sweep keeping its trajectories")
+    result = subprocess.run([tribo, "view", out], capture_output=True, text=True, timeout=120)
+    check(result.returncode == 0 and "6 points, 6 with a replay page" in result.stdout,
+          "tribo view SWEEP_DIR: " + result.stdout.strip() + result.stderr.strip())
+    for p in range(6):
+        check(os.path.exists(os.path.join(out, "points", str(p), "view.html")), "point %d has its page" % p)
+    url = "file://" + out + "/view.html#metric=amplitude_pp"
+    status = browse(work, url, "dom", width=1000, height=800, budget=500)
+    check(status["errors"] == [] and status["points"] == 6 and status["linked"] == 6,
+          "the sweep page loads with 6 points, all linked")
+    with open(os.path.join(out, "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    expected = {r["point"]: float(r["amplitude_pp"]) for r in rows}
+    cells = status["cells"]
+    check(sorted(c["point"] for c in cells) == sorted(expected),
+          "one cell per point of results.csv")
+    for c in cells:
+        check(abs(c["value"] - expected[c["point"]]) <= 1e-9 * abs(expected[c["point"]]),
+              "point %s shows amplitude_pp %.6g" % (c["point"], c["value"]))
+    png = os.path.join(work, "sweep.png")
+    browse(work, url, "shot", width=1000, height=800, budget=500, out=png)
+    from PIL import Image
+    image = Image.open(png).convert("RGB")
+    ox, oy = status["offset"]
+    def brightness(c):
+        p = image.getpixel((int(ox + c["x"] + 20), int(oy + c["y"])))  # beside the link dot
+        return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]
+    by_value = [c["point"] for c in sorted(cells, key=lambda c: c["value"])]
+    by_brightness = [c["point"] for c in sorted(cells, key=brightness)]
+    check(by_value == by_brightness, "cells brighter where amplitude_pp is larger: %s, %s" %
+          (by_value, by_brightness))
+
+
+def case_orientation_note(tribo, source, work):
+    out = os.path.join(work, "run")
+    if os.path.exists(out):
+        shutil.rmtree(out)
+    result = subprocess.run([tribo, "run", os.path.join(source, "scenes", "belt.yaml"), "--out", out,
+                             "--quiet", "--set", "duration=0.5"], capture_output=True, text=True)
+    check(result.returncode == 0, "a run without --view")
+    result = subprocess.run([tribo, "view", out, "--frames", "100"], capture_output=True, text=True)
+    check(result.returncode == 0 and "no orientations recorded" in result.stdout,
+          "tribo view says the run has no orientations: " + result.stdout.strip())
+    status = browse(work, "file://" + out + "/view.html#paused", "dom", budget=500)
+    rows = len(read_csv(os.path.join(out, "trajectory.csv"))["t"])
+    check(status["orientation"] is False and status["errors"] == [], "the page knows it too")
+    check(status["frames"] <= 100 and status["rows"] == rows and status["stride"] == math.ceil((rows - 1) / 99),
+          "%d rows decimated to %d frames (stride %d) under a cap of 100" %
+          (rows, status["frames"], status["stride"]))
+
+
+def main():
+    tribo, source, work, case = sys.argv[1:5]
+    if not chromium():
+        print("SKIPPED: no chromium on PATH (scripts/setup.sh installs it)")
+        sys.exit(77)
+    try:
+        import PIL  # noqa: F401
+    except ImportError:
+        print("SKIPPED: no PIL for /usr/bin/python3 (Debian python3-pil; scripts/setup.sh)")
+        sys.exit(77)
+    work = os.path.abspath(work)
+    os.makedirs(work, exist_ok=True)
+    {"loads": case_loads, "position": case_position, "controls": case_controls,
+     "orientation_note": case_orientation_note, "orientation": case_orientation, "sweep": case_sweep}[case](os.path.abspath(tribo), source, work)
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
