@@ -285,7 +285,8 @@ int run(const std::vector<std::string>& args) {
   printSummary(scene, result, out_dir);
   if (view) {
     lock.reset();
-    const int status = tribo::app::writeView(out, tribo::study::ViewOptions{}.frame_cap, "");
+    const int status =
+        tribo::app::writeView(out, tribo::study::ViewOptions{}.frame_cap, "", package_paths);
     if (status != 0 && result.complete) return status;
   }
   if (result.interrupted) {

@@ -12,7 +12,7 @@ namespace tribo::app {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tribo view RUN_DIR [--frames N] [--three PATH]\n"
+    "usage: tribo view RUN_DIR [--frames N] [--three PATH] [--package-path DIR ...]\n"
     "       tribo view SWEEP_DIR (a folder of tribo sweep: sweep.json, results.csv)\n"
     "  writes RUN_DIR/view.html: the run replayed in a browser (one file, no server, no\n"
     "  network): the scene's bodies and geometry, the recorded motion, play/pause/speed/\n"
@@ -23,6 +23,7 @@ constexpr const char* kUsage =
     "  --frames  frames the page holds at most (20000; long runs are decimated)\n"
     "  --three   three.js to inline (default $TRIBO_THREE_JS, else Debian's libjs-three:\n"
     "            /usr/share/javascript/three/three.min.js)\n"
+    "  --package-path  a folder holding ROS packages, as the run was given (robot meshes)\n"
     "  tribo run SCENE --out DIR --view  does the same after the run and records\n"
     "  orientations for it\n"
     "  A sweep's folder gets a heat map of a chosen result over two swept parameters\n"
@@ -37,10 +38,11 @@ int usage(const std::string& problem) {
 }  // namespace
 
 int writeView(const std::filesystem::path& run_dir, std::size_t frame_cap,
-              const std::string& three_js) {
+              const std::string& three_js, const std::vector<std::string>& package_paths) {
   study::ViewOptions options;
   options.frame_cap = frame_cap;
   options.three_js = three_js;
+  options.package_paths = package_paths;
   study::ViewPageInfo info;
   try {
     info = study::writeRunView(run_dir, options);
@@ -56,6 +58,7 @@ int writeView(const std::filesystem::path& run_dir, std::size_t frame_cap,
 
 int viewCommand(const std::vector<std::string>& args) {
   std::string run_dir, three_js;
+  std::vector<std::string> package_paths;
   std::size_t frames = study::ViewOptions{}.frame_cap;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -63,11 +66,15 @@ int viewCommand(const std::vector<std::string>& args) {
       std::printf("%s", kUsage);
       return 0;
     }
-    if (a == "--frames" || a == "--three") {
+    if (a == "--frames" || a == "--three" || a == "--package-path") {
       if (i + 1 >= args.size()) return usage(a + " needs a value");
       const std::string& v = args[++i];
       if (a == "--three") {
         three_js = v;
+        continue;
+      }
+      if (a == "--package-path") {
+        package_paths.push_back(v);
         continue;
       }
       const auto n = io::parseNumber(v);
@@ -98,7 +105,7 @@ int viewCommand(const std::vector<std::string>& args) {
     }
     return 0;
   }
-  return writeView(run_dir, frames, three_js);
+  return writeView(run_dir, frames, three_js, package_paths);
 }
 
 }  // namespace tribo::app

@@ -14,6 +14,6 @@ int viewCommand(const std::vector<std::string>& args);
 
 // Writes the page of a finished run and prints where; returns the exit status above.
 int writeView(const std::filesystem::path& run_dir, std::size_t frame_cap,
-              const std::string& three_js);
+              const std::string& three_js, const std::vector<std::string>& package_paths = {});
 
 }  // namespace tribo::app

@@ -52,12 +52,30 @@ int supportPoints(const Model& model, const std::vector<int>& geometries, double
 
 }  // namespace
 
-Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& package_paths,
-                    const std::vector<std::string>& overrides, const UrdfReadOptions& read) {
-  std::map<std::string, std::string> settings{
+namespace {
+
+const std::map<std::string, std::string>& defaultSettings() {
+  static const std::map<std::string, std::string> settings{
       {"duration", "1"},       {"dt", "auto"},        {"integrator", "auto"}, {"drop", "0.05"},
       {"mu", "0.8"},           {"stiffness", "auto"}, {"damping", "auto"},    {"base", "auto"},
       {"penetration", "1e-3"}, {"min_dt", "1e-5"}};
+  return settings;
+}
+
+}  // namespace
+
+const std::vector<std::string>& urdfSceneSettings() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& [name, value] : defaultSettings()) out.push_back(name);
+    return out;
+  }();
+  return names;
+}
+
+Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& package_paths,
+                    const std::vector<std::string>& overrides, const UrdfReadOptions& read) {
+  std::map<std::string, std::string> settings = defaultSettings();
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     const std::string name = o.substr(0, eq);

@@ -28,6 +28,9 @@
 
 namespace tribo::io {
 
+// The names --set may give a URDF run (the settings above), sorted.
+const std::vector<std::string>& urdfSceneSettings();
+
 // Throws SceneError (unknown --set name, bad value) or UrdfError.
 Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& package_paths,
                     const std::vector<std::string>& overrides, const UrdfReadOptions& read = {});

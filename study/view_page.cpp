@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "io/scene_loader.hpp"
+#include "io/urdf_reader.hpp"
+#include "io/urdf_scene.hpp"
 #include "study/csv_text.hpp"
 #include "study/file_commit.hpp"
 #include "study/view_assets.hpp"
@@ -89,7 +91,20 @@ ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOption
                           (value.is_string() ? value.get<std::string>() : value.dump()));
   io::Scene scene;
   try {
-    scene = io::loadScene(scene_path, overrides);
+    // A robot run from its URDF alone (`tribo run ROBOT.urdf`) reloads as `tribo run` loaded
+    // it: its settings are the parameters recorded. Its --package-path folders are not
+    // recorded: they come again from options.package_paths (or ROS_PACKAGE_PATH).
+    if (io::looksLikeUrdf(scene_path)) {
+      // summary.json also records what the run derived (support_points...): only the
+      // settings go back in.
+      std::vector<std::string> settings;
+      for (const std::string& o : overrides)
+        for (const std::string& name : io::urdfSceneSettings())
+          if (o.rfind(name + "=", 0) == 0) settings.push_back(o);
+      scene = io::sceneFromUrdf(scene_path, options.package_paths, settings);
+    } else {
+      scene = io::loadScene(scene_path, overrides, options.package_paths);
+    }
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot reload the run's scene '" + scene_path + "' (" + e.what() +
                              "); run tribo view from the folder the run was started in");

@@ -9,13 +9,15 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace tribo::study {
 
 struct ViewOptions {
-  std::size_t frame_cap = 20000;         // frames at most
-  std::size_t value_budget = 4'000'000;  // numbers of the trajectory at most (page size)
-  std::filesystem::path three_js;        // empty: $TRIBO_THREE_JS, else Debian's path
+  std::size_t frame_cap = 20000;           // frames at most
+  std::size_t value_budget = 4'000'000;    // numbers of the trajectory at most (page size)
+  std::filesystem::path three_js;          // empty: $TRIBO_THREE_JS, else Debian's path
+  std::vector<std::string> package_paths;  // the run's --package-path folders (robot meshes)
 };
 
 struct ViewPageInfo {

@@ -124,6 +124,12 @@ TriboView.buildScene = function (data, extent, test) {
         group.add(obj);
       }
     });
+    if (b.geometries.length === 0) {  // nothing to draw (a URDF link without collision): a marker
+      var marker = new THREE.Mesh(new THREE.SphereBufferGeometry(0.04 * extent, 16, 12), material);
+      marker.userData.body = i;
+      group.add(marker);
+      out.notes.push(b.name + ": no geometry; drawn as a small sphere at its origin");
+    }
     group.position.fromArray(b.position);
     var q = b.quaternion;
     group.quaternion.set(q[1], q[2], q[3], q[0]);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "io/scene_loader.hpp"
+#include "io/urdf_scene.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
 #include "study/view_scene.hpp"
@@ -128,6 +129,22 @@ TEST(ViewPage, WrittenFromARunWithItsParameters) {
   // The scene was reloaded with the run's parameters: the belt moves at 2.5 m/s.
   EXPECT_NE(page.find("\"surface_velocity\":[2.5,0.0,0.0]"), std::string::npos);
   EXPECT_EQ(page.find("/*TRIBO_"), std::string::npos);  // every template marker filled
+}
+
+TEST(ViewPage, WrittenFromAUrdfRobotRun) {
+  // `tribo run ROBOT.urdf`: the robot on its ground; the page's scene holds its links.
+  const fs::path d = freshDir("urdf");
+  const std::string urdf = std::string(TRIBO_SOURCE_DIR) + "/scenes/robots/pendulum.urdf";
+  const io::Scene scene = io::sceneFromUrdf(urdf, {}, {"duration=0.05"});
+  writeResults(d, scene, runScene(scene));
+  std::ofstream(d / "three.js") << "var THREE = {};";
+  ViewOptions options;
+  options.three_js = d / "three.js";
+  const ViewPageInfo info = writeRunView(d, options);
+  EXPECT_GT(info.rows, 1u);
+  const std::string page = readAll(d / "view.html");
+  for (const Body& b : scene.model->bodies)
+    EXPECT_NE(page.find("\"name\":\"" + b.name + "\""), std::string::npos) << b.name;
 }
 
 TEST(ViewPage, MissingThreeJsOrRunIsAnError) {
