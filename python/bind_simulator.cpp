@@ -88,6 +88,9 @@ py::dict contactsOf(const Model& model, const Workspace& ws) {
   return d;
 }
 
+// Steps between two looks for a pending signal (Ctrl-C) in step(n).
+constexpr long kSignalSteps = 1024;
+
 // The Python-side simulator: the core one and the status of its last step.
 struct PySimulator {
   std::shared_ptr<const Model> model;
@@ -149,18 +152,29 @@ void bindSimulator(py::module_& m) {
             if (n == 1) {  // no GIL hand-over for one step: it costs more than the call
               s.status = s.sim.step();
             } else {
-              py::gil_scoped_release release;
-              for (long i = 0; i < n; ++i) {
-                s.status = s.sim.step();
-                if (!s.status.ok) break;
+              bool interrupted = false;
+              {
+                py::gil_scoped_release release;
+                for (long i = 0; i < n && !interrupted; ++i) {
+                  s.status = s.sim.step();
+                  if (!s.status.ok) break;
+                  // Every kSignalSteps steps (a few ms on the belt) a pending Ctrl-C stops
+                  // here, after a whole step: the state is that step's.
+                  if ((i + 1) % kSignalSteps == 0) {
+                    py::gil_scoped_acquire hold;
+                    interrupted = PyErr_CheckSignals() != 0;
+                  }
+                }
               }
+              if (interrupted) throw py::error_already_set();  // KeyboardInterrupt
             }
             if (!s.status.ok) raisePythonLawErrors(s.user_laws);
             return s.status.ok;
           },
           py::arg("n") = 1,
           "Advances n model time steps (stops at a failed one); True when all succeeded. "
-          "status says why a step failed.")
+          "status says why a step failed. Ctrl-C stops it after a whole step "
+          "(KeyboardInterrupt); the state is then that step's.")
       .def_property_readonly(
           "status", [](const PySimulator& s) { return statusDict(s.status); },
           "The last step's outcome: ok, message, time, body, quantity.")

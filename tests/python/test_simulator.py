@@ -108,3 +108,22 @@ def test_a_diverging_step_says_where_as_the_cli_does(cli, tmp_path):
     run = subprocess.run(args, capture_output=True, text=True)
     assert run.returncode == 3
     assert status["message"] in run.stderr
+
+
+def test_ctrl_c_stops_a_long_step_after_a_whole_step(belt):
+    # interrupt_main raises KeyboardInterrupt in this thread as Ctrl-C would, while step(n)
+    # runs without the GIL; the loop looks for it every 1024 steps.
+    import _thread
+    import threading
+
+    sim = tribo.Simulator(tribo.load_scene(belt))
+    timer = threading.Timer(0.2, _thread.interrupt_main)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        sim.step(10**9)  # some 40 minutes of stepping if nothing stopped it
+    timer.join()
+    t = sim.time
+    assert 0 < t < 1e5
+    assert t / 1e-3 == pytest.approx(round(t / 1e-3), abs=1e-6)  # a whole number of steps
+    assert np.isfinite(sim.state.positions).all()
+    assert sim.step(10)  # and it goes on from there
