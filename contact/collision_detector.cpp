@@ -141,29 +141,41 @@ std::uint64_t pairKey(int a, int b) {
 
 }  // namespace
 
+// One pair to look at: its id, geometries A and B, and how.
+struct Candidate {
+  int id = -1;
+  int a = -1, b = -1;
+  PairKind kind = PairKind::kFcl;
+};
+
 struct CollisionDetector::Impl {
   std::vector<Shape> shapes;
-  std::vector<std::pair<int, int>> pairs;
-  std::vector<PairKind> kinds;
+  std::vector<Candidate> listed;          // listed pairs, by id (empty with a rule)
+  std::unique_ptr<const PairRule> rule;  // pairs on demand (null with a list)
   CollisionOptions options;
   bool any_fcl_pair = false;
   std::vector<std::unique_ptr<TrackedObject>> objects;
-  std::unordered_map<std::uint64_t, int> pair_index;  // geometry pair -> pair
+  std::unordered_map<std::uint64_t, int> pair_index;  // listed: geometry pair -> pair
   fcl::DynamicAABBTreeCollisionManagerd manager;
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
-  std::vector<int> candidates;
-  std::vector<int> unbounded_pairs;   // pairs with a half-space: never culled
+  std::vector<Candidate> candidates;
+  std::vector<Candidate> unbounded;   // pairs with a half-space: never culled
   std::vector<Polyhedron> polyhedra;  // by geometry, for kPolyhedra pairs (else empty)
   ClipScratch clip_scratch;
   bool timing = false;
   double fcl_seconds = 0.0;
 
-  void narrowphase(int p, std::span<const Eigen::Isometry3d> poses,
+  PairKind classify(int a, int b) const;
+  Candidate candidate(int id, int a, int b) const { return {id, a, b, classify(a, b)}; }
+  void setUp();
+  void candidateFound(int g, int h);
+
+  void narrowphase(const Candidate& c, std::span<const Eigen::Isometry3d> poses,
                    std::vector<ContactPoint>& out) {
-    const auto [a, b] = pairs[p];
+    const int a = c.a, b = c.b, p = c.id;
     const int max_points = options.max_points_per_pair;
-    switch (kinds[p]) {
+    switch (c.kind) {
       case PairKind::kHalfSpaceBox:
         boxHalfSpaceContacts(poses[b], shapes[b].half_extents, poses[a], p, out);
         return;
@@ -224,7 +236,7 @@ struct CollisionDetector::Impl {
       cp.depth = depth;
       out.push_back(cp);
     }
-    if (kinds[p] == PairKind::kPolyhedra && out.size() > first) {
+    if (c.kind == PairKind::kPolyhedra && out.size() > first) {
       // EPA's deepest point gives the normal and depth; a face contact becomes its manifold.
       const ContactPoint epa = *std::max_element(
           out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
@@ -237,89 +249,144 @@ struct CollisionDetector::Impl {
   }
 };
 
+PairKind CollisionDetector::Impl::classify(int a, int b) const {
+  const auto ta = shapes[a].type, tb = shapes[b].type;
+  PairKind kind = PairKind::kFcl;
+  const bool box_plane = (ta == ShapeType::kBox && tb == ShapeType::kHalfSpace) ||
+                         (tb == ShapeType::kBox && ta == ShapeType::kHalfSpace);
+  const bool closed =
+      box_plane ? options.closed_form_box_halfspace : options.closed_form_primitives;
+  if (closed) {
+    if (ta == ShapeType::kHalfSpace)
+      kind = tb == ShapeType::kBox ? PairKind::kHalfSpaceBox : PairKind::kHalfSpaceShape;
+    if (tb == ShapeType::kHalfSpace) kind = PairKind::kShapeHalfSpace;
+    if (ta == ShapeType::kSphere && tb == ShapeType::kSphere) kind = PairKind::kSphereSphere;
+    if (ta == ShapeType::kBox && tb == ShapeType::kSphere) kind = PairKind::kBoxSphere;
+    if (ta == ShapeType::kSphere && tb == ShapeType::kBox) kind = PairKind::kSphereBox;
+  }
+  // Convex meshes with boxes or each other (box/box keeps FCL's own manifold).
+  if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(shapes[a]) &&
+      isPolyhedron(shapes[b]) && !(ta == ShapeType::kBox && tb == ShapeType::kBox))
+    kind = PairKind::kPolyhedra;
+  return kind;
+}
+
+// The broadphase reported geometries g and h close: a candidate when they form a pair.
+void CollisionDetector::Impl::candidateFound(int g, int h) {
+  if (rule) {
+    const int id = rule->pairId(g, h);
+    if (id < 0) return;
+    const auto [a, b] = rule->geometries(id);
+    candidates.push_back(candidate(id, a, b));
+    return;
+  }
+  const auto it = pair_index.find(pairKey(g, h));
+  if (it != pair_index.end()) candidates.push_back(listed[static_cast<std::size_t>(it->second)]);
+}
+
+// FCL objects, polyhedra and the broadphase, once the pairs (listed or by rule) are known.
+void CollisionDetector::Impl::setUp() {
+  const int n = static_cast<int>(shapes.size());
+  for (int g = 0; g < n; ++g) {
+    try {
+      shapes[g].validate();
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("geometry " + std::to_string(g) + ": " + e.what());
+    }
+  }
+  // FCL objects only where FCL is asked something: an FCL pair, or the broadphase. With a
+  // rule any two geometries may be asked (polyhedra are made for every convex shape).
+  std::vector<bool> needed(n, options.broadphase);
+  polyhedra.resize(n);
+  auto fcl_kind = [](PairKind k) { return k == PairKind::kFcl || k == PairKind::kPolyhedra; };
+  for (const Candidate& c : listed) {
+    if (fcl_kind(c.kind)) needed[c.a] = needed[c.b] = true;
+    any_fcl_pair = any_fcl_pair || fcl_kind(c.kind);
+    if (c.kind != PairKind::kPolyhedra) continue;
+    for (int g : {c.a, c.b})
+      if (polyhedra[g].faces.empty()) polyhedra[g] = makePolyhedron(shapes[g]);
+  }
+  if (rule && options.polyhedron_manifold) {
+    // Any two polyhedra may meet, except two boxes: boxes need theirs only beside a mesh.
+    bool any_mesh = false;
+    for (int g = 0; g < n; ++g)
+      any_mesh = any_mesh || (isPolyhedron(shapes[g]) && shapes[g].type != ShapeType::kBox);
+    for (int g = 0; g < n; ++g)
+      if (isPolyhedron(shapes[g]) && (any_mesh || shapes[g].type != ShapeType::kBox))
+        polyhedra[g] = makePolyhedron(shapes[g]);
+  }
+  any_fcl_pair = any_fcl_pair || rule != nullptr;
+  for (int g = 0; g < n; ++g) {
+    objects.push_back(needed[g] ? std::make_unique<TrackedObject>(makeFclGeometry(shapes[g]))
+                                : nullptr);
+    if (objects.back())
+      objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(g)));
+  }
+  request = fcl::CollisionRequestd(static_cast<std::size_t>(options.max_points_per_pair), true);
+  if (!options.broadphase) return;
+  std::vector<fcl::CollisionObjectd*> raw;
+  std::vector<int> planes;
+  for (int g = 0; g < n; ++g) {
+    if (shapes[g].type != ShapeType::kHalfSpace)
+      raw.push_back(objects[g].get());
+    else
+      planes.push_back(g);
+  }
+  if (rule) {
+    for (int h : planes)
+      for (int g = 0; g < n; ++g)
+        if (const int id = rule->pairId(g, h); id >= 0) {
+          const auto [a, b] = rule->geometries(id);
+          unbounded.push_back(candidate(id, a, b));
+        }
+    std::sort(unbounded.begin(), unbounded.end(),
+              [](const Candidate& x, const Candidate& y) { return x.id < y.id; });
+  } else {
+    for (const Candidate& c : listed)
+      if (shapes[c.a].type == ShapeType::kHalfSpace || shapes[c.b].type == ShapeType::kHalfSpace)
+        unbounded.push_back(c);
+  }
+  manager.registerObjects(raw);
+  manager.setup();
+}
+
 CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
                                      std::vector<std::pair<int, int>> pairs,
                                      CollisionOptions options)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.shapes = std::move(shapes);
-  m.pairs = std::move(pairs);
   m.options = options;
   const int n = static_cast<int>(m.shapes.size());
-  for (int g = 0; g < n; ++g) {
-    try {
-      m.shapes[g].validate();
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("geometry " + std::to_string(g) + ": " + e.what());
-    }
-  }
-  for (std::size_t p = 0; p < m.pairs.size(); ++p) {
-    const auto [a, b] = m.pairs[p];
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const auto [a, b] = pairs[p];
     if (a < 0 || b < 0 || a >= n || b >= n || a == b)
       throw std::invalid_argument("contact pair " + std::to_string(p) +
                                   ": geometry index out of range or pair with itself");
-    const auto ta = m.shapes[a].type, tb = m.shapes[b].type;
-    if (ta == ShapeType::kHalfSpace && tb == ShapeType::kHalfSpace)
+    if (m.shapes[a].type == ShapeType::kHalfSpace && m.shapes[b].type == ShapeType::kHalfSpace)
       throw std::invalid_argument("contact pair " + std::to_string(p) +
                                   ": two half-spaces cannot be in contact");
-    PairKind kind = PairKind::kFcl;
-    const bool box_plane = (ta == ShapeType::kBox && tb == ShapeType::kHalfSpace) ||
-                           (tb == ShapeType::kBox && ta == ShapeType::kHalfSpace);
-    const bool closed =
-        box_plane ? options.closed_form_box_halfspace : options.closed_form_primitives;
-    if (closed) {
-      if (ta == ShapeType::kHalfSpace)
-        kind = tb == ShapeType::kBox ? PairKind::kHalfSpaceBox : PairKind::kHalfSpaceShape;
-      if (tb == ShapeType::kHalfSpace) kind = PairKind::kShapeHalfSpace;
-      if (ta == ShapeType::kSphere && tb == ShapeType::kSphere) kind = PairKind::kSphereSphere;
-      if (ta == ShapeType::kBox && tb == ShapeType::kSphere) kind = PairKind::kBoxSphere;
-      if (ta == ShapeType::kSphere && tb == ShapeType::kBox) kind = PairKind::kSphereBox;
-    }
-    // Convex meshes with boxes or each other (box/box keeps FCL's own manifold).
-    if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(m.shapes[a]) &&
-        isPolyhedron(m.shapes[b]) && !(ta == ShapeType::kBox && tb == ShapeType::kBox))
-      kind = PairKind::kPolyhedra;
-    m.kinds.push_back(kind);
-    m.any_fcl_pair = m.any_fcl_pair || kind == PairKind::kFcl || kind == PairKind::kPolyhedra;
+    m.listed.push_back(m.candidate(static_cast<int>(p), a, b));
     m.pair_index[pairKey(a, b)] = static_cast<int>(p);
   }
-  // FCL objects only where FCL is asked something: an FCL pair, or the broadphase.
-  std::vector<bool> needed(n, options.broadphase);
-  m.polyhedra.resize(n);
-  for (std::size_t p = 0; p < m.pairs.size(); ++p) {
-    const auto [a, b] = m.pairs[p];
-    if (m.kinds[p] == PairKind::kFcl || m.kinds[p] == PairKind::kPolyhedra)
-      needed[a] = needed[b] = true;
-    if (m.kinds[p] != PairKind::kPolyhedra) continue;
-    for (int g : {a, b})
-      if (m.polyhedra[g].faces.empty()) m.polyhedra[g] = makePolyhedron(m.shapes[g]);
-  }
-  for (int g = 0; g < n; ++g) {
-    m.objects.push_back(needed[g] ? std::make_unique<TrackedObject>(makeFclGeometry(m.shapes[g]))
-                                  : nullptr);
-    if (m.objects.back())
-      m.objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(g)));
-  }
-  m.request = fcl::CollisionRequestd(static_cast<std::size_t>(options.max_points_per_pair), true);
-  if (options.broadphase) {
-    std::vector<fcl::CollisionObjectd*> raw;
-    for (int g = 0; g < n; ++g)
-      if (m.shapes[g].type != ShapeType::kHalfSpace) raw.push_back(m.objects[g].get());
-    for (std::size_t p = 0; p < m.pairs.size(); ++p) {
-      const auto [a, b] = m.pairs[p];
-      if (m.shapes[a].type == ShapeType::kHalfSpace || m.shapes[b].type == ShapeType::kHalfSpace)
-        m.unbounded_pairs.push_back(static_cast<int>(p));
-    }
-    m.manager.registerObjects(raw);
-    m.manager.setup();
-  }
+  m.setUp();
+}
+
+CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
+                                     std::unique_ptr<const PairRule> rule,
+                                     CollisionOptions options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.shapes = std::move(shapes);
+  m.rule = std::move(rule);
+  m.options = options;
+  m.options.broadphase = true;
+  m.setUp();
 }
 
 CollisionDetector::~CollisionDetector() = default;
 CollisionDetector::CollisionDetector(CollisionDetector&&) noexcept = default;
 CollisionDetector& CollisionDetector::operator=(CollisionDetector&&) noexcept = default;
-
-const std::vector<std::pair<int, int>>& CollisionDetector::pairs() const { return impl_->pairs; }
 
 void CollisionDetector::setTiming(bool timing) { impl_->timing = timing; }
 double CollisionDetector::fclSeconds() const { return impl_->fcl_seconds; }
@@ -340,10 +407,10 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
     }
   }
   if (!m.options.broadphase) {
-    for (std::size_t p = 0; p < m.pairs.size(); ++p) m.narrowphase(static_cast<int>(p), poses, out);
+    for (const Candidate& c : m.listed) m.narrowphase(c, poses, out);
     return;
   }
-  m.candidates.assign(m.unbounded_pairs.begin(), m.unbounded_pairs.end());
+  m.candidates.assign(m.unbounded.begin(), m.unbounded.end());
   {
     const FclScope scope(m.timing ? &m.fcl_seconds : nullptr);
     m.manager.update();
@@ -352,13 +419,13 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
       auto* self = static_cast<Impl*>(d);
       const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
       const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-      const auto it = self->pair_index.find(pairKey(a, b));
-      if (it != self->pair_index.end()) self->candidates.push_back(it->second);
+      self->candidateFound(a, b);
       return false;  // keep going
     });
   }
-  std::sort(m.candidates.begin(), m.candidates.end());  // deterministic order
-  for (int p : m.candidates) m.narrowphase(p, poses, out);
+  std::sort(m.candidates.begin(), m.candidates.end(),  // deterministic order
+            [](const Candidate& x, const Candidate& y) { return x.id < y.id; });
+  for (const Candidate& c : m.candidates) m.narrowphase(c, poses, out);
 }
 
 }  // namespace tribo::contact

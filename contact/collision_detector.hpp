@@ -1,5 +1,8 @@
-// Collision detection over a fixed set of geometries and candidate pairs: the one place
-// FCL is used (behind a pimpl, so no FCL type leaks into Tribo headers).
+// Collision detection over a fixed set of geometries and their pairs: the one place FCL is
+// used (behind a pimpl, so no FCL type leaks into Tribo headers). Pairs are either listed
+// (pair id = index in the list) or decided on demand by a PairRule (automatic contacts):
+// then only the pairs the broadphase reports close are looked at, and nothing is kept per
+// geometry pair, so memory and set-up are linear in the geometries.
 //
 // Each pair (A, B) yields contact points with the normal from A into B. Pairs with a closed
 // form (contact/primitive_contacts.hpp: any shape on a half-space, sphere/sphere,
@@ -44,22 +47,32 @@ struct CollisionOptions {
   double match_radius = 0.01;
 };
 
+// Which two geometries may touch, decided per pair the broadphase reports: their pair id
+// (>= 0; ids sort in the order points are produced) or -1, and the id's (A, B).
+class PairRule {
+ public:
+  virtual ~PairRule() = default;
+  virtual int pairId(int g, int h) const = 0;
+  virtual std::pair<int, int> geometries(int id) const = 0;
+};
+
 class CollisionDetector {
  public:
-  // Throws std::invalid_argument for a pair that cannot collide (half-space/half-space),
-  // an index out of range or an invalid shape.
+  // Listed pairs. Throws std::invalid_argument for a pair that cannot collide
+  // (half-space/half-space), an index out of range or an invalid shape.
   CollisionDetector(std::vector<Shape> shapes, std::vector<std::pair<int, int>> pairs,
+                    CollisionOptions options = {});
+  // Pairs on demand: the broadphase is always on; a half-space's pairs are always tested.
+  CollisionDetector(std::vector<Shape> shapes, std::unique_ptr<const PairRule> rule,
                     CollisionOptions options = {});
   ~CollisionDetector();
   CollisionDetector(CollisionDetector&&) noexcept;
   CollisionDetector& operator=(CollisionDetector&&) noexcept;
 
   // World poses of all geometries in, contact points out (cleared first), grouped by pair
-  // in increasing pair order. Does not allocate once `out` has grown to its working size
+  // in increasing pair id. Does not allocate once `out` has grown to its working size
   // (FCL's own narrowphase may).
   void detect(std::span<const Eigen::Isometry3d> poses, std::vector<ContactPoint>& out);
-
-  const std::vector<std::pair<int, int>>& pairs() const;
 
   // Wall time spent inside FCL (broadphase and FCL narrowphase) since construction [s];
   // measured only when `timing` is on (it costs two clock reads per call).

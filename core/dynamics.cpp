@@ -10,9 +10,27 @@ namespace tribo {
 
 namespace {
 
-contact::CollisionDetector makeDetector(const Model& model) {
+// Automatic contacts: the model's rule (core/automatic_contacts.hpp), asked on demand.
+class ModelPairRule : public contact::PairRule {
+ public:
+  explicit ModelPairRule(std::shared_ptr<const Model> model) : model_(std::move(model)) {}
+  int pairId(int g, int h) const override { return automaticPairId(*model_, g, h); }
+  std::pair<int, int> geometries(int id) const override {
+    const ContactPair p = automaticPair(*model_, id);
+    return {p.geometry_a, p.geometry_b};
+  }
+
+ private:
+  std::shared_ptr<const Model> model_;
+};
+
+contact::CollisionDetector makeDetector(const std::shared_ptr<const Model>& shared) {
+  const Model& model = *shared;
   std::vector<contact::Shape> shapes;
   for (const auto& g : model.geometries) shapes.push_back(g.shape);
+  if (model.automatic_contacts)
+    return contact::CollisionDetector(std::move(shapes), std::make_unique<ModelPairRule>(shared),
+                                      model.options.collision);
   std::vector<std::pair<int, int>> pairs;
   for (const auto& p : model.contact_pairs) pairs.emplace_back(p.geometry_a, p.geometry_b);
   return contact::CollisionDetector(std::move(shapes), std::move(pairs), model.options.collision);
@@ -48,7 +66,7 @@ void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force
 
 Dynamics::Dynamics(std::shared_ptr<const Model> model)
     : model_(std::move(model)),
-      detector_(makeDetector(*model_)),
+      detector_(makeDetector(model_)),
       solver_(*model_),
       joint_forces_(*model_),
       projection_(*model_) {
@@ -163,7 +181,7 @@ void Dynamics::contactKinematics(const State& state) {
   ws_.max_penetration = 0.0;
   for (std::size_t i = 0; i < ws_.contact_points.size(); ++i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
-    const ContactPair& pair = m.contact_pairs[cp.pair];
+    const ContactPair pair = m.contactPair(cp.pair);
     contact::contactKinematics(cp, motionOf(m, state, ws_, pair.geometry_a),
                                motionOf(m, state, ws_, pair.geometry_b), ws_.contacts[i]);
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
@@ -173,7 +191,7 @@ void Dynamics::contactKinematics(const State& state) {
 void Dynamics::normalForces() {
   const Model& m = *model_;
   for (contact::ContactRecord& rec : ws_.contacts)
-    contact::normalForce(m.materials[m.contact_pairs[rec.point.pair].material], rec);
+    contact::normalForce(m.materials[m.contactPair(rec.point.pair).material], rec);
 }
 
 void Dynamics::friction(const State& state) {
@@ -187,7 +205,7 @@ void Dynamics::friction(const State& state) {
   std::array<double, contact::kMaxFrictionState> z, zdot, back;
   for (std::size_t i = 0; i < ws_.contacts.size(); ++i) {
     contact::ContactRecord& rec = ws_.contacts[i];
-    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    const ContactPair pair = m.contactPair(rec.point.pair);
     const contact::Material& material = m.materials[pair.material];
     const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
     if (law != nullptr && !steady_friction_) {
@@ -228,7 +246,7 @@ void Dynamics::assemble(const State& state) {
     ws_.spring_wrench[b].setZero();
   }
   for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    const ContactPair pair = m.contactPair(rec.point.pair);
     const BodyIndex a = m.geometries[pair.geometry_a].body;
     const BodyIndex b = m.geometries[pair.geometry_b].body;
     const Vec3 f = rec.force();
@@ -329,7 +347,7 @@ bool Dynamics::advanceFrictionStates(State& state) {
   const Model& m = *model_;
   anchor_book_.begin(state.stick_anchors);
   for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    const ContactPair pair = m.contactPair(rec.point.pair);
     if (!stateful_material_[pair.material]) continue;
     const contact::AnchorFrames frames = anchorFrames(m, ws_, pair);
     const contact::StickAnchor* old =
@@ -356,7 +374,7 @@ bool Dynamics::registerFrictionStates(State& state) {
   next_values_.assign(state.friction_values.begin(),
                       state.friction_values.begin() + joint_forces_.jointStateSize());
   for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair& pair = m.contact_pairs[rec.point.pair];
+    const ContactPair pair = m.contactPair(rec.point.pair);
     const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
     if (law == nullptr) continue;
     const contact::StickAnchor* old =
@@ -413,7 +431,7 @@ void Dynamics::stepFrictionStates(State& state, double h) const {
     const contact::ContactRecord& rec =
         ws_.contacts[static_cast<std::size_t>(ws_.friction_state_contact[r])];
     const friction::DynamicFrictionLaw& law =
-        *dynamic_law_[m.contact_pairs[rec.point.pair].material];
+        *dynamic_law_[m.contactPair(rec.point.pair).material];
     const contact::StickAnchor& record = state.friction_states[r];
     double* stored = &state.friction_values[static_cast<std::size_t>(record.state)];
     contact::transportState(law, stored, record.normal, rec.point.normal, z.data());

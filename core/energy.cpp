@@ -63,7 +63,7 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
         spring, torsionalDeflection(spring, bodyKinematics(state, ws.rotation, spring.body_a),
                                     bodyKinematics(state, ws.rotation, spring.body_b)));
   for (const auto& c : ws.contacts) {
-    const ContactPair& pair = model.contact_pairs[c.point.pair];
+    const ContactPair pair = model.contactPair(c.point.pair);
     a.elastic += contactPotential(model.materials[pair.material].normal, c.point.depth);
     const Vec3 f = c.force();  // on B; A gets -f
     const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};

@@ -13,6 +13,7 @@
 #include "contact/collision_detector.hpp"
 #include "contact/contact_force.hpp"
 #include "contact/shape.hpp"
+#include "core/automatic_contacts.hpp"
 #include "core/body.hpp"
 #include "core/bushing.hpp"
 #include "core/constraint_options.hpp"
@@ -94,16 +95,23 @@ struct Model {
   std::vector<Bushing> bushings;
   std::vector<TorsionalSpring> torsional_springs;
   std::vector<contact::Material> materials;
-  std::vector<ContactPair> contact_pairs;
-  // True when the builder made contact_pairs from every pair of geometries that may touch
-  // (the scene listed none): filtered by joints and groups/masks, culled by the broadphase.
+  std::vector<ContactPair> contact_pairs;  // listed contacts; pair id = index
+  // True when the scene listed no contacts: every two geometries that may touch do, by the
+  // rule in `automatic` (core/automatic_contacts.hpp), applied on demand to the pairs the
+  // broadphase reports; contact_pairs stays empty and pair ids are g * n + h.
   bool automatic_contacts = false;
+  AutomaticContacts automatic;
   // Scalar joint constraint equations kept after redundancy removal (set by the builder).
   int constraint_equations = 0;
   SimulationOptions options;
 
   std::optional<BodyIndex> findBody(const std::string& name) const;
   int dynamicBodyCount() const;
+  // The pair a contact point's `pair` id names (listed or automatic).
+  ContactPair contactPair(int id) const {
+    return automatic_contacts ? automaticPair(*this, id)
+                              : contact_pairs[static_cast<std::size_t>(id)];
+  }
 };
 
 // The world velocity of geometry `g`'s surface: its body's surface_velocity read in the

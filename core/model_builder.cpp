@@ -1,8 +1,11 @@
 #include "core/model_builder.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <tuple>
 #include <sstream>
 
 #include "core/constraint_rows.hpp"
@@ -55,6 +58,7 @@ BodyIndex ModelBuilder::addBody(const Body& body) {
   Body b = body;
   b.orientation.normalize();
   model_.bodies.push_back(b);
+  body_index_[b.name] = static_cast<int>(model_.bodies.size()) - 1;
   return BodyIndex{static_cast<int>(model_.bodies.size()) - 1};
 }
 
@@ -84,6 +88,7 @@ int ModelBuilder::addGeometry(const std::string& name, BodyIndex body, const con
   geometry.shape = shape;
   geometry.local_pose = local_pose;
   model_.geometries.push_back(geometry);
+  geometry_index_[name] = static_cast<int>(model_.geometries.size()) - 1;
   return static_cast<int>(model_.geometries.size()) - 1;
 }
 
@@ -152,46 +157,75 @@ void ModelBuilder::setDefaultMaterial(int material) {
 
 void ModelBuilder::addAutomaticContacts(Model& model) const {
   const int n = static_cast<int>(model.geometries.size());
-  auto dynamic = [&](BodyIndex i) {
-    return !i.isWorld() && model.bodies[i.value].kind == BodyKind::kDynamic;
+  if (n > kMaxAutomaticGeometries)
+    throw ModelError("automatic contacts: " + std::to_string(n) + " geometries, more than the " +
+                     std::to_string(kMaxAutomaticGeometries) +
+                     " they take: list the contacts instead");
+  AutomaticContacts& rule = model.automatic;
+  rule.geometry_count = n;
+  rule.joined_bodies_collide = model.options.collision.joined_bodies_collide;
+  std::vector<std::string> surfaces;
+  for (const Geometry& g : model.geometries) {
+    auto it = std::find(surfaces.begin(), surfaces.end(), g.surface);
+    if (it == surfaces.end()) it = surfaces.insert(surfaces.end(), g.surface);
+    rule.surface.push_back(static_cast<int>(it - surfaces.begin()));
+    rule.dynamic.push_back(!g.body.isWorld() &&
+                           model.bodies[g.body.value].kind == BodyKind::kDynamic);
+    rule.plane.push_back(g.shape.type == contact::ShapeType::kHalfSpace);
+  }
+  const int ns = static_cast<int>(surfaces.size());
+  rule.surface_count = ns;
+  rule.material.assign(static_cast<std::size_t>(ns * ns), default_material_);
+  for (const auto& e : surface_materials_) {
+    const auto a = std::find(surfaces.begin(), surfaces.end(), e.surface_a);
+    const auto b = std::find(surfaces.begin(), surfaces.end(), e.surface_b);
+    if (a == surfaces.end() || b == surfaces.end()) continue;
+    const auto i = static_cast<std::size_t>(a - surfaces.begin());
+    const auto j = static_cast<std::size_t>(b - surfaces.begin());
+    rule.material[i * static_cast<std::size_t>(ns) + j] = e.material;
+    rule.material[j * static_cast<std::size_t>(ns) + i] = e.material;
+  }
+  if (!rule.joined_bodies_collide)
+    for (const Joint& j : model.joints) {
+      auto x = static_cast<std::uint64_t>(static_cast<std::uint32_t>(j.parent.value));
+      auto y = static_cast<std::uint64_t>(static_cast<std::uint32_t>(j.child.value));
+      if (x > y) std::swap(x, y);
+      rule.joined.push_back((x << 32) | y);
+    }
+  std::sort(rule.joined.begin(), rule.joined.end());
+  rule.joined.erase(std::unique(rule.joined.begin(), rule.joined.end()), rule.joined.end());
+  if (default_material_ >= 0) return;
+  // A missing surface-pair material is an error before the run, found over classes of
+  // geometries (surface, filter, kind) with up to two bodies each: linear in geometries.
+  struct Class {
+    int first = -1, other = -1;  // geometries on two different bodies, when there are
   };
-  auto joined = [&](BodyIndex a, BodyIndex b) {
-    for (const Joint& j : model.joints)
-      if ((j.parent == a && j.child == b) || (j.parent == b && j.child == a)) return true;
-    return false;
-  };
-  auto material = [&](const Geometry& a, const Geometry& b) {
-    for (const auto& e : surface_materials_)
-      if ((e.surface_a == a.surface && e.surface_b == b.surface) ||
-          (e.surface_a == b.surface && e.surface_b == a.surface))
-        return e.material;
-    if (default_material_ < 0)
+  std::map<std::tuple<int, std::uint32_t, std::uint32_t, bool, bool>, Class> classes;
+  for (int g = 0; g < n; ++g) {
+    const Geometry& geo = model.geometries[static_cast<std::size_t>(g)];
+    Class& c = classes[{rule.surface[g], geo.collision_group, geo.collision_mask,
+                        rule.dynamic[g] != 0, rule.plane[g] != 0}];
+    if (c.first < 0)
+      c.first = g;
+    else if (c.other < 0 && model.geometries[static_cast<std::size_t>(c.first)].body != geo.body)
+      c.other = g;
+  }
+  for (auto x = classes.begin(); x != classes.end(); ++x)
+    for (auto y = x; y != classes.end(); ++y) {
+      const int g = x->second.first;
+      const int h = x == y ? x->second.other : y->second.first;
+      if (h < 0) continue;
+      int pair = automaticPairId(model, g, h);
+      if (pair < 0 && x != y && y->second.other >= 0)  // the first two share a body
+        pair = automaticPairId(model, g, y->second.other);
+      if (pair < 0) continue;
+      if (automaticPair(model, pair).material >= 0) continue;
+      const Geometry& a = model.geometries[static_cast<std::size_t>(pair / n)];
+      const Geometry& b = model.geometries[static_cast<std::size_t>(pair % n)];
       throw ModelError("automatic contact (" + a.name + ", " + b.name +
                        "): no material for surfaces ('" + a.surface + "', '" + b.surface +
                        "'): give a default material or one for this surface pair");
-    return default_material_;
-  };
-  const bool joined_collide = model.options.collision.joined_bodies_collide;
-  for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j) {
-      const Geometry& gi = model.geometries[i];
-      const Geometry& gj = model.geometries[j];
-      if (gi.body == gj.body || (!dynamic(gi.body) && !dynamic(gj.body))) continue;
-      if (gi.shape.type == contact::ShapeType::kHalfSpace &&
-          gj.shape.type == contact::ShapeType::kHalfSpace)
-        continue;
-      if (!(gi.collision_group & gj.collision_mask) || !(gj.collision_group & gi.collision_mask))
-        continue;
-      if (!joined_collide && joined(gi.body, gj.body)) continue;
-      // Forces are reported on B: B is the dynamic one when only one is, else the later one.
-      const bool swap = !dynamic(gi.body)   ? false
-                        : !dynamic(gj.body) ? true
-                                            : gi.shape.type != contact::ShapeType::kHalfSpace &&
-                                                  gj.shape.type == contact::ShapeType::kHalfSpace;
-      const int a = swap ? j : i, b = swap ? i : j;
-      model.contact_pairs.push_back({a, b, material(gi, gj)});
     }
-  }
 }
 
 void ModelBuilder::addSpring(const std::string& name, BodyIndex a, const Vec3& pa, BodyIndex b,
@@ -218,12 +252,13 @@ void ModelBuilder::addSpring(const std::string& name, BodyIndex a, const Vec3& p
 }
 
 std::optional<BodyIndex> ModelBuilder::findBody(const std::string& name) const {
-  return model_.findBody(name);
+  if (const auto it = body_index_.find(name); it != body_index_.end()) return BodyIndex{it->second};
+  if (name == "world") return BodyIndex::world();
+  return std::nullopt;
 }
 
 std::optional<int> ModelBuilder::findGeometry(const std::string& name) const {
-  for (std::size_t i = 0; i < model_.geometries.size(); ++i)
-    if (model_.geometries[i].name == name) return static_cast<int>(i);
+  if (const auto it = geometry_index_.find(name); it != geometry_index_.end()) return it->second;
   return std::nullopt;
 }
 

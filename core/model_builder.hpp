@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include "core/model.hpp"
 
@@ -106,6 +107,8 @@ class ModelBuilder {
   int default_material_ = -1;
   Model model_;
   SimulationOptions options_;
+  // Name -> index, so that adding n bodies and geometries costs O(n), not O(n^2).
+  std::unordered_map<std::string, int> body_index_, geometry_index_;
 };
 
 }  // namespace tribo

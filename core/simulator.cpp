@@ -130,7 +130,7 @@ StepStatus Simulator::check() {
   for (const contact::StickAnchor& record : state_.friction_states) {
     const double* z = &state_.friction_values[static_cast<std::size_t>(record.state)];
     if (std::all_of(z, z + record.state_size, [](double x) { return std::isfinite(x); })) continue;
-    const ContactPair& pair = m.contact_pairs[contact::keyPair(record.key)];
+    const ContactPair pair = m.contactPair(contact::keyPair(record.key));
     const Geometry& g = m.geometries[pair.geometry_b];
     const std::string name = g.body.isWorld() ? "world" : m.bodies[g.body.value].name;
     return failed(name, "friction_state",
@@ -140,7 +140,7 @@ StepStatus Simulator::check() {
   }
   const Workspace& ws = current();
   for (const auto& c : ws.contacts) {
-    const ContactPair& pair = m.contact_pairs[c.point.pair];
+    const ContactPair pair = m.contactPair(c.point.pair);
     // Deeper than the geometry's half width along the normal: a warning (recorded here,
     // worded after the run), not a stop; a contact that is failing shows as energy rising.
     for (int g : {pair.geometry_a, pair.geometry_b}) {

@@ -368,7 +368,7 @@ StabilityReport estimateStableStep(const Model& model) {
     if (b.kind != BodyKind::kDynamic) drive_speed = std::max(drive_speed, b.velocity.norm());
   }
   std::optional<TurnCheck> turns;  // built at the first box pair
-  for (const ContactPair& pair : model.contact_pairs) {
+  for (const ContactPair& pair : contactPairsToCheck(model)) {
     const Geometry& ga = model.geometries[pair.geometry_a];
     const Geometry& gb = model.geometries[pair.geometry_b];
     auto who = [&] { return "contact pair (" + ga.name + ", " + gb.name + ")"; };

@@ -16,12 +16,13 @@ constexpr double kSignedOffset = 1e-12;  // [m/s]
 
 }  // namespace
 
-OdeSystem::OdeSystem(const Model& model, bool events) : model_(model), events_(events) {
+OdeSystem::OdeSystem(const Model& model, bool events)
+    : model_(model), events_(events), slots_(events ? PairSlots(model) : PairSlots()) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b)
     if (model.bodies[b].kind == BodyKind::kDynamic) dynamic_.push_back(static_cast<int>(b));
   base_.bodies.resize(model.bodies.size());
   scratch_.bodies.resize(model.bodies.size());
-  for (const ContactPair& pair : model.contact_pairs) {
+  for (const ContactPair& pair : slots_.pairs()) {
     const friction::FrictionLaw& law = *model.materials[pair.material].friction;
     PairEvents e;
     std::vector<double> speeds = law.breakpoints();
@@ -61,10 +62,12 @@ void OdeSystem::begin(const State& state, const Workspace& ws, double* y) {
   // Reference directions: the largest slip of each pair that has none yet.
   std::vector<double> best(pairs_.size(), 0.0);
   for (const auto& c : ws.contacts) {
-    PairEvents& e = pairs_[c.point.pair];
+    if (pairs_.empty()) break;  // no events
+    const auto p = static_cast<std::size_t>(slots_.slot(c.point.pair));
+    PairEvents& e = pairs_[p];
     const double s = c.slip.norm();
-    if (e.direction_known || !(s > best[c.point.pair])) continue;
-    best[c.point.pair] = s;
+    if (e.direction_known || !(s > best[p])) continue;
+    best[p] = s;
     e.direction = c.slip / s;
   }
   for (std::size_t p = 0; p < pairs_.size(); ++p)
@@ -158,7 +161,7 @@ void OdeSystem::eventValues(const Workspace& ws, double* g) {
   std::fill(signed_slip_.begin(), signed_slip_.end(), 0.0);
   std::fill(points_.begin(), points_.end(), 0);
   for (const auto& c : ws.contacts) {
-    const int p = c.point.pair;
+    const auto p = static_cast<std::size_t>(slots_.slot(c.point.pair));
     max_slip_[p] = std::max(max_slip_[p], c.slip.norm());
     signed_slip_[p] += c.slip.dot(pairs_[p].direction);
     ++points_[p];
@@ -195,7 +198,7 @@ std::pair<std::string, std::string> OdeSystem::componentName(int i) const {
   if (i >= bodies) {  // an internal friction state: the body B of its contact
     for (const contact::StickAnchor& r : scratch_.friction_states) {
       if (i - bodies < r.state || i - bodies >= r.state + r.state_size) continue;
-      const ContactPair& pair = model_.contact_pairs[contact::keyPair(r.key)];
+      const ContactPair pair = model_.contactPair(contact::keyPair(r.key));
       const BodyIndex b = model_.geometries[pair.geometry_b].body;
       return {b.isWorld() ? "world" : model_.bodies[b.value].name, "friction_state"};
     }

@@ -46,8 +46,7 @@ const std::vector<std::string>& defaultChannelGroups() {
   return names;
 }
 
-std::string pairName(const Model& model, int pair) {
-  const ContactPair& p = model.contact_pairs[static_cast<std::size_t>(pair)];
+std::string pairName(const Model& model, const ContactPair& p) {
   return model.geometries[static_cast<std::size_t>(p.geometry_a)].name + "/" +
          model.geometries[static_cast<std::size_t>(p.geometry_b)].name;
 }
@@ -63,8 +62,11 @@ std::vector<std::string> channelColumns(const Model& model,
     for (const Group& g : bodyGroups())
       if (hasGroup(groups, g.name))
         for (const char* suffix : g.suffixes) names.push_back(b.name + suffix);
+  const PairSlots slots = hasGroup(groups, "pairs") || hasGroup(groups, "friction_states")
+                              ? PairSlots(model)
+                              : PairSlots();
   if (hasGroup(groups, "pairs"))
-    for (int p = 0; p < static_cast<int>(model.contact_pairs.size()); ++p)
+    for (const ContactPair& p : slots.pairs())
       for (const char* suffix : {".normal_force", ".friction_force", ".slip"})
         names.push_back(pairName(model, p) + suffix);
   if (hasGroup(groups, "joints"))
@@ -79,9 +81,8 @@ std::vector<std::string> channelColumns(const Model& model,
     for (const Joint& j : model.joints)
       if (hasScalarCoordinate(j.type) && j.elements.friction)
         add(j.name, *j.elements.friction->law);
-    for (int p = 0; p < static_cast<int>(model.contact_pairs.size()); ++p)
-      add(pairName(model, p),
-          *model.materials[static_cast<std::size_t>(model.contact_pairs[p].material)].friction);
+    for (const ContactPair& p : slots.pairs())
+      add(pairName(model, p), *model.materials[static_cast<std::size_t>(p.material)].friction);
   }
   if (hasGroup(groups, "energy"))
     for (const char* e :

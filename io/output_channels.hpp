@@ -30,7 +30,8 @@
 //                                                       (core/energy.hpp) [J, W]
 // Default: position, velocity, contact (what trajectory.csv always held).
 // A scene with automatic contacts has a pair for every two geometries that may touch: `pairs`
-// then writes three columns for each (choose per-body `contact` and `friction` there).
+// then writes three columns for each, and listing them costs time and memory quadratic in
+// the geometries (choose per-body `contact` and `friction` there).
 // Not here: recording (study/trajectory_recorder.hpp), per-contact-point columns (points
 // come and go, and with them their states).
 #pragma once
@@ -52,7 +53,7 @@ const std::vector<std::string>& defaultChannelGroups();
 std::vector<std::string> channelColumns(const Model& model, const std::vector<std::string>& groups);
 
 // "A/B": the name of contact pair `pair` in column names.
-std::string pairName(const Model& model, int pair);
+std::string pairName(const Model& model, const ContactPair& pair);
 
 // True when `groups` holds `group`.
 bool hasGroup(const std::vector<std::string>& groups, std::string_view group);

@@ -71,7 +71,7 @@ py::dict contactsOf(const Model& model, const Workspace& ws) {
     depth.mutable_at(i) = c.point.depth;
     normal_force.mutable_at(i) = c.normal_force;
     mu.mutable_at(i) = c.mu;
-    const ContactPair& pair = model.contact_pairs[static_cast<std::size_t>(c.point.pair)];
+    const ContactPair pair = model.contactPair(c.point.pair);
     body_a.append(bodyName(pair.geometry_a));
     body_b.append(bodyName(pair.geometry_b));
   }

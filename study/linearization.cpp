@@ -13,7 +13,7 @@ DifferenceSteps chooseSteps(Dynamics& dynamics, const State& at) {
   for (const contact::ContactRecord& rec : ws.contacts) {
     if (rec.point.depth > 0) steps.position = std::min(steps.position, rec.point.depth / 100);
     const double v_stick =
-        m.materials[m.contact_pairs[rec.point.pair].material].friction->stickSpeed();
+        m.materials[m.contactPair(rec.point.pair).material].friction->stickSpeed();
     if (v_stick > 0) steps.velocity = std::min(steps.velocity, v_stick / 100);
   }
   return steps;

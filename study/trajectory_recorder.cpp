@@ -29,7 +29,8 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
     if (joints_ && hasScalarCoordinate(model.joints[static_cast<std::size_t>(j)].type))
       joints_recorded_.push_back({j, jointCoordinate(model.joints[static_cast<std::size_t>(j)])});
-  const std::size_t pairs = model.contact_pairs.size();
+  if (pairs_ || friction_states_) slots_ = PairSlots(model);
+  const std::size_t pairs = slots_.size();
   if (pairs_) {
     pair_normal_.resize(pairs);
     pair_slip_.resize(pairs);
@@ -43,7 +44,7 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
         joint_states_.emplace_back(offsets[j],
                                    model.joints[j].elements.friction->law->dynamic()->stateSize());
     int next = 0;
-    for (const ContactPair& p : model.contact_pairs) {
+    for (const ContactPair& p : slots_.pairs()) {
       const friction::DynamicFrictionLaw* law =
           model.materials[static_cast<std::size_t>(p.material)].friction->dynamic();
       pair_state_offset_.push_back(next);
@@ -74,7 +75,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
     std::fill(normal_.begin(), normal_.end(), 0.0);
     std::fill(friction_.begin(), friction_.end(), Vec3::Zero());
     for (const auto& c : ws.contacts) {
-      const ContactPair& pair = model_.contact_pairs[c.point.pair];
+      const ContactPair pair = model_.contactPair(c.point.pair);
       for (const auto& [g, sign] : {std::pair{pair.geometry_a, -1.0}, {pair.geometry_b, 1.0}}) {
         const BodyIndex b = model_.geometries[g].body;
         if (b.isWorld()) continue;
@@ -89,7 +90,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
     std::fill(pair_slip_.begin(), pair_slip_.end(), 0.0);
     std::fill(pair_friction_.begin(), pair_friction_.end(), Vec3::Zero());
     for (const auto& c : ws.contacts) {
-      const auto p = static_cast<std::size_t>(c.point.pair);
+      const auto p = static_cast<std::size_t>(slots_.slot(c.point.pair));
       pair_normal_[p] += c.normal_force;
       pair_friction_[p] += c.friction_force;
       pair_slip_[p] = std::max(pair_slip_[p], c.slip.norm());
@@ -102,7 +103,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
     for (std::size_t r = 0; r < state.friction_states.size(); ++r) {
       if (r >= ws.friction_state_contact.size() || ws.friction_state_contact[r] < 0) continue;
       const contact::StickAnchor& rec = state.friction_states[r];
-      const auto p = static_cast<std::size_t>(contact::keyPair(rec.key));
+      const auto p = static_cast<std::size_t>(slots_.slot(contact::keyPair(rec.key)));
       const double* z = &state.friction_values[static_cast<std::size_t>(rec.state)];
       for (int i = 0; i < pair_state_size_[p]; ++i)
         pair_state_[static_cast<std::size_t>(pair_state_offset_[p] + i)] += z[i];

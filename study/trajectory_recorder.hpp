@@ -69,6 +69,7 @@ class TrajectoryRecorder {
   std::vector<double> pair_normal_, pair_slip_, pair_state_;
   std::vector<Vec3> pair_friction_;
   std::vector<int> pair_points_;
+  PairSlots slots_;  // pairs and friction_states only: every pair's slot
   // The groups asked for, by flag (io/output_channels.hpp's order).
   bool position_ = false, orientation_ = false, rpy_ = false, velocity_ = false,
        angular_velocity_ = false, contact_ = false, friction_force_ = false, pairs_ = false,

@@ -32,7 +32,7 @@ double energy(const Model& model, const State& s, const Workspace& ws) {
                                           b.angular_velocity) -
              kM * model.options.gravity.dot(b.position);
   for (const auto& c : ws.contacts)
-    e += model.materials[model.contact_pairs[c.point.pair].material].normal.energy(c.point.depth);
+    e += model.materials[model.contactPair(c.point.pair).material].normal.energy(c.point.depth);
   return e;
 }
 

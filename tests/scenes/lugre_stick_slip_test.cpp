@@ -185,7 +185,7 @@ TEST(LuGreStickSlip, TheStateOfOneContactDoesNotLeakIntoAnother) {
   ASSERT_EQ(s.friction_states.size(), 8u);  // four corners each
   int still_records = 0;
   for (const contact::StickAnchor& r : s.friction_states) {
-    const ContactPair& pair = scene.model->contact_pairs[contact::keyPair(r.key)];
+    const ContactPair pair = scene.model->contactPair(contact::keyPair(r.key));
     const bool is_still = scene.model->geometries[pair.geometry_b].name == "still_shape";
     const double* z = &s.friction_values[static_cast<std::size_t>(r.state)];
     const double size = Vec3(z[0], z[1], z[2]).norm();

@@ -1,0 +1,122 @@
+#include "core/automatic_contacts.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/model.hpp"
+
+namespace tribo {
+
+namespace {
+
+std::uint64_t bodyKey(BodyIndex a, BodyIndex b) {
+  auto x = static_cast<std::uint64_t>(static_cast<std::uint32_t>(a.value));
+  auto y = static_cast<std::uint64_t>(static_cast<std::uint32_t>(b.value));
+  if (x > y) std::swap(x, y);
+  return (x << 32) | y;
+}
+
+}  // namespace
+
+int automaticPairId(const Model& model, int g, int h) {
+  const AutomaticContacts& rule = model.automatic;
+  if (g > h) std::swap(g, h);
+  const Geometry& a = model.geometries[static_cast<std::size_t>(g)];
+  const Geometry& b = model.geometries[static_cast<std::size_t>(h)];
+  if (g == h || a.body == b.body) return -1;
+  if (!rule.dynamic[g] && !rule.dynamic[h]) return -1;
+  if (rule.plane[g] && rule.plane[h]) return -1;
+  if (!(a.collision_group & b.collision_mask) || !(b.collision_group & a.collision_mask))
+    return -1;
+  if (!rule.joined_bodies_collide && !rule.joined.empty() &&
+      std::binary_search(rule.joined.begin(), rule.joined.end(), bodyKey(a.body, b.body)))
+    return -1;
+  return g * rule.geometry_count + h;
+}
+
+ContactPair automaticPair(const Model& model, int id) {
+  const AutomaticContacts& rule = model.automatic;
+  const int g = id / rule.geometry_count, h = id % rule.geometry_count;
+  const bool swap = !rule.dynamic[g]   ? false
+                    : !rule.dynamic[h] ? true
+                                       : !rule.plane[g] && rule.plane[h];
+  const int material = rule.material[static_cast<std::size_t>(rule.surface[g] * rule.surface_count +
+                                                              rule.surface[h])];
+  return swap ? ContactPair{h, g, material} : ContactPair{g, h, material};
+}
+
+namespace {
+
+std::vector<int> allAutomaticIds(const Model& model) {
+  std::vector<int> ids;
+  const int n = model.automatic.geometry_count;
+  for (int g = 0; g < n; ++g)
+    for (int h = g + 1; h < n; ++h)
+      if (const int id = automaticPairId(model, g, h); id >= 0) ids.push_back(id);
+  return ids;
+}
+
+}  // namespace
+
+std::vector<ContactPair> allAutomaticPairs(const Model& model) {
+  std::vector<ContactPair> pairs;
+  for (int id : allAutomaticIds(model)) pairs.push_back(automaticPair(model, id));
+  return pairs;
+}
+
+std::vector<ContactPair> representativeAutomaticPairs(const Model& model) {
+  const AutomaticContacts& rule = model.automatic;
+  const int n = rule.geometry_count;
+  auto mass = [&](int g) {
+    return model.bodies[model.geometries[static_cast<std::size_t>(g)].body.value].mass;
+  };
+  // Dynamic geometries of each surface, lightest body first.
+  std::vector<std::vector<int>> by_surface(static_cast<std::size_t>(rule.surface_count));
+  std::vector<int> fixed;
+  for (int g = 0; g < n; ++g)
+    (rule.dynamic[g] ? by_surface[static_cast<std::size_t>(rule.surface[g])] : fixed).push_back(g);
+  for (auto& list : by_surface)
+    std::stable_sort(list.begin(), list.end(), [&](int x, int y) { return mass(x) < mass(y); });
+  constexpr std::size_t kTried = 64;
+  std::vector<int> ids;
+  for (int g = 0; g < n; ++g) {
+    if (!rule.dynamic[g]) continue;
+    for (int f : fixed)
+      if (const int id = automaticPairId(model, g, f); id >= 0) ids.push_back(id);
+    for (const auto& list : by_surface)
+      for (std::size_t i = 0; i < std::min(list.size(), kTried); ++i)
+        if (const int id = automaticPairId(model, g, list[i]); id >= 0) {
+          ids.push_back(id);
+          break;
+        }
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  std::vector<ContactPair> pairs;
+  pairs.reserve(ids.size());
+  for (int id : ids) pairs.push_back(automaticPair(model, id));
+  return pairs;
+}
+
+std::vector<ContactPair> contactPairsToCheck(const Model& model) {
+  return model.automatic_contacts ? representativeAutomaticPairs(model) : model.contact_pairs;
+}
+
+
+PairSlots::PairSlots(const Model& model) {
+  if (!model.automatic_contacts) {
+    pairs_ = model.contact_pairs;
+    return;
+  }
+  automatic_ = true;
+  ids_ = allAutomaticIds(model);
+  pairs_.reserve(ids_.size());
+  for (int id : ids_) pairs_.push_back(automaticPair(model, id));
+}
+
+int PairSlots::slot(int id) const {
+  if (!automatic_) return id;
+  return static_cast<int>(std::lower_bound(ids_.begin(), ids_.end(), id) - ids_.begin());
+}
+
+}  // namespace tribo
