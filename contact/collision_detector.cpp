@@ -150,7 +150,7 @@ struct Candidate {
 
 struct CollisionDetector::Impl {
   std::vector<Shape> shapes;
-  std::vector<Candidate> listed;          // listed pairs, by id (empty with a rule)
+  std::vector<Candidate> listed;         // listed pairs, by id (empty with a rule)
   std::unique_ptr<const PairRule> rule;  // pairs on demand (null with a list)
   CollisionOptions options;
   bool any_fcl_pair = false;
@@ -373,8 +373,7 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
 }
 
 CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
-                                     std::unique_ptr<const PairRule> rule,
-                                     CollisionOptions options)
+                                     std::unique_ptr<const PairRule> rule, CollisionOptions options)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.shapes = std::move(shapes);

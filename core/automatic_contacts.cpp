@@ -26,8 +26,7 @@ int automaticPairId(const Model& model, int g, int h) {
   if (g == h || a.body == b.body) return -1;
   if (!rule.dynamic[g] && !rule.dynamic[h]) return -1;
   if (rule.plane[g] && rule.plane[h]) return -1;
-  if (!(a.collision_group & b.collision_mask) || !(b.collision_group & a.collision_mask))
-    return -1;
+  if (!(a.collision_group & b.collision_mask) || !(b.collision_group & a.collision_mask)) return -1;
   if (!rule.joined_bodies_collide && !rule.joined.empty() &&
       std::binary_search(rule.joined.begin(), rule.joined.end(), bodyKey(a.body, b.body)))
     return -1;
@@ -101,7 +100,6 @@ std::vector<ContactPair> representativeAutomaticPairs(const Model& model) {
 std::vector<ContactPair> contactPairsToCheck(const Model& model) {
   return model.automatic_contacts ? representativeAutomaticPairs(model) : model.contact_pairs;
 }
-
 
 PairSlots::PairSlots(const Model& model) {
   if (!model.automatic_contacts) {

@@ -430,8 +430,7 @@ void Dynamics::stepFrictionStates(State& state, double h) const {
     if (r >= ws_.friction_state_contact.size() || ws_.friction_state_contact[r] < 0) continue;
     const contact::ContactRecord& rec =
         ws_.contacts[static_cast<std::size_t>(ws_.friction_state_contact[r])];
-    const friction::DynamicFrictionLaw& law =
-        *dynamic_law_[m.contactPair(rec.point.pair).material];
+    const friction::DynamicFrictionLaw& law = *dynamic_law_[m.contactPair(rec.point.pair).material];
     const contact::StickAnchor& record = state.friction_states[r];
     double* stored = &state.friction_values[static_cast<std::size_t>(record.state)];
     contact::transportState(law, stored, record.normal, rec.point.normal, z.data());

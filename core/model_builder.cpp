@@ -5,8 +5,8 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <tuple>
 #include <sstream>
+#include <tuple>
 
 #include "core/constraint_rows.hpp"
 #include "core/number_text.hpp"

@@ -89,7 +89,7 @@ class OdeSystem {
   std::vector<int> dynamic_;  // model body index of each block of y
   State base_;                // segment start (kinematic bodies' poses)
   State scratch_;             // the state of the current evaluation
-  PairSlots slots_;  // events only: per pair
+  PairSlots slots_;           // events only: per pair
   std::vector<PairEvents> pairs_;
   int event_count_ = 0;
   // Event values at the last evaluation, and where it was.

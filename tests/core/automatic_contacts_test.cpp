@@ -8,8 +8,8 @@
 
 #include <atomic>
 #include <cmath>
-#include <iostream>
 #include <cstdlib>
+#include <iostream>
 #include <map>
 #include <new>
 #include <random>
@@ -66,7 +66,9 @@ struct Reference {
 };
 
 // The documented rule, read directly off the geometries (no shared code with the engine).
-std::vector<Reference> referencePairs(const Model& m, const std::map<std::pair<std::string, std::string>, int>& by_surface, int fallback) {
+std::vector<Reference> referencePairs(
+    const Model& m, const std::map<std::pair<std::string, std::string>, int>& by_surface,
+    int fallback) {
   std::vector<Reference> out;
   const int n = static_cast<int>(m.geometries.size());
   auto dynamic = [&](const Geometry& g) {
@@ -78,7 +80,8 @@ std::vector<Reference> referencePairs(const Model& m, const std::map<std::pair<s
       const Geometry& g = m.geometries[i];
       const Geometry& h = m.geometries[j];
       if (g.body == h.body || (!dynamic(g) && !dynamic(h)) || (plane(g) && plane(h))) continue;
-      if ((g.collision_group & h.collision_mask) == 0 || (h.collision_group & g.collision_mask) == 0)
+      if ((g.collision_group & h.collision_mask) == 0 ||
+          (h.collision_group & g.collision_mask) == 0)
         continue;
       bool joined = false;
       for (const Joint& jt : m.joints)
@@ -86,8 +89,10 @@ std::vector<Reference> referencePairs(const Model& m, const std::map<std::pair<s
                  (jt.parent == h.body && jt.child == g.body);
       if (joined && !m.options.collision.joined_bodies_collide) continue;
       int mat = fallback;
-      if (auto it = by_surface.find({g.surface, h.surface}); it != by_surface.end()) mat = it->second;
-      if (auto it = by_surface.find({h.surface, g.surface}); it != by_surface.end()) mat = it->second;
+      if (auto it = by_surface.find({g.surface, h.surface}); it != by_surface.end())
+        mat = it->second;
+      if (auto it = by_surface.find({h.surface, g.surface}); it != by_surface.end())
+        mat = it->second;
       // B: the dynamic one when only one is; A the half-space when there is one; else h.
       const bool swap = dynamic(g) && (!dynamic(h) || (!plane(g) && plane(h)));
       out.push_back(swap ? Reference{j, i, mat} : Reference{i, j, mat});
@@ -130,7 +135,7 @@ RandomModel randomModel(int geometries, unsigned seed, bool joined_collide) {
       bodies.push_back(body);
       moves.push_back(nb.kind == BodyKind::kDynamic);
     }
-    const contact::Shape shape = unit(rng) < 0.1 ? contact::Shape::halfSpace()
+    const contact::Shape shape = unit(rng) < 0.1   ? contact::Shape::halfSpace()
                                  : unit(rng) < 0.5 ? contact::Shape::sphere(0.01 + unit(rng))
                                                    : contact::Shape::box(Vec3(0.1, 0.2, 0.3));
     const int id = b.addGeometry(numbered("g", g), body, shape);
@@ -214,8 +219,9 @@ std::shared_ptr<const Model> pile(int count, double size, bool listed) {
     body.position = Vec3(size * 1.4 * (i % 2) + shift, size * 1.4 * ((i / 2) % 2) + shift,
                          size * (1 + 1.9 * layer));
     body.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * i, Vec3(1, 2, 3).normalized()));
-    b.addGeometry(numbered("s", i), b.addBody(body),
-                  i % 2 ? contact::Shape::sphere(s / 2) : contact::Shape::box(Vec3::Constant(s / 2)));
+    b.addGeometry(
+        numbered("s", i), b.addBody(body),
+        i % 2 ? contact::Shape::sphere(s / 2) : contact::Shape::box(Vec3::Constant(s / 2)));
   }
   std::shared_ptr<const Model> automatic = b.build();
   if (!listed) return automatic;

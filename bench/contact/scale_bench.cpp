@@ -1,0 +1,146 @@
+// Scale: grids of side x side resting boxes (0.2 m, 8 kg, 0.25 m pitch, as
+// scenes/box_grid20.yaml) on a half-space, from 10 x 10 to 141 x 141 (19 881 boxes),
+// automatic contacts.
+// Times are processor time of the process (one thread).
+// - BM_GridSetUp/side: the scene text loaded, the model built, a Dynamics made and its first
+//   evaluation: seconds (and the loading's share), heap held afterwards (glibc's mallinfo2, bytes
+//   in use) in MB and per box, and the process's peak resident set (VmHWM; meaningful when the
+//   benchmark runs alone in its process: --benchmark_filter='BM_GridSetUp/70$').
+// - BM_GridStep/side: semi-implicit Euler steps at 1 ms: microseconds a step and a box.
+// - BM_GridGrowth: 10 x 10 and 70 x 70 stepped in the same iteration; the growth exponent
+//   log(t_70 / t_10) / log(4900 / 100) of the step's cost (1: linear in the boxes).
+#include <benchmark/benchmark.h>
+#include <malloc.h>
+
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/dynamics.hpp"
+#include "core/simulator.hpp"
+#include "io/scene_loader.hpp"
+
+namespace {
+
+std::string boxGridYaml(int side) {
+  std::ostringstream y;
+  y << "parameters: {k: 6.0e5, c: 1000.0}\n"
+       "simulation: {duration: 10, time_step: 1.0e-3, integrator: semi_implicit_euler}\n"
+       "friction_laws: {coulomb: {mu: 0.5, regularization: tanh, v_eps: 0.01}}\n"
+       "materials:\n"
+       "  - {name: ground_box, normal: {law: linear, stiffness: $k, damping: $c}, "
+       "friction: coulomb, default: true}\n"
+       "bodies:\n"
+       "  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: halfspace}]}\n";
+  y.precision(17);
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j)
+      y << "  - {name: b" << i << "_" << j << ", mass: 8.0, position: [" << 0.25 * i << ", "
+        << 0.25 * j << ", " << 0.1 - 8.0 * 9.81 / (4 * 6.0e5) << "], geometry: [{name: s" << i
+        << "_" << j << ", shape: box, size: [0.2, 0.2, 0.2]}]}\n";
+  return y.str();
+}
+
+double peakRssMb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return 0.0;
+}
+
+// Processor time of the process [s]: the figures are taken on a shared machine, where wall
+// time counts other jobs too; one thread runs here.
+double cpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double heapInUse() { return static_cast<double>(mallinfo2().uordblks); }
+
+void BM_GridSetUp(benchmark::State& st) {
+  const int side = static_cast<int>(st.range(0));
+  const std::string text = boxGridYaml(side);
+  double seconds = 0, loading = 0, held = 0;
+  for (auto _ : st) {
+    const double before = heapInUse();
+    const double t0 = cpuSeconds();
+    const auto scene = tribo::io::loadSceneFromString(text, "grid.yaml");
+    const double t1 = cpuSeconds();
+    tribo::Dynamics dynamics(scene.model);
+    const tribo::State s = dynamics.initialState();
+    benchmark::DoNotOptimize(dynamics.evaluate(s).contacts.size());
+    seconds += cpuSeconds() - t0;
+    loading += t1 - t0;
+    held = heapInUse() - before;
+  }
+  const double boxes = side * side;
+  st.counters["setup_s"] = seconds / static_cast<double>(st.iterations());
+  st.counters["load_s"] = loading / static_cast<double>(st.iterations());
+  st.counters["heap_MB"] = held / 1e6;
+  st.counters["heap_per_box_kB"] = held / boxes / 1e3;
+  st.counters["peak_rss_MB"] = peakRssMb();
+}
+
+double stepSeconds(const std::shared_ptr<const tribo::Model>& model, int steps) {
+  tribo::Simulator sim(model);
+  for (int i = 0; i < 20; ++i) sim.step();  // warm: buffers at their working size
+  const double t0 = cpuSeconds();
+  for (int i = 0; i < steps; ++i)
+    if (!sim.step().ok) return -1.0;
+  return (cpuSeconds() - t0) / steps;
+}
+
+void BM_GridStep(benchmark::State& st) {
+  const int side = static_cast<int>(st.range(0));
+  const auto scene = tribo::io::loadSceneFromString(boxGridYaml(side), "grid.yaml");
+  const int steps = std::max(20, 200000 / (side * side));
+  double total = 0;
+  for (auto _ : st) {
+    const double s = stepSeconds(scene.model, steps);
+    if (s < 0) {
+      st.SkipWithError("diverged");
+      return;
+    }
+    total += s;
+  }
+  const double per_step = total / static_cast<double>(st.iterations());
+  st.counters["step_us"] = 1e6 * per_step;
+  st.counters["per_box_us"] = 1e6 * per_step / (side * side);
+}
+
+void BM_GridGrowth(benchmark::State& st) {
+  const auto small = tribo::io::loadSceneFromString(boxGridYaml(10), "grid.yaml");
+  const auto large = tribo::io::loadSceneFromString(boxGridYaml(70), "grid.yaml");
+  double t_small = 0, t_large = 0;
+  for (auto _ : st) {
+    t_small += stepSeconds(small.model, 2000);
+    t_large += stepSeconds(large.model, 40);
+  }
+  st.counters["exponent"] = std::log(t_large / t_small) / std::log(4900.0 / 100.0);
+  st.counters["per_box_us_100"] = 1e6 * t_small / static_cast<double>(st.iterations()) / 100;
+  st.counters["per_box_us_4900"] = 1e6 * t_large / static_cast<double>(st.iterations()) / 4900;
+}
+
+}  // namespace
+
+BENCHMARK(BM_GridSetUp)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(70)
+    ->Arg(141)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_GridStep)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(70)
+    ->Arg(141)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_GridGrowth)->Unit(benchmark::kMillisecond)->Iterations(3);
