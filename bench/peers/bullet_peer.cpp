@@ -112,6 +112,7 @@ PeerRun runBullet(const PeerScene& scene) {
     if (dynamic[b]) {
       const btVector3& o = dynamic[b]->getWorldTransform().getOrigin();
       positions[b] = {o.x(), o.y(), o.z()};
+      run.max_speed = std::max(run.max_speed, double(dynamic[b]->getLinearVelocity().length()));
       if (!std::isfinite(positions[b].norm())) run.error = "diverged";
     }
   }

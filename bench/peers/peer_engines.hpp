@@ -17,10 +17,11 @@ PeerRun runBullet(const PeerScene& scene);
 PeerRun runBulletBelt(const BeltSpec& belt);
 std::string bulletVersion();
 
-// MuJoCo: the scene as MJCF (free joints, its default soft contacts, pyramidal cones, Newton
-// solver), semi-implicit Euler (its "Euler"). `max_bytes`: a run whose constraint arrays
-// (sized by njmax x nv and njmax x njmax in MuJoCo 2.2) would take more is not made.
-PeerRun runMujoco(const PeerScene& scene, double max_bytes);
+// MuJoCo: the scene as MJCF (free joints, its default soft contacts, pyramidal cones),
+// semi-implicit Euler (its "Euler"), `solver` "Newton" (its default), "CG" or "PGS".
+// `max_bytes`: a run whose constraint arrays (sized by njmax x nv and njmax x njmax in MuJoCo
+// 2.2) would take more is not made.
+PeerRun runMujoco(const PeerScene& scene, double max_bytes, const std::string& solver);
 PeerRun runMujocoBelt(const BeltSpec& belt);
 std::string mujocoVersion();
 

@@ -80,6 +80,7 @@ struct PeerRun {
   double penetration = 0.0;  // deepest contact after the last step [m]
   double drift = 0.0;        // largest horizontal displacement [m] (grids), 0 otherwise
   double points = 0.0;       // contact points after the last step
+  double max_speed = 0.0;    // fastest dynamic body after the last step [m/s] (at rest: ~0)
   double belt_error = 0.0;   // belt: |x(T) - exactX(T)| [m]
   std::string error;         // non-empty: the run failed or was not made (and why)
 };

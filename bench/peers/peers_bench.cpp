@@ -21,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
@@ -39,6 +40,11 @@ struct Case {
   int grid = 0;         // generated box grid of grid x grid boxes
   bool box_ground = false;
   double seconds = 2.0;  // simulated per run
+  std::vector<std::string> overrides = {};  // the scene's parameters changed (--set)
+  bool tribo_only = false;                  // a Tribo setting of a scene the peers ran already
+  // MuJoCo's solver: Newton, its default, except for the pile, where the spheres touching
+  // each other make Newton's Hessian dense (96 s of CPU for the 2 s against 7.5 s with CG).
+  std::string mujoco_solver = "Newton";
 };
 
 // Scenes loaded once per process (the 70 x 70 grid takes seconds to parse).
@@ -55,10 +61,10 @@ const tribo::io::Scene& scene(const Case& c) {
           tribo::io::loadScene(kScenes + c.file, {"friction=coulomb"}, {}, settings));
     } else if (!c.file.empty()) {
       slot = std::make_unique<tribo::io::Scene>(
-          tribo::io::loadScene(kScenes + c.file, {}, {}, settings));
+          tribo::io::loadScene(kScenes + c.file, c.overrides, {}, settings));
     } else {
       slot = std::make_unique<tribo::io::Scene>(tribo::io::loadSceneFromString(
-          tribo::peers::boxGridYaml(c.grid, c.box_ground), c.name, {}, {}, settings));
+          tribo::peers::boxGridYaml(c.grid, c.box_ground), c.name, c.overrides, {}, settings));
     }
   }
   return *slot;
@@ -102,9 +108,10 @@ void report(benchmark::State& st, const Case& c, const PeerRun& run, double dt, 
   st.counters["points"] = run.points;
   st.counters["points_per_s"] = run.points / per_step;
   st.counters["penetration_um"] = run.penetration * 1e6;
+  st.counters["max_speed_mm_s"] = run.max_speed * 1e3;
   if (c.file == "belt.yaml")
     st.counters["belt_err_um"] = run.belt_error * 1e6;
-  else
+  else if (c.name.find("grid") != std::string::npos)
     st.counters["drift_um"] = run.drift * 1e6;
   if (tribo) {
     triboPerSimMs()[c.name] = {per_sim_ms, cpu_per_sim_ms};
@@ -132,6 +139,9 @@ PeerRun runTribo(const Case& c, const tribo::io::Scene& s) {
   const tribo::Workspace& w = sim.current();
   run.penetration = w.max_penetration;
   run.points = static_cast<double>(w.contacts.size());
+  for (std::size_t b = 0; b < s.model->bodies.size(); ++b)
+    if (s.model->bodies[b].kind == tribo::BodyKind::kDynamic)
+      run.max_speed = std::max(run.max_speed, sim.state().bodies[b].velocity.norm());
   if (c.file == "belt.yaml") {
     const int box = 1;
     run.belt_error = std::abs(sim.state().bodies[box].position.x() -
@@ -166,13 +176,15 @@ void BM_Peers(benchmark::State& st, const Case& c, Engine engine) {
 #endif
     } else {
       // Every peer at 1 ms, whatever step Tribo's scene needs.
-      const tribo::peers::PeerScene peer = tribo::peers::peerSceneFrom(
+      tribo::peers::PeerScene peer = tribo::peers::peerSceneFrom(
           *s.model, parameter(s, "mu"), std::lround(c.seconds / 1e-3));
+      peer.dt = 1e-3;
 #ifdef TRIBO_PEER_BULLET
       if (engine == Engine::kBullet) run = tribo::peers::runBullet(peer);
 #endif
 #ifdef TRIBO_PEER_MUJOCO
-      if (engine == Engine::kMujoco) run = tribo::peers::runMujoco(peer, 3e9);
+      if (engine == Engine::kMujoco)
+        run = tribo::peers::runMujoco(peer, 3e9, c.mujoco_solver);
 #endif
     }
     if (!run.error.empty()) {
@@ -188,11 +200,17 @@ const Case kCases[] = {
     {"box_grid10_box_ground", "", 10, true, 2.0},
     {"box_grid20", "box_grid20.yaml", 20, false, 2.0},
     {"box_grid20_box_ground", "box_grid20_box_ground.yaml", 20, true, 2.0},
+    // Stiffer corners (16.4 um static depth, MuJoCo's 17 um here) at the step they need.
+    {"box_grid20_stiff", "box_grid20.yaml", 20, false, 2.0, {"k=1.2e6", "dt=5e-4"}, true},
+    {"box_grid20_stiff_rk4", "box_grid20.yaml", 20, false, 2.0, {"k=1.2e6", "integrator=rk4"},
+     true},
     {"box_grid40", "", 40, false, 0.5},
     {"box_grid40_box_ground", "", 40, true, 0.5},
     {"box_grid70", "", 70, false, 0.2},
     {"box_grid70_box_ground", "", 70, true, 0.2},
-    {"sphere_pile_stiff", "sphere_pile_stiff.yaml", 0, false, 2.0},
+    {"sphere_pile_stiff", "sphere_pile_stiff.yaml", 0, false, 2.0, {}, false, "CG"},
+    {"sphere_pile_stiff_rk4", "sphere_pile_stiff.yaml", 0, false, 2.0, {"integrator=rk4"}, true},
+    {"sphere_pile", "sphere_pile.yaml", 0, false, 2.0, {}, true},
     {"belt", "belt.yaml", 0, false, 2.0},
 };
 
@@ -206,6 +224,7 @@ const bool kRegistered = [] {
           ->Unit(benchmark::kMillisecond);
     };
     add("tribo", Engine::kTribo);
+    if (c.tribo_only) continue;
 #ifdef TRIBO_PEER_BULLET
     add("bullet", Engine::kBullet);
 #endif
