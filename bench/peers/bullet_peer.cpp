@@ -19,7 +19,8 @@ namespace {
 btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 btTransform bt(const Eigen::Isometry3d& t) {
   const Eigen::Quaterniond q(t.linear());
-  return btTransform(btQuaternion(q.x(), q.y(), q.z(), q.w()), bt(Eigen::Vector3d(t.translation())));
+  return btTransform(btQuaternion(q.x(), q.y(), q.z(), q.w()),
+                     bt(Eigen::Vector3d(t.translation())));
 }
 
 // A world and everything it owns.
@@ -144,10 +145,11 @@ PeerRun runBulletBelt(const BeltSpec& belt) {
   run.steps = belt.steps;
   const StepTimer timer;
   for (long i = 0; i < belt.steps; ++i) {
-    belt_pose.setOrigin(btVector3(belt.belt_speed * belt.dt * static_cast<double>(i + 1), 0,
-                                  -belt_half.z()));
+    belt_pose.setOrigin(
+        btVector3(belt.belt_speed * belt.dt * static_cast<double>(i + 1), 0, -belt_half.z()));
     belt_body->getMotionState()->setWorldTransform(belt_pose);
-    box->applyCentralForce(btVector3(-belt.spring * box->getWorldTransform().getOrigin().x(), 0, 0));
+    box->applyCentralForce(
+        btVector3(-belt.spring * box->getWorldTransform().getOrigin().x(), 0, 0));
     w.world.stepSimulation(belt.dt, 1, belt.dt);
   }
   timer.stop(run);

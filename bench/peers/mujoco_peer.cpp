@@ -181,8 +181,8 @@ PeerRun runMujocoBelt(const BeltSpec& belt) {
     << "    <body name=\"block\" pos=\"0 0 " << h.z() << "\"><joint name=\"x\" type=\"slide\" "
     << "axis=\"1 0 0\" stiffness=\"" << belt.spring << "\"/><joint name=\"z\" type=\"slide\" "
     << "axis=\"0 0 1\"/><inertial pos=\"0 0 0\" mass=\"" << belt.mass << "\" diaginertia=\""
-    << inertia << " " << inertia << " " << inertia << "\"/><geom type=\"box\" size=\""
-    << vec(h) << "\"/></body>\n"
+    << inertia << " " << inertia << " " << inertia << "\"/><geom type=\"box\" size=\"" << vec(h)
+    << "\"/></body>\n"
     << "  </worldbody>\n</mujoco>\n";
   Loaded l;
   load(x.str(), l, run.error);

@@ -89,8 +89,8 @@ std::string boxGridYaml(int n, bool box_ground) {
   const double z0 = size / 2 - mass * 9.81 / (4 * k);
   char line[256];
   std::string text;
-  std::snprintf(line, sizeof line, "# %d x %d boxes of 0.2 m, 8 kg, at a 0.25 m pitch on %s.\n",
-                n, n, box_ground ? "a kinematic box" : "a half-space");
+  std::snprintf(line, sizeof line, "# %d x %d boxes of 0.2 m, 8 kg, at a 0.25 m pitch on %s.\n", n,
+                n, box_ground ? "a kinematic box" : "a half-space");
   text += line;
   text += R"(parameters:
   k: 6.0e5

@@ -38,9 +38,9 @@ struct PeerBody {
 struct PeerScene {
   std::vector<PeerBody> bodies;
   Eigen::Vector3d gravity{0, 0, -9.81};
-  double mu = 0.5;       // Coulomb friction coefficient of every pair
-  double dt = 1e-3;      // [s]
-  long steps = 2000;     // steps of one measured run
+  double mu = 0.5;    // Coulomb friction coefficient of every pair
+  double dt = 1e-3;   // [s]
+  long steps = 2000;  // steps of one measured run
 };
 
 // Every body of `model` (dynamic ones with one geometry at their centre and a diagonal
@@ -55,12 +55,12 @@ double horizontalDrift(const PeerScene& scene, const std::vector<Eigen::Vector3d
 // all the time (slip speed v_b - xdot > 0) and x(t) = x_eq (1 - cos(w t)), x_eq = mu m g / k,
 // w = sqrt(k / m): the reference the engines are measured against.
 struct BeltSpec {
-  double mass = 10.0;                                            // [kg]
-  double spring = 300.0;                                         // [N/m]
-  double belt_speed = 1.5;                                       // [m/s]
-  double mu = 0.3;                                               // Coulomb
-  Eigen::Vector3d half_extents{0.1, 0.1, 0.05};                  // box [m]
-  double dt = 1e-3;                                              // [s]
+  double mass = 10.0;                            // [kg]
+  double spring = 300.0;                         // [N/m]
+  double belt_speed = 1.5;                       // [m/s]
+  double mu = 0.3;                               // Coulomb
+  Eigen::Vector3d half_extents{0.1, 0.1, 0.05};  // box [m]
+  double dt = 1e-3;                              // [s]
   long steps = 2000;
   double g = 9.81;  // [m/s^2]
   double exactX(double t) const;

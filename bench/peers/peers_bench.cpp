@@ -36,10 +36,10 @@ const std::string kScenes = std::string(TRIBO_SOURCE_DIR) + "/scenes/";
 
 struct Case {
   std::string name;
-  std::string file;     // under scenes/, or empty: generated
-  int grid = 0;         // generated box grid of grid x grid boxes
+  std::string file;  // under scenes/, or empty: generated
+  int grid = 0;      // generated box grid of grid x grid boxes
   bool box_ground = false;
-  double seconds = 2.0;  // simulated per run
+  double seconds = 2.0;                     // simulated per run
   std::vector<std::string> overrides = {};  // the scene's parameters changed (--set)
   bool tribo_only = false;                  // a Tribo setting of a scene the peers ran already
   // MuJoCo's solver: Newton, its default, except for the pile, where the spheres touching
@@ -149,9 +149,9 @@ PeerRun runTribo(const Case& c, const tribo::io::Scene& s) {
   } else {
     for (std::size_t b = 0; b < start.bodies.size(); ++b)
       if (s.model->bodies[b].kind == tribo::BodyKind::kDynamic)
-        run.drift = std::max(
-            run.drift,
-            (sim.state().bodies[b].position - start.bodies[b].position).head<2>().norm());
+        run.drift =
+            std::max(run.drift,
+                     (sim.state().bodies[b].position - start.bodies[b].position).head<2>().norm());
   }
   return run;
 }
@@ -176,15 +176,14 @@ void BM_Peers(benchmark::State& st, const Case& c, Engine engine) {
 #endif
     } else {
       // Every peer at 1 ms, whatever step Tribo's scene needs.
-      tribo::peers::PeerScene peer = tribo::peers::peerSceneFrom(
-          *s.model, parameter(s, "mu"), std::lround(c.seconds / 1e-3));
+      tribo::peers::PeerScene peer =
+          tribo::peers::peerSceneFrom(*s.model, parameter(s, "mu"), std::lround(c.seconds / 1e-3));
       peer.dt = 1e-3;
 #ifdef TRIBO_PEER_BULLET
       if (engine == Engine::kBullet) run = tribo::peers::runBullet(peer);
 #endif
 #ifdef TRIBO_PEER_MUJOCO
-      if (engine == Engine::kMujoco)
-        run = tribo::peers::runMujoco(peer, 3e9, c.mujoco_solver);
+      if (engine == Engine::kMujoco) run = tribo::peers::runMujoco(peer, 3e9, c.mujoco_solver);
 #endif
     }
     if (!run.error.empty()) {
@@ -202,7 +201,12 @@ const Case kCases[] = {
     {"box_grid20_box_ground", "box_grid20_box_ground.yaml", 20, true, 2.0},
     // Stiffer corners (16.4 um static depth, MuJoCo's 17 um here) at the step they need.
     {"box_grid20_stiff", "box_grid20.yaml", 20, false, 2.0, {"k=1.2e6", "dt=5e-4"}, true},
-    {"box_grid20_stiff_rk4", "box_grid20.yaml", 20, false, 2.0, {"k=1.2e6", "integrator=rk4"},
+    {"box_grid20_stiff_rk4",
+     "box_grid20.yaml",
+     20,
+     false,
+     2.0,
+     {"k=1.2e6", "integrator=rk4"},
      true},
     {"box_grid40", "", 40, false, 0.5},
     {"box_grid40_box_ground", "", 40, true, 0.5},
