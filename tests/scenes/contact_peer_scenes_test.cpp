@@ -90,7 +90,7 @@ TEST(PeerScenes, BoxGridOnABoxGroundRestsAtTheStaticCornerDepthAsOnAHalfSpace) {
     const std::vector<std::string> set{"k=" + std::to_string(k), "dt=" + std::to_string(dt)};
     const double static_depth = 8.0 * 9.81 / (4 * k);
     for (const char* file : {"box_grid20_box_ground.yaml", "box_grid20.yaml"}) {
-      const Rest r = settle(file, set, 0.5);
+      const Rest r = settle(file, set, 0.25);
       EXPECT_EQ(r.points, 1600u) << file << " k " << k;  // four corners under each box
       EXPECT_NEAR(r.min_depth / static_depth, 1.0, 1e-3) << file << " k " << k;
       EXPECT_NEAR(r.max_depth / static_depth, 1.0, 1e-3) << file << " k " << k;
