@@ -45,7 +45,7 @@ Rest settle(const std::string& file, const std::vector<std::string>& overrides, 
   const auto support = [&](const Workspace& w) {
     double f = 0;
     for (const auto& rec : w.contacts) {
-      const ContactPair& pair = m.contact_pairs[static_cast<std::size_t>(rec.point.pair)];
+      const ContactPair pair = m.contactPair(rec.point.pair);
       if (kind(pair.geometry_a) == BodyKind::kKinematic) f += rec.force().z();  // force on B
       if (kind(pair.geometry_b) == BodyKind::kKinematic) f -= rec.force().z();
     }
