@@ -57,6 +57,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
     inv_inertia_body_.push_back(b.kind == BodyKind::kDynamic ? Mat3(b.inertia.inverse())
                                                              : Mat3::Zero());
   ws_.geometry_poses.assign(model_->geometries.size(), Eigen::Isometry3d::Identity());
+  geometry_motion_.resize(model_->geometries.size());
   ws_.contact_wrench.assign(nb, {});
   ws_.spring_wrench.assign(nb, {});
   ws_.joint_wrench.assign(nb, {});
@@ -161,11 +162,16 @@ void Dynamics::detect() {
 void Dynamics::contactKinematics(const State& state) {
   const Model& m = *model_;
   ws_.max_penetration = 0.0;
+  if (ws_.contact_points.empty()) return;
+  // Each geometry's motion once per evaluation, not once per contact point and side.
+  for (std::size_t g = 0; g < m.geometries.size(); ++g)
+    geometry_motion_[g] = motionOf(m, state, ws_, static_cast<int>(g));
   for (std::size_t i = 0; i < ws_.contact_points.size(); ++i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
     const ContactPair& pair = m.contact_pairs[cp.pair];
-    contact::contactKinematics(cp, motionOf(m, state, ws_, pair.geometry_a),
-                               motionOf(m, state, ws_, pair.geometry_b), ws_.contacts[i]);
+    contact::contactKinematics(cp, geometry_motion_[static_cast<std::size_t>(pair.geometry_a)],
+                               geometry_motion_[static_cast<std::size_t>(pair.geometry_b)],
+                               ws_.contacts[i]);
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
   }
 }
