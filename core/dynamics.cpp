@@ -39,7 +39,7 @@ contact::AnchorFrames anchorFrames(const Model& model, const Workspace& ws,
           surfaceVelocityOf(model, ws.rotation, pair.geometry_b)};
 }
 
-void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
+inline void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
   w.force += force;
   w.torque += (point - origin).cross(force);
 }
