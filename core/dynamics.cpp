@@ -58,6 +58,8 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
                                                              : Mat3::Zero());
   ws_.geometry_poses.assign(model_->geometries.size(), Eigen::Isometry3d::Identity());
   geometry_motion_.resize(model_->geometries.size());
+  for (const Geometry& g : model_->geometries)
+    at_body_origin_.push_back(g.local_pose.matrix() == Eigen::Matrix4d::Identity() ? 1 : 0);
   ws_.contact_wrench.assign(nb, {});
   ws_.spring_wrench.assign(nb, {});
   ws_.joint_wrench.assign(nb, {});
@@ -146,10 +148,10 @@ void Dynamics::updatePoses(const State& state) {
       ws_.geometry_poses[g] = geo.local_pose;
     } else {
       const BodyState& s = state.bodies[geo.body.value];
-      Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
-      body.linear() = ws_.rotation[geo.body.value];
-      body.translation() = s.position;
-      ws_.geometry_poses[g] = body * geo.local_pose;
+      Eigen::Isometry3d& pose = ws_.geometry_poses[g];
+      pose.linear() = ws_.rotation[geo.body.value];
+      pose.translation() = s.position;
+      if (!at_body_origin_[g]) pose = pose * geo.local_pose;  // else the body's own frame
     }
   }
 }

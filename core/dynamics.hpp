@@ -109,6 +109,7 @@ class Dynamics {
   Workspace ws_;
   std::vector<Mat3> inv_inertia_body_;                    // per body, zero for kinematic bodies
   std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
+  std::vector<char> at_body_origin_;     // per geometry: its local pose is the identity
   std::vector<char> stateful_material_;  // per material: its friction law keeps state
   bool any_stateful_ = false;
   contact::AnchorBook anchor_book_;
