@@ -175,9 +175,50 @@ namespace {
 //                  h = w_C x (w_C x r_C) - w_P x (w_P x r_P)
 //   perpendicular: Phi' = u . ((w_C - w_P) x w),
 //                  J' v = (w_P x (w_P x u)) . w + 2 (w_P x u) . (w_C x w) + u . (w_C x (w_C x w))
+// The same equations for a joint whose parent is the world (identity frame, at rest): u is
+// u_parent, r_P the parent anchor, and every term with w_P or the parent's motion drops out
+// (their values are exact zeros in the general form, so the results are the same).
+void evaluateWorldJointEquations(const std::vector<ConstraintRow>& rows, const RowGroup& g,
+                                 const MotionView& motion, RowValue* out) {
+  const ConstraintRow& first = rows[g.begin];
+  const BodyMotion c = motion(first.child);
+  const Vec3& wc = c.angular_velocity;
+  const Vec3 rc = c.rotation * first.anchor_child;
+  const Vec3 e = c.origin + rc;
+  const Vec3 d = e - first.anchor_parent;
+  const Vec3 d_dot = c.velocity + wc.cross(rc);
+  const Vec3 k_bias = wc.cross(wc.cross(rc));
+  const Row6 none = Row6::Zero();  // the world's block: not stored
+  for (int r = g.begin; r < g.end; ++r) {
+    const ConstraintRow& row = rows[r];
+    RowValue& v = out[r - g.begin];
+    const Vec3& u = row.u_parent;
+    Row6 jc;
+    if (row.kind == ConstraintRow::Kind::kDistance) {
+      v.phi = u.dot(d);
+      v.phi_dot = u.dot(d_dot);
+      v.bias = u.dot(k_bias);
+      jc << u.transpose(), rc.cross(u).transpose();
+    } else {
+      const Vec3 w = c.rotation * row.w_child;
+      const Vec3 wc_w = wc.cross(w);
+      v.phi = u.dot(w);
+      v.phi_dot = u.dot(wc_w);
+      v.bias = u.dot(wc.cross(wc_w));
+      const Vec3 uw = u.cross(w);
+      jc << 0.0, 0.0, 0.0, -uw.transpose();
+    }
+    setBlocks(row, row.parent, none, row.child, jc, v);
+  }
+}
+
 void evaluateJointEquations(const std::vector<ConstraintRow>& rows, const RowGroup& g,
                             const MotionView& motion, RowValue* out) {
   const ConstraintRow& first = rows[g.begin];
+  if (first.parent.isWorld()) {
+    evaluateWorldJointEquations(rows, g, motion, out);
+    return;
+  }
   const BodyMotion p = motion(first.parent);
   const BodyMotion c = motion(first.child);
   const Vec3& wp = p.angular_velocity;

@@ -57,7 +57,7 @@ contact::AnchorFrames anchorFrames(const Model& model, const Workspace& ws,
           surfaceVelocityOf(model, ws.rotation, pair.geometry_b)};
 }
 
-void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
+inline void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
   w.force += force;
   w.torque += (point - origin).cross(force);
 }
@@ -75,6 +75,9 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
     inv_inertia_body_.push_back(b.kind == BodyKind::kDynamic ? Mat3(b.inertia.inverse())
                                                              : Mat3::Zero());
   ws_.geometry_poses.assign(model_->geometries.size(), Eigen::Isometry3d::Identity());
+  geometry_motion_.resize(model_->geometries.size());
+  for (const Geometry& g : model_->geometries)
+    at_body_origin_.push_back(g.local_pose.matrix() == Eigen::Matrix4d::Identity() ? 1 : 0);
   ws_.contact_wrench.assign(nb, {});
   ws_.spring_wrench.assign(nb, {});
   ws_.joint_wrench.assign(nb, {});
@@ -163,10 +166,10 @@ void Dynamics::updatePoses(const State& state) {
       ws_.geometry_poses[g] = geo.local_pose;
     } else {
       const BodyState& s = state.bodies[geo.body.value];
-      Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
-      body.linear() = ws_.rotation[geo.body.value];
-      body.translation() = s.position;
-      ws_.geometry_poses[g] = body * geo.local_pose;
+      Eigen::Isometry3d& pose = ws_.geometry_poses[g];
+      pose.linear() = ws_.rotation[geo.body.value];
+      pose.translation() = s.position;
+      if (!at_body_origin_[g]) pose = pose * geo.local_pose;  // else the body's own frame
     }
   }
 }
@@ -179,11 +182,16 @@ void Dynamics::detect() {
 void Dynamics::contactKinematics(const State& state) {
   const Model& m = *model_;
   ws_.max_penetration = 0.0;
+  if (ws_.contact_points.empty()) return;
+  // Each geometry's motion once per evaluation, not once per contact point and side.
+  for (std::size_t g = 0; g < m.geometries.size(); ++g)
+    geometry_motion_[g] = motionOf(m, state, ws_, static_cast<int>(g));
   for (std::size_t i = 0; i < ws_.contact_points.size(); ++i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
     const ContactPair pair = m.contactPair(cp.pair);
-    contact::contactKinematics(cp, motionOf(m, state, ws_, pair.geometry_a),
-                               motionOf(m, state, ws_, pair.geometry_b), ws_.contacts[i]);
+    contact::contactKinematics(cp, geometry_motion_[static_cast<std::size_t>(pair.geometry_a)],
+                               geometry_motion_[static_cast<std::size_t>(pair.geometry_b)],
+                               ws_.contacts[i]);
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
   }
 }

@@ -23,6 +23,7 @@
 #include <memory>
 
 #include "contact/collision_detector.hpp"
+#include "contact/contact_force.hpp"
 #include "core/constraint_projection.hpp"
 #include "core/constraint_solver.hpp"
 #include "core/joint_forces.hpp"
@@ -106,7 +107,9 @@ class Dynamics {
   JointForces joint_forces_;
   mutable ConstraintProjection projection_;  // scratch only; initialState() uses it
   Workspace ws_;
-  std::vector<Mat3> inv_inertia_body_;   // per body, zero for kinematic bodies
+  std::vector<Mat3> inv_inertia_body_;                    // per body, zero for kinematic bodies
+  std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
+  std::vector<char> at_body_origin_;     // per geometry: its local pose is the identity
   std::vector<char> stateful_material_;  // per material: its friction law keeps state
   bool any_stateful_ = false;
   contact::AnchorBook anchor_book_;

@@ -5,6 +5,49 @@
 
 namespace tribo {
 
+namespace {
+
+// Cholesky A = L L^T in place on the lower triangle of the column-major n x n matrix `a`
+// (leading dimension n), 1 / L_ii into `inverse_diagonal`; N > 0 fixes n at compile time
+// (the same operations in the same order as N = 0). False if A is not positive definite.
+template <int N>
+bool smallCholesky(int n_runtime, double* a, double* inverse_diagonal) {
+  const int n = N > 0 ? N : n_runtime;
+  for (int j = 0; j < n; ++j) {
+    double d = a[j * n + j];
+    for (int p = 0; p < j; ++p) d -= a[p * n + j] * a[p * n + j];
+    if (!(d > 0.0)) return false;
+    d = std::sqrt(d);
+    a[j * n + j] = d;
+    const double r = 1.0 / d;
+    inverse_diagonal[j] = r;
+    for (int i = j + 1; i < n; ++i) {
+      double t = a[j * n + i];
+      for (int p = 0; p < j; ++p) t -= a[p * n + i] * a[p * n + j];
+      a[j * n + i] = t * r;
+    }
+  }
+  return true;
+}
+
+// x <- (L L^T)^-1 x with smallCholesky's factor.
+template <int N>
+void smallSolve(int n_runtime, const double* l, const double* inverse_diagonal, double* x) {
+  const int n = N > 0 ? N : n_runtime;
+  for (int i = 0; i < n; ++i) {  // L y = x
+    double t = x[i];
+    for (int p = 0; p < i; ++p) t -= l[p * n + i] * x[p];
+    x[i] = t * inverse_diagonal[i];
+  }
+  for (int i = n - 1; i >= 0; --i) {  // L^T z = y
+    double t = x[i];
+    for (int p = i + 1; p < n; ++p) t -= l[i * n + p] * x[p];
+    x[i] = t * inverse_diagonal[i];
+  }
+}
+
+}  // namespace
+
 void MultiplierMatrix::init(int n, const std::vector<std::pair<int, int>>& entries, bool sparse,
                             const std::vector<int>& group_begin) {
   n_ = n;
@@ -42,22 +85,24 @@ bool MultiplierMatrix::factorize() {
   if (n_ == 0) return true;
   if (!sparse_) {
     if (n_ <= kSmall) {
-      double* a = small_.data();  // column-major, leading dimension n_
-      for (int j = 0; j < n_; ++j) {
-        double d = a[j * n_ + j];
-        for (int p = 0; p < j; ++p) d -= a[p * n_ + j] * a[p * n_ + j];
-        if (!(d > 0.0)) return false;
-        d = std::sqrt(d);
-        a[j * n_ + j] = d;
-        const double r = 1.0 / d;
-        small_inverse_diagonal_(j) = r;
-        for (int i = j + 1; i < n_; ++i) {
-          double t = a[j * n_ + i];
-          for (int p = 0; p < j; ++p) t -= a[p * n_ + i] * a[p * n_ + j];
-          a[j * n_ + i] = t * r;
-        }
+      double* a = small_.data();
+      double* r = small_inverse_diagonal_.data();
+      switch (n_) {  // sizes of one joint's equations: loops the compiler unrolls
+        case 1:
+          return smallCholesky<1>(1, a, r);
+        case 2:
+          return smallCholesky<2>(2, a, r);
+        case 3:
+          return smallCholesky<3>(3, a, r);
+        case 4:
+          return smallCholesky<4>(4, a, r);
+        case 5:
+          return smallCholesky<5>(5, a, r);
+        case 6:
+          return smallCholesky<6>(6, a, r);
+        default:
+          return smallCholesky<0>(n_, a, r);
       }
-      return true;
     }
     dense_llt_.compute(dense_);
     return dense_llt_.info() == Eigen::Success;
@@ -70,15 +115,29 @@ void MultiplierMatrix::solveInPlace(Eigen::VectorXd& x) {
   if (!sparse_) {
     if (n_ <= kSmall) {
       const double* l = small_.data();
-      for (int i = 0; i < n_; ++i) {  // L y = x
-        double t = x(i);
-        for (int p = 0; p < i; ++p) t -= l[p * n_ + i] * x(p);
-        x(i) = t * small_inverse_diagonal_(i);
-      }
-      for (int i = n_ - 1; i >= 0; --i) {  // L^T z = y
-        double t = x(i);
-        for (int p = i + 1; p < n_; ++p) t -= l[i * n_ + p] * x(p);
-        x(i) = t * small_inverse_diagonal_(i);
+      const double* r = small_inverse_diagonal_.data();
+      switch (n_) {
+        case 1:
+          smallSolve<1>(1, l, r, x.data());
+          break;
+        case 2:
+          smallSolve<2>(2, l, r, x.data());
+          break;
+        case 3:
+          smallSolve<3>(3, l, r, x.data());
+          break;
+        case 4:
+          smallSolve<4>(4, l, r, x.data());
+          break;
+        case 5:
+          smallSolve<5>(5, l, r, x.data());
+          break;
+        case 6:
+          smallSolve<6>(6, l, r, x.data());
+          break;
+        default:
+          smallSolve<0>(n_, l, r, x.data());
+          break;
       }
     } else {
       dense_llt_.solveInPlace(x);

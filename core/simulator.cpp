@@ -145,6 +145,7 @@ StepStatus Simulator::check() {
     // worded after the run), not a stop; a contact that is failing shows as energy rising.
     for (int g : {pair.geometry_a, pair.geometry_b}) {
       const Geometry& geometry = m.geometries[g];
+      if (!std::isfinite(geometry.shape.size())) continue;  // no depth is too deep (half-space)
       const Mat3 r = geometry.body.isWorld()
                          ? geometry.local_pose.linear()
                          : Mat3(ws.rotation[geometry.body.value] * geometry.local_pose.linear());
