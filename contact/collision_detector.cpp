@@ -19,6 +19,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "contact/box_box_contacts.hpp"
+#include "contact/box_round_contacts.hpp"
 #include "contact/polyhedron_contacts.hpp"
 
 namespace tribo::contact {
@@ -32,7 +34,12 @@ enum class PairKind {
   kSphereSphere,
   kBoxSphere,
   kSphereBox,
-  kPolyhedra,  // FCL's EPA point grown into a face manifold (polyhedron_contacts.hpp)
+  kBoxBox,       // box_box_contacts.hpp, no FCL
+  kBoxCapsule,   // box_round_contacts.hpp
+  kCapsuleBox,   // the same, normal flipped
+  kBoxCylinder,  // box_round_contacts.hpp where exact, else FCL
+  kCylinderBox,  // the same, normal flipped
+  kPolyhedra,    // FCL's EPA point grown into a face manifold (polyhedron_contacts.hpp)
   kFcl
 };
 
@@ -191,6 +198,34 @@ struct CollisionDetector::Impl {
         for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
         return;
       }
+      case PairKind::kBoxBox:
+        boxBoxContacts(poses[a], shapes[a].half_extents, poses[b], shapes[b].half_extents, p,
+                       max_points, out);
+        return;
+      case PairKind::kBoxCapsule:
+        boxCapsuleContacts(poses[a], shapes[a].half_extents, poses[b], shapes[b].radius,
+                           shapes[b].half_length, p, out);
+        return;
+      case PairKind::kCapsuleBox: {
+        const auto first = out.size();
+        boxCapsuleContacts(poses[b], shapes[b].half_extents, poses[a], shapes[a].radius,
+                           shapes[a].half_length, p, out);
+        for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
+        return;
+      }
+      case PairKind::kBoxCylinder:
+        if (boxCylinderContacts(poses[a], shapes[a].half_extents, poses[b], shapes[b].radius,
+                                shapes[b].half_length, p, out) >= 0)
+          return;
+        break;  // no closed form for this pose: FCL
+      case PairKind::kCylinderBox: {
+        const auto first = out.size();
+        if (boxCylinderContacts(poses[b], shapes[b].half_extents, poses[a], shapes[a].radius,
+                                shapes[a].half_length, p, out) < 0)
+          break;
+        for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
+        return;
+      }
       case PairKind::kPolyhedra:
       case PairKind::kFcl:
         break;
@@ -274,13 +309,21 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
       if (ta == ShapeType::kSphere && tb == ShapeType::kSphere) kind = PairKind::kSphereSphere;
       if (ta == ShapeType::kBox && tb == ShapeType::kSphere) kind = PairKind::kBoxSphere;
       if (ta == ShapeType::kSphere && tb == ShapeType::kBox) kind = PairKind::kSphereBox;
+      if (ta == ShapeType::kBox && tb == ShapeType::kBox) kind = PairKind::kBoxBox;
+      if (ta == ShapeType::kBox && tb == ShapeType::kCapsule) kind = PairKind::kBoxCapsule;
+      if (ta == ShapeType::kCapsule && tb == ShapeType::kBox) kind = PairKind::kCapsuleBox;
+      if (ta == ShapeType::kBox && tb == ShapeType::kCylinder) kind = PairKind::kBoxCylinder;
+      if (ta == ShapeType::kCylinder && tb == ShapeType::kBox) kind = PairKind::kCylinderBox;
     }
+    // Cylinder/box falls back to FCL for the poses it has no closed form for.
+    const bool fcl_fallback = kind == PairKind::kBoxCylinder || kind == PairKind::kCylinderBox;
     // Convex meshes with boxes or each other (box/box keeps FCL's own manifold).
     if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(m.shapes[a]) &&
         isPolyhedron(m.shapes[b]) && !(ta == ShapeType::kBox && tb == ShapeType::kBox))
       kind = PairKind::kPolyhedra;
     m.kinds.push_back(kind);
-    m.any_fcl_pair = m.any_fcl_pair || kind == PairKind::kFcl || kind == PairKind::kPolyhedra;
+    m.any_fcl_pair =
+        m.any_fcl_pair || kind == PairKind::kFcl || kind == PairKind::kPolyhedra || fcl_fallback;
     m.pair_index[pairKey(a, b)] = static_cast<int>(p);
   }
   // FCL objects only where FCL is asked something: an FCL pair, or the broadphase.
@@ -288,7 +331,8 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
   m.polyhedra.resize(n);
   for (std::size_t p = 0; p < m.pairs.size(); ++p) {
     const auto [a, b] = m.pairs[p];
-    if (m.kinds[p] == PairKind::kFcl || m.kinds[p] == PairKind::kPolyhedra)
+    if (m.kinds[p] == PairKind::kFcl || m.kinds[p] == PairKind::kPolyhedra ||
+        m.kinds[p] == PairKind::kBoxCylinder || m.kinds[p] == PairKind::kCylinderBox)
       needed[a] = needed[b] = true;
     if (m.kinds[p] != PairKind::kPolyhedra) continue;
     for (int g : {a, b})
