@@ -35,7 +35,7 @@ int clipSide(const Polygon& in, int n, int axis, double sign, double limit, int 
     const Vertex& w = in[(i + 1) % n];
     const double dv = limit - sign * v.x[axis], dw = limit - sign * w.x[axis];
     if (dv >= 0.0) {
-      out[m++] = {v.x, v.feature, dw >= 0.0 ? v.edge : 4 + p};
+      out[m++] = v;
       if (dw >= 0.0) continue;
     } else if (dw < 0.0) {
       continue;
