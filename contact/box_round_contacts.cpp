@@ -94,7 +94,18 @@ int boxCapsuleContacts(const Eigen::Isometry3d& box_pose, const Vector3d& h,
                   rb.transpose() * capsule_pose.linear().col(2), half_length};
   double t0 = 0.0, t1 = 0.0;
   if (!clipToSlabs(s, h, -1, t0, t1)) {
-    // Separate: the nearest of the two clamped ends and of S against the 12 edges.
+    // Separate: the nearest of the two clamped ends and of S against the box edges. Side
+    // (j, sign) is `beyond` when some point of S lies past that face's plane; the box point
+    // nearest to a point of S is on edge (k, s1, s2) only if S reaches beyond both faces
+    // meeting there, so the other edges are skipped. A face plane farther than r from all
+    // of S: no contact.
+    bool beyond[3][2];
+    for (int j = 0; j < 3; ++j) {
+      const double reach = half_length * std::abs(s.d[j]);
+      if (std::abs(s.c[j]) - reach - h[j] >= radius) return 0;
+      beyond[j][0] = -s.c[j] + reach > h[j];
+      beyond[j][1] = s.c[j] + reach > h[j];
+    }
     double best = std::numeric_limits<double>::infinity();
     Vector3d on_seg, on_box;
     for (int end = 0; end < 2; ++end) {
@@ -106,6 +117,7 @@ int boxCapsuleContacts(const Eigen::Isometry3d& box_pose, const Vector3d& h,
     for (int k = 0; k < 3; ++k) {
       const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
       for (int corner = 0; corner < 4; ++corner) {
+        if (!beyond[k1][corner & 1] || !beyond[k2][(corner >> 1) & 1]) continue;
         Vector3d centre = Vector3d::Zero();
         centre[k1] = (corner & 1) ? h[k1] : -h[k1];
         centre[k2] = (corner & 2) ? h[k2] : -h[k2];
