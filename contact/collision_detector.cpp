@@ -317,7 +317,7 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
     }
     // Cylinder/box falls back to FCL for the poses it has no closed form for.
     const bool fcl_fallback = kind == PairKind::kBoxCylinder || kind == PairKind::kCylinderBox;
-    // Convex meshes with boxes or each other (box/box keeps FCL's own manifold).
+    // Convex meshes with boxes or each other (box/box: its closed form, or FCL's manifold).
     if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(m.shapes[a]) &&
         isPolyhedron(m.shapes[b]) && !(ta == ShapeType::kBox && tb == ShapeType::kBox))
       kind = PairKind::kPolyhedra;
