@@ -14,7 +14,9 @@ using Eigen::Vector3d;
 
 constexpr double kFaceBias = 0.98;  // a face of B must beat a face of A by 2 %
 constexpr double kEdgeBias = 0.95;  // an edge pair must beat the face by 5 %
-constexpr double kParallel = 1e-6;  // |A_i x B_j| below this: no edge axis (faces cover it)
+constexpr double kParallel = 1e-6;
+constexpr double kFlush = 1e-9;  // a vertex this far (times the box size) outside is on  // |A_i x
+                                 // B_j| below this: no edge axis (faces cover it)
 constexpr int kReferenceOnB = 64;
 constexpr int kEdgeFeature = 128;
 
@@ -27,17 +29,21 @@ struct Vertex {
 };
 using Polygon = std::array<Vertex, 8>;
 
-// Sutherland-Hodgman against the side plane sign * x[axis] <= limit (plane index p).
-int clipSide(const Polygon& in, int n, int axis, double sign, double limit, int p, Polygon& out) {
+// Sutherland-Hodgman against the side plane sign * x[axis] <= limit (plane index p). A vertex
+// less than `tol` outside counts as on the plane: boxes of the same size stacked flush would
+// otherwise have each corner split by rounding into two points a few ulp apart.
+int clipSide(const Polygon& in, int n, int axis, double sign, double limit, double tol, int p,
+             Polygon& out) {
   int m = 0;
   for (int i = 0; i < n; ++i) {
     const Vertex& v = in[i];
     const Vertex& w = in[(i + 1) % n];
     const double dv = limit - sign * v.x[axis], dw = limit - sign * w.x[axis];
-    if (dv >= 0.0) {
+    const bool v_in = dv >= -tol, w_in = dw >= -tol;
+    if (v_in) {
       out[m++] = v;
-      if (dw >= 0.0) continue;
-    } else if (dw < 0.0) {
+      if (w_in) continue;
+    } else if (!w_in) {
       continue;
     }
     // The edge crosses the plane: the crossing's feature is the incident edge cut by the
@@ -45,7 +51,7 @@ int clipSide(const Polygon& in, int n, int axis, double sign, double limit, int 
     const double f = dv / (dv - dw);
     const int feature = v.edge < 4 ? 8 + 4 * v.edge + p
                                    : 24 + 4 * std::min(v.edge - 4, p) + std::max(v.edge - 4, p);
-    out[m++] = {v.x + f * (w.x - v.x), feature, dv >= 0.0 ? 4 + p : v.edge};
+    out[m++] = {v.x + f * (w.x - v.x), feature, v_in ? 4 + p : v.edge};
   }
   return m;
 }
@@ -70,10 +76,11 @@ int faceContacts(const Eigen::Isometry3d& ref_pose, const Vector3d& hr, const Ma
   }
   int n = 4;
   const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-  n = clipSide(a, n, k1, 1.0, hr[k1], 0, b);
-  n = clipSide(b, n, k1, -1.0, hr[k1], 1, a);
-  n = clipSide(a, n, k2, 1.0, hr[k2], 2, b);
-  n = clipSide(b, n, k2, -1.0, hr[k2], 3, a);
+  const double tol = kFlush * hr.maxCoeff();
+  n = clipSide(a, n, k1, 1.0, hr[k1], tol, 0, b);
+  n = clipSide(b, n, k1, -1.0, hr[k1], tol, 1, a);
+  n = clipSide(a, n, k2, 1.0, hr[k2], tol, 2, b);
+  n = clipSide(b, n, k2, -1.0, hr[k2], tol, 3, a);
   const Vector3d u_world = sg * ref_pose.linear().col(k);
   int added = 0;
   for (int i = 0; i < n; ++i) {

@@ -9,9 +9,11 @@
 // pair replaces the face only when s_E > 0.95 s_face (the 1.05 fudge factor of ODE's box/box).
 //   Face axis: the reference face is that box's face along the axis; the incident face is the
 //   other box's face most opposed to it; the incident quad is clipped to the reference face's
-//   four side planes (Sutherland-Hodgman, Ericson 8.3.4) and every clipped vertex x below the
-//   reference plane is a contact: depth = u . p_ref - u . x, position = x + depth u / 2 (u the
-//   reference face's outward normal), normal u (reference on A) or -u (reference on B).
+//   four side planes (Sutherland-Hodgman, Ericson 8.3.4; a vertex within 1e-9 of the box size
+//   outside a side plane counts as on it, so flush same-size boxes keep one point a corner)
+//   and every clipped vertex x below the reference plane is a contact:
+//   depth = u . p_ref - u . x, position = x + depth u / 2 (u the reference face's outward
+//   normal), normal u (reference on A) or -u (reference on B).
 //   Edge axis: one point midway between the closest points of the two edges (Ericson 5.1.9),
 //   depth -s, normal along the cross product.
 // Feature ids are stable while the same faces touch: an incident corner (its box corner

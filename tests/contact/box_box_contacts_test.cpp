@@ -298,6 +298,26 @@ TEST(BoxBoxContacts, AnEdgeOnAFaceGivesItsTwoEndsAndCrossedEdgesOnePoint) {
   EXPECT_LT((f[0].position - cross[0].position).norm(), 1e-9);
 }
 
+TEST(BoxBoxContacts, FlushBoxesOfTheSameSizeKeepOnePointACorner) {
+  // Equal boxes, the upper one 1.5 cm along x, leaning 1e-3 rad about y and turned about z by
+  // integration noise (1e-12 rad): its y sides lie on the lower box's y side planes up to
+  // 1e-13 m. Four points (two corners, two cut at the x edge), never a corner split in two.
+  const Vector3d h(0.1, 0.1, 0.1);
+  for (const double lean : {0.0, 1e-3, -1e-3}) {
+    const Quaterniond q =
+        Quaterniond(Eigen::AngleAxisd(lean > 0 ? 1e-12 : -1e-12, Vector3d::UnitZ())) *
+        Quaterniond(Eigen::AngleAxisd(lean, Vector3d::UnitY()));
+    const double lowest = Shape::box(h).support(-(q.conjugate() * Vector3d::UnitZ()));
+    std::vector<ContactPoint> out;
+    boxBoxContacts(pose({0.3, -0.7, 0.2}), h, pose({0.315, -0.7, 0.3 + lowest - 5e-4}, q), h, 0, 8,
+                   out);
+    ASSERT_EQ(out.size(), 4u) << lean;
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j)
+        EXPECT_GT((out[i].position - out[j].position).norm(), 0.15) << lean;
+  }
+}
+
 TEST(BoxBoxContacts, FeatureIdsStayWhileARestingBoxSlidesAndTurnsALittle) {
   const Vector3d big(0.5, 0.5, 0.1), small(0.1, 0.1, 0.1);
   std::vector<ContactPoint> first;
