@@ -20,6 +20,9 @@ constexpr double kFlush = 1e-9;  // a vertex this far (times the box size) outsi
 constexpr int kReferenceOnB = 64;
 constexpr int kEdgeFeature = 128;
 
+// Signs of the incident quad's corners along its two edge directions, in loop order.
+constexpr std::array<double, 4> kS1{1, -1, -1, 1}, kS2{1, 1, -1, -1};
+
 // One vertex of the clipped incident polygon, in the reference box's frame: its feature and
 // the tag of the polygon edge leaving it (0-3: incident face edge, 4 + p: on side plane p).
 struct Vertex {
@@ -27,7 +30,9 @@ struct Vertex {
   int feature;
   int edge;
 };
-using Polygon = std::array<Vertex, 8>;
+// A quad clipped by 4 planes has at most 8 vertices; room for rounding to add more.
+constexpr int kMaxVertices = 16;
+using Polygon = std::array<Vertex, kMaxVertices>;
 
 // Sutherland-Hodgman against the side plane sign * x[axis] <= limit (plane index p). A vertex
 // less than `tol` outside counts as on the plane: boxes of the same size stacked flush would
@@ -40,6 +45,7 @@ int clipSide(const Polygon& in, int n, int axis, double sign, double limit, doub
     const Vertex& w = in[(i + 1) % n];
     const double dv = limit - sign * v.x[axis], dw = limit - sign * w.x[axis];
     const bool v_in = dv >= -tol, w_in = dw >= -tol;
+    if (m + 2 > kMaxVertices) break;
     if (v_in) {
       out[m++] = v;
       if (w_in) continue;
@@ -68,7 +74,6 @@ int faceContacts(const Eigen::Isometry3d& ref_pose, const Vector3d& hr, const Ma
   const int m1 = (m + 1) % 3, m2 = (m + 2) % 3;
   const Vector3d face = centre + si * hi[m] * axes.col(m);
   const Vector3d e1 = hi[m1] * axes.col(m1), e2 = hi[m2] * axes.col(m2);
-  constexpr double kS1[4] = {1, -1, -1, 1}, kS2[4] = {1, 1, -1, -1};
   Polygon a{}, b{};
   for (int v = 0; v < 4; ++v) {
     const int corner = ((si > 0) << m) | ((kS1[v] > 0) << m1) | ((kS2[v] > 0) << m2);
