@@ -19,6 +19,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "contact/box_box_contacts.hpp"
+#include "contact/box_round_contacts.hpp"
 #include "contact/polyhedron_contacts.hpp"
 
 namespace tribo::contact {
@@ -32,7 +34,12 @@ enum class PairKind {
   kSphereSphere,
   kBoxSphere,
   kSphereBox,
-  kPolyhedra,  // FCL's EPA point grown into a face manifold (polyhedron_contacts.hpp)
+  kBoxBox,       // box_box_contacts.hpp, no FCL
+  kBoxCapsule,   // box_round_contacts.hpp
+  kCapsuleBox,   // the same, normal flipped
+  kBoxCylinder,  // box_round_contacts.hpp where exact, else FCL
+  kCylinderBox,  // the same, normal flipped
+  kPolyhedra,    // FCL's EPA point grown into a face manifold (polyhedron_contacts.hpp)
   kFcl
 };
 
@@ -203,6 +210,34 @@ struct CollisionDetector::Impl {
         for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
         return;
       }
+      case PairKind::kBoxBox:
+        boxBoxContacts(poses[a], shapes[a].half_extents, poses[b], shapes[b].half_extents, p,
+                       max_points, out);
+        return;
+      case PairKind::kBoxCapsule:
+        boxCapsuleContacts(poses[a], shapes[a].half_extents, poses[b], shapes[b].radius,
+                           shapes[b].half_length, p, out);
+        return;
+      case PairKind::kCapsuleBox: {
+        const auto first = out.size();
+        boxCapsuleContacts(poses[b], shapes[b].half_extents, poses[a], shapes[a].radius,
+                           shapes[a].half_length, p, out);
+        for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
+        return;
+      }
+      case PairKind::kBoxCylinder:
+        if (boxCylinderContacts(poses[a], shapes[a].half_extents, poses[b], shapes[b].radius,
+                                shapes[b].half_length, p, out) >= 0)
+          return;
+        break;  // no closed form for this pose: FCL
+      case PairKind::kCylinderBox: {
+        const auto first = out.size();
+        if (boxCylinderContacts(poses[b], shapes[b].half_extents, poses[a], shapes[a].radius,
+                                shapes[a].half_length, p, out) < 0)
+          break;
+        for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
+        return;
+      }
       case PairKind::kPolyhedra:
       case PairKind::kFcl:
         break;
@@ -263,8 +298,13 @@ PairKind CollisionDetector::Impl::classify(int a, int b) const {
     if (ta == ShapeType::kSphere && tb == ShapeType::kSphere) kind = PairKind::kSphereSphere;
     if (ta == ShapeType::kBox && tb == ShapeType::kSphere) kind = PairKind::kBoxSphere;
     if (ta == ShapeType::kSphere && tb == ShapeType::kBox) kind = PairKind::kSphereBox;
+    if (ta == ShapeType::kBox && tb == ShapeType::kBox) kind = PairKind::kBoxBox;
+    if (ta == ShapeType::kBox && tb == ShapeType::kCapsule) kind = PairKind::kBoxCapsule;
+    if (ta == ShapeType::kCapsule && tb == ShapeType::kBox) kind = PairKind::kCapsuleBox;
+    if (ta == ShapeType::kBox && tb == ShapeType::kCylinder) kind = PairKind::kBoxCylinder;
+    if (ta == ShapeType::kCylinder && tb == ShapeType::kBox) kind = PairKind::kCylinderBox;
   }
-  // Convex meshes with boxes or each other (box/box keeps FCL's own manifold).
+  // Convex meshes with boxes or each other (box/box: its closed form, or FCL's manifold).
   if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(shapes[a]) &&
       isPolyhedron(shapes[b]) && !(ta == ShapeType::kBox && tb == ShapeType::kBox))
     kind = PairKind::kPolyhedra;
@@ -298,7 +338,11 @@ void CollisionDetector::Impl::setUp() {
   // rule any two geometries may be asked (polyhedra are made for every convex shape).
   std::vector<bool> needed(n, options.broadphase);
   polyhedra.resize(n);
-  auto fcl_kind = [](PairKind k) { return k == PairKind::kFcl || k == PairKind::kPolyhedra; };
+  // Cylinder/box falls back to FCL for the poses it has no closed form for.
+  auto fcl_kind = [](PairKind k) {
+    return k == PairKind::kFcl || k == PairKind::kPolyhedra || k == PairKind::kBoxCylinder ||
+           k == PairKind::kCylinderBox;
+  };
   for (const Candidate& c : listed) {
     if (fcl_kind(c.kind)) needed[c.a] = needed[c.b] = true;
     any_fcl_pair = any_fcl_pair || fcl_kind(c.kind);

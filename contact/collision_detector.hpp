@@ -6,9 +6,11 @@
 //
 // Each pair (A, B) yields contact points with the normal from A into B. Pairs with a closed
 // form (contact/primitive_contacts.hpp: any shape on a half-space, sphere/sphere,
-// sphere/box) use it unless switched off; every other pair (box/box, cylinder, capsule,
-// cone, convex and triangle meshes among themselves) goes to FCL's narrowphase (libccd
-// GJK/EPA, FCL's box/box manifold, BVH traversal for meshes), at most
+// sphere/box; contact/box_box_contacts.hpp: box/box; contact/box_round_contacts.hpp:
+// capsule/box, and cylinder/box where the cylinder rests on one face) use it unless switched
+// off; every other pair (cylinder, capsule, cone, convex and triangle meshes among
+// themselves, a cylinder over a box edge) goes to FCL's narrowphase (libccd GJK/EPA, FCL's
+// box/box manifold when the closed forms are off, BVH traversal for meshes), at most
 // `max_points_per_pair` points. A convex mesh with a box or a convex mesh grows EPA's single
 // point into the face manifold (contact/polyhedron_contacts.hpp) unless switched off. With
 // `broadphase` on, FCL's dynamic AABB tree culls the pairs first; half-spaces stay out of
@@ -34,7 +36,9 @@ namespace tribo::contact {
 struct CollisionOptions {
   bool broadphase = false;                // cull pairs with FCL's dynamic AABB tree
   bool closed_form_box_halfspace = true;  // exact corners instead of FCL's single point
-  bool closed_form_primitives = true;     // other closed forms (see primitive_contacts.hpp)
+  // Other closed forms: primitive_contacts.hpp, box/box (box_box_contacts.hpp), capsule/box and
+  // cylinder/box (box_round_contacts.hpp). Off: those pairs go to FCL.
+  bool closed_form_primitives = true;
   // Convex meshes resting on boxes or on each other: the face manifold around FCL's single
   // GJK/EPA point (contact/polyhedron_contacts.hpp).
   bool polyhedron_manifold = true;

@@ -17,8 +17,8 @@
 // dBoxBox clipping, on general polygons: Ericson, Real-Time Collision Detection, 8.3.4).
 // Faces are the mesh's coplanar triangles merged into convex polygons when the shape is
 // built. Points carry no feature id (contact identity by nearest point, stick_anchor.hpp).
-// Not here: round shapes (cylinder, cone, capsule, sphere), triangle meshes, box/box (FCL's
-// own manifold), the narrowphase itself (collision_detector.cpp).
+// Not here: round shapes (cylinder, cone, capsule, sphere), triangle meshes, box/box
+// (box_box_contacts.hpp), the narrowphase itself (collision_detector.cpp).
 #pragma once
 
 #include <Eigen/Geometry>

@@ -61,7 +61,9 @@ TEST(PolyhedronManifold, CubeMeshOnABoxMatchesFclsBoxBoxManifold) {
   // (FCL's own box/box manifold): the same points, depths and normals.
   const Vector3d ha(0.3, 0.2, 0.1), hb(0.1, 0.12, 0.05);
   CollisionDetector ours({Shape::box(ha), boxAsMesh(hb)}, {{0, 1}});
-  CollisionDetector fcl({Shape::box(ha), Shape::box(hb)}, {{0, 1}});
+  CollisionOptions fcl_box_box;  // FCL's own box/box, not the closed form (box_box_contacts)
+  fcl_box_box.closed_form_primitives = false;
+  CollisionDetector fcl({Shape::box(ha), Shape::box(hb)}, {{0, 1}}, fcl_box_box);
   int compared = 0, tilted = 0;
   for (int i = 0; i < 40; ++i) {
     const double tilt = (i % 4) * 0.01;  // 0 (resting flat) to 0.03 rad
