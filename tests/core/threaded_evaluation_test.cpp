@@ -119,8 +119,8 @@ bool sameBytes(const T& a, const T& b) {
              << y.velocity.transpose();
   }
   if (a.friction_values.size() != b.friction_values.size() ||
-      std::memcmp(a.friction_values.data(), b.friction_values.data(),
-                  a.friction_values.size() * sizeof(double)) != 0)
+      (!a.friction_values.empty() && std::memcmp(a.friction_values.data(), b.friction_values.data(),
+                                                 a.friction_values.size() * sizeof(double)) != 0))
     return ::testing::AssertionFailure() << "friction values differ";
   if (a.stick_anchors.size() != b.stick_anchors.size())
     return ::testing::AssertionFailure() << "stick anchor count differs";
