@@ -41,7 +41,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: tribo run SCENE.yaml --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
-    "                [--quiet | --progress] [--profile] [--view]\n"
+    "                [--quiet | --progress] [--profile] [--view] [--threads N|auto]\n"
     "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
     "                [--strict] [--verbose]\n"
     "       tribo info FILE.urdf [--package-path DIR ...] [--strict] [--verbose]\n"
@@ -61,6 +61,9 @@ constexpr const char* kUsage =
     "  --quiet     never show it\n"
     "  --profile   time each stage of the step and print the share of each\n"
     "  --view      also record orientations and write DIR/view.html (tribo view)\n"
+    "  --threads   threads of one force evaluation (replaces the scene's simulation.threads;\n"
+    "              auto: one per core where the scene is large enough; results do not depend\n"
+    "              on it)\n"
     "  info    print a URDF robot's tree, masses, joint types, model checks and what run "
     "would do\n"
     "  --strict   refuse URDF that urdfdom refuses (a joint without <limit>, an undeclared "
@@ -178,6 +181,7 @@ int run(const std::vector<std::string>& args) {
   std::vector<std::string> overrides;
   std::vector<std::string> package_paths;
   bool quiet = false, progress = false, profile = false, view = false;
+  std::optional<int> threads;
   tribo::io::UrdfReadOptions read;
   bool verbose = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -192,6 +196,17 @@ int run(const std::vector<std::string>& args) {
       profile = true;
     } else if (a == "--view") {
       view = true;
+    } else if (a == "--threads") {
+      if (i + 1 >= args.size()) return usage(a + " needs a value");
+      const std::string& v = args[++i];
+      const auto n = tribo::io::parseNumber(v);
+      if (v == "auto")
+        threads = tribo::kAutoThreads;
+      else if (n && *n >= 1 && *n <= 4096 && *n == std::floor(*n))
+        threads = static_cast<int>(*n);
+      else
+        return usage("--threads: expected auto or a whole number from 1 to 4096, found '" + v +
+                     "'");
     } else if (a == "--out" || a == "--set" || a == "--package-path") {
       if (i + 1 >= args.size()) return usage(a + " needs a value");
       if (a == "--out")
@@ -218,9 +233,16 @@ int run(const std::vector<std::string>& args) {
     // by its name when its content is not even XML (the reader then says what it is).
     std::string ext = std::filesystem::path(scene_path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    scene = tribo::io::looksLikeUrdf(scene_path) || ext == ".urdf"
-                ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides, read)
-                : tribo::io::loadScene(scene_path, overrides, package_paths);
+    tribo::io::RunSettings settings;
+    settings.threads = threads;
+    const bool urdf = tribo::io::looksLikeUrdf(scene_path) || ext == ".urdf";
+    scene = urdf ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides, read)
+                 : tribo::io::loadScene(scene_path, overrides, package_paths, settings);
+    if (urdf && threads) {
+      auto model = std::make_shared<tribo::Model>(*scene.model);
+      model->options.threads = *threads;
+      scene.model = std::move(model);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;

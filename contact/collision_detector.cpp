@@ -15,12 +15,15 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "contact/box_box_contacts.hpp"
 #include "contact/box_round_contacts.hpp"
+#include "contact/parallel_range.hpp"
 #include "contact/polyhedron_contacts.hpp"
 
 namespace tribo::contact {
@@ -164,22 +167,68 @@ struct CollisionDetector::Impl {
   std::vector<std::unique_ptr<TrackedObject>> objects;
   std::unordered_map<std::uint64_t, int> pair_index;  // listed: geometry pair -> pair
   fcl::DynamicAABBTreeCollisionManagerd manager;
-  fcl::CollisionRequestd request;
-  fcl::CollisionResultd result;
+  fcl::CollisionRequestd request;  // shared by the threads: FCL only reads it
   std::vector<Candidate> candidates;
   std::vector<Candidate> unbounded;   // pairs with a half-space: never culled
   std::vector<Polyhedron> polyhedra;  // by geometry, for kPolyhedra pairs (else empty)
-  ClipScratch clip_scratch;
   bool timing = false;
   double fcl_seconds = 0.0;
+  int threads = 1;
+  // What one thread of the narrowphase writes to: its points, FCL's answer, the clipping
+  // buffers and its FCL time (summed into fcl_seconds after the loop).
+  struct Lane {
+    std::vector<ContactPoint> points;
+    fcl::CollisionResultd result;
+    ClipScratch clip_scratch;
+    double fcl_seconds = 0.0;
+  };
+  std::vector<Lane> lanes{1};  // lane 0 serves the one-thread path (its `points` unused)
 
   PairKind classify(int a, int b) const;
   Candidate candidate(int id, int a, int b) const { return {id, a, b, classify(a, b)}; }
   void setUp();
   void candidateFound(int g, int h);
 
+  // The narrowphase of every pair in `list`, appended to `out` in list order. Split across
+  // `threads` when the list is long enough: thread t takes the t-th contiguous run of the
+  // list into its lane, then each lane is copied to its place in `out`.
+  void narrowphaseAll(std::span<const Candidate> list, std::span<const Eigen::Isometry3d> poses,
+                      std::vector<ContactPoint>& out) {
+    constexpr std::size_t kPairsPerThread = 128;
+    const int team = threadsFor(list.size(), threads, kPairsPerThread);
+    if (team <= 1) {
+      for (const Candidate& c : list) narrowphase(c, poses, out, lanes[0]);
+      if (timing) fcl_seconds += std::exchange(lanes[0].fcl_seconds, 0.0);
+      return;
+    }
+    if (lanes.size() < static_cast<std::size_t>(team)) lanes.resize(static_cast<std::size_t>(team));
+    const std::size_t base = out.size();
+#pragma omp parallel num_threads(team)
+    {
+      const auto t = static_cast<std::size_t>(omp_get_thread_num());
+      const auto n = static_cast<std::size_t>(omp_get_num_threads());
+      Lane& lane = lanes[t];
+      lane.points.clear();
+      for (std::size_t i = list.size() * t / n; i < list.size() * (t + 1) / n; ++i)
+        narrowphase(list[i], poses, lane.points, lane);
+#pragma omp barrier
+#pragma omp single
+      {
+        std::size_t total = base;
+        for (std::size_t k = 0; k < n; ++k) total += lanes[k].points.size();
+        out.resize(total);
+      }  // implicit barrier: `out` has its size before any lane is copied
+      std::size_t offset = base;
+      for (std::size_t k = 0; k < t; ++k) offset += lanes[k].points.size();
+      std::copy(lane.points.begin(), lane.points.end(),
+                out.begin() + static_cast<std::ptrdiff_t>(offset));
+    }
+    for (Lane& lane : lanes)
+      if (timing) fcl_seconds += std::exchange(lane.fcl_seconds, 0.0);
+  }
+
   void narrowphase(const Candidate& c, std::span<const Eigen::Isometry3d> poses,
-                   std::vector<ContactPoint>& out) {
+                   std::vector<ContactPoint>& out, Lane& lane) {
     const int a = c.a, b = c.b, p = c.id;
     const int max_points = options.max_points_per_pair;
     switch (c.kind) {
@@ -250,8 +299,9 @@ struct CollisionDetector::Impl {
         shapes[b].type == ShapeType::kTriangleMesh && shapes[a].type != ShapeType::kTriangleMesh;
     const bool mesh =
         shapes[a].type == ShapeType::kTriangleMesh || shapes[b].type == ShapeType::kTriangleMesh;
+    fcl::CollisionResultd& result = lane.result;
     {
-      const FclScope scope(timing ? &fcl_seconds : nullptr);
+      const FclScope scope(timing ? &lane.fcl_seconds : nullptr);
       result.clear();
       if (swap)
         fcl::collide(objects[b].get(), objects[a].get(), request, result);
@@ -260,14 +310,14 @@ struct CollisionDetector::Impl {
     }
     const auto first = out.size();
     for (std::size_t i = 0; i < result.numContacts(); ++i) {
-      const auto& c = result.getContact(i);
-      const double depth = mesh ? std::abs(c.penetration_depth) : c.penetration_depth;
+      const auto& hit = result.getContact(i);
+      const double depth = mesh ? std::abs(hit.penetration_depth) : hit.penetration_depth;
       if (!(depth > 0.0)) continue;  // touching, or FCL gave no depth
       ContactPoint cp;
       cp.pair = p;
-      cp.position = c.pos;
+      cp.position = hit.pos;
       // FCL: from o1 to o2, so from A into B unless swapped.
-      cp.normal = swap ? Eigen::Vector3d(-c.normal.normalized()) : c.normal.normalized();
+      cp.normal = swap ? Eigen::Vector3d(-hit.normal.normalized()) : hit.normal.normalized();
       cp.depth = depth;
       out.push_back(cp);
     }
@@ -278,7 +328,7 @@ struct CollisionDetector::Impl {
           [](const ContactPoint& x, const ContactPoint& y) { return x.depth < y.depth; });
       out.resize(first);
       if (polyhedronContacts(polyhedra[a], poses[a], polyhedra[b], poses[b], epa.normal, epa.depth,
-                             p, max_points, clip_scratch, out) == 0)
+                             p, max_points, lane.clip_scratch, out) == 0)
         out.push_back(epa);
     }
   }
@@ -432,6 +482,7 @@ CollisionDetector::CollisionDetector(CollisionDetector&&) noexcept = default;
 CollisionDetector& CollisionDetector::operator=(CollisionDetector&&) noexcept = default;
 
 void CollisionDetector::setTiming(bool timing) { impl_->timing = timing; }
+void CollisionDetector::setThreads(int threads) { impl_->threads = std::max(1, threads); }
 double CollisionDetector::fclSeconds() const { return impl_->fcl_seconds; }
 void CollisionDetector::setFclScopeHook(FclScopeHook hook) {
   fcl_scope_hook.store(hook, std::memory_order_relaxed);
@@ -450,7 +501,7 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
     }
   }
   if (!m.options.broadphase) {
-    for (const Candidate& c : m.listed) m.narrowphase(c, poses, out);
+    m.narrowphaseAll(m.listed, poses, out);
     return;
   }
   m.candidates.assign(m.unbounded.begin(), m.unbounded.end());
@@ -468,7 +519,7 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
   }
   std::sort(m.candidates.begin(), m.candidates.end(),  // deterministic order
             [](const Candidate& x, const Candidate& y) { return x.id < y.id; });
-  for (const Candidate& c : m.candidates) m.narrowphase(c, poses, out);
+  m.narrowphaseAll(m.candidates, poses, out);
 }
 
 }  // namespace tribo::contact

@@ -78,6 +78,11 @@ class CollisionDetector {
   // (FCL's own narrowphase may).
   void detect(std::span<const Eigen::Isometry3d> poses, std::vector<ContactPoint>& out);
 
+  // Threads for the narrowphase (contact/parallel_range.hpp; 1 by default): the candidate
+  // pairs are split in contiguous runs, each thread's points joined in pair order, so the
+  // output is the same bit for bit for any count. Few candidates use one thread.
+  void setThreads(int threads);
+
   // Wall time spent inside FCL (broadphase and FCL narrowphase) since construction [s];
   // measured only when `timing` is on (it costs two clock reads per call).
   void setTiming(bool timing);

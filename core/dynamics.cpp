@@ -5,10 +5,22 @@
 #include <cmath>
 
 #include "contact/dynamic_friction.hpp"
+#include "contact/parallel_range.hpp"
 
 namespace tribo {
 
+using contact::parallelFor;
+
 namespace {
+
+// A stage runs on one more thread per this many items (bodies, geometries, contact points):
+// below it the threads' start and join cost more than they save. Measured on a box grid
+// (docs/performance.md, "Two threads").
+constexpr std::size_t kItemsPerThread = 256;
+
+int stageThreads(std::size_t items, int threads) {
+  return contact::threadsFor(items, threads, kItemsPerThread);
+}
 
 // Automatic contacts: the model's rule (core/automatic_contacts.hpp), asked on demand.
 class ModelPairRule : public contact::PairRule {
@@ -64,6 +76,12 @@ inline void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3
 
 }  // namespace
 
+int resolveThreads(int requested) {
+  int n = requested == kAutoThreads ? omp_get_max_threads() : requested;
+  if (const int limit = ScopedThreadLimit::limit(); limit > 0) n = std::min(n, limit);
+  return std::max(1, n);
+}
+
 Dynamics::Dynamics(std::shared_ptr<const Model> model)
     : model_(std::move(model)),
       detector_(makeDetector(model_)),
@@ -99,6 +117,14 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
     any_dynamic_ = any_dynamic_ || material.friction->dynamic() != nullptr;
   }
   any_dynamic_ = any_dynamic_ || joint_forces_.jointStateSize() > 0;
+  // One thread for a scene whose every stage is too small to share (no OpenMP call then).
+  const std::size_t most_items =
+      std::max({model_->bodies.size(), model_->geometries.size(),
+                static_cast<std::size_t>(model_->options.collision.max_points_per_pair) *
+                    (model_->automatic_contacts ? model_->geometries.size()
+                                                : model_->contact_pairs.size())});
+  threads_ = stageThreads(most_items, resolveThreads(model_->options.threads));
+  detector_.setThreads(threads_);
 }
 
 State Dynamics::initialState() const {
@@ -154,13 +180,14 @@ const Workspace& Dynamics::evaluate(const State& state) {
 
 void Dynamics::updatePoses(const State& state) {
   const Model& m = *model_;
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+  parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
     ws_.rotation[b] = r;
     if (m.bodies[b].kind == BodyKind::kDynamic)
       ws_.inv_inertia_world[b] = r * inv_inertia_body_[b] * r.transpose();
-  }
-  for (std::size_t g = 0; g < m.geometries.size(); ++g) {
+  });
+  const std::size_t ng = m.geometries.size();
+  parallelFor(ng, stageThreads(ng, threads_), [&](std::size_t g) {
     const Geometry& geo = m.geometries[g];
     if (geo.body.isWorld()) {
       ws_.geometry_poses[g] = geo.local_pose;
@@ -171,7 +198,7 @@ void Dynamics::updatePoses(const State& state) {
       pose.translation() = s.position;
       if (!at_body_origin_[g]) pose = pose * geo.local_pose;  // else the body's own frame
     }
-  }
+  });
 }
 
 void Dynamics::detect() {
@@ -184,22 +211,29 @@ void Dynamics::contactKinematics(const State& state) {
   ws_.max_penetration = 0.0;
   if (ws_.contact_points.empty()) return;
   // Each geometry's motion once per evaluation, not once per contact point and side.
-  for (std::size_t g = 0; g < m.geometries.size(); ++g)
+  const std::size_t geometries = m.geometries.size();
+  parallelFor(geometries, stageThreads(geometries, threads_), [&](std::size_t g) {
     geometry_motion_[g] = motionOf(m, state, ws_, static_cast<int>(g));
-  for (std::size_t i = 0; i < ws_.contact_points.size(); ++i) {
+  });
+  const std::size_t n = ws_.contact_points.size();
+  parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
     const ContactPair pair = m.contactPair(cp.pair);
     contact::contactKinematics(cp, geometry_motion_[static_cast<std::size_t>(pair.geometry_a)],
                                geometry_motion_[static_cast<std::size_t>(pair.geometry_b)],
                                ws_.contacts[i]);
+  });
+  for (const contact::ContactPoint& cp : ws_.contact_points)
     ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
-  }
 }
 
 void Dynamics::normalForces() {
   const Model& m = *model_;
-  for (contact::ContactRecord& rec : ws_.contacts)
+  const std::size_t n = ws_.contacts.size();
+  parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
+    contact::ContactRecord& rec = ws_.contacts[i];
     contact::normalForce(m.materials[m.contactPair(rec.point.pair).material], rec);
+  });
 }
 
 void Dynamics::friction(const State& state) {
@@ -210,13 +244,33 @@ void Dynamics::friction(const State& state) {
               ws_.friction_state_rate.end(), 0.0);
     ws_.friction_state_contact.assign(state.friction_states.size(), -1);
   }
+  // Memoryless and stateful laws: each point on its own (stateful ones only read the
+  // anchors), so in parallel when no dynamic law is in play.
+  auto independent = [&](contact::ContactRecord& rec) {
+    const ContactPair pair = m.contactPair(rec.point.pair);
+    const contact::Material& material = m.materials[pair.material];
+    if (!stateful_material_[pair.material]) {
+      contact::frictionForce(material, rec);
+      return;
+    }
+    const contact::StickAnchor* anchor =
+        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
+    const friction::StickView view =
+        contact::stickView(anchor, rec.point, anchorFrames(m, ws_, pair), state.time);
+    contact::frictionForce(material, view, rec);
+  };
+  if (!any_dynamic_ || steady_friction_) {
+    const std::size_t n = ws_.contacts.size();
+    parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) { independent(ws_.contacts[i]); });
+    return;
+  }
+  // Dynamic laws: the first point using a record drives it, so in contact order.
   std::array<double, contact::kMaxFrictionState> z, zdot, back;
   for (std::size_t i = 0; i < ws_.contacts.size(); ++i) {
     contact::ContactRecord& rec = ws_.contacts[i];
     const ContactPair pair = m.contactPair(rec.point.pair);
-    const contact::Material& material = m.materials[pair.material];
     const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
-    if (law != nullptr && !steady_friction_) {
+    if (law != nullptr) {
       const contact::StickAnchor* record =
           contact::findAnchor(state.friction_states, rec.point, m.options.collision.match_radius);
       if (record == nullptr) {
@@ -235,15 +289,7 @@ void Dynamics::friction(const State& state) {
       std::copy_n(back.data(), record->state_size, &ws_.friction_state_rate[record->state]);
       continue;
     }
-    if (!stateful_material_[pair.material]) {
-      contact::frictionForce(material, rec);
-      continue;
-    }
-    const contact::StickAnchor* anchor =
-        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
-    const friction::StickView view =
-        contact::stickView(anchor, rec.point, anchorFrames(m, ws_, pair), state.time);
-    contact::frictionForce(material, view, rec);
+    independent(rec);
   }
 }
 
@@ -253,15 +299,36 @@ void Dynamics::assemble(const State& state) {
     ws_.contact_wrench[b].setZero();
     ws_.spring_wrench[b].setZero();
   }
-  for (const contact::ContactRecord& rec : ws_.contacts) {
+  // Each point's force and its moments about the bodies' origins, in parallel; then the sums
+  // per body in contact order (the additions of the one-thread code, in its order).
+  const std::size_t n = ws_.contacts.size();
+  point_force_.resize(n);
+  point_torque_b_.resize(n);
+  point_torque_a_.resize(n);
+  auto bodiesOf = [&](const contact::ContactRecord& rec) {
     const ContactPair pair = m.contactPair(rec.point.pair);
-    const BodyIndex a = m.geometries[pair.geometry_a].body;
-    const BodyIndex b = m.geometries[pair.geometry_b].body;
+    return std::pair{m.geometries[pair.geometry_a].body, m.geometries[pair.geometry_b].body};
+  };
+  parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
+    const contact::ContactRecord& rec = ws_.contacts[i];
+    const auto [a, b] = bodiesOf(rec);
     const Vec3 f = rec.force();
+    point_force_[i] = f;
     if (!b.isWorld())
-      applyAt(ws_.contact_wrench[b.value], state.bodies[b.value].position, rec.point.position, f);
+      point_torque_b_[i] = (rec.point.position - state.bodies[b.value].position).cross(f);
     if (!a.isWorld())
-      applyAt(ws_.contact_wrench[a.value], state.bodies[a.value].position, rec.point.position, -f);
+      point_torque_a_[i] = (rec.point.position - state.bodies[a.value].position).cross(-f);
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [a, b] = bodiesOf(ws_.contacts[i]);
+    if (!b.isWorld()) {
+      ws_.contact_wrench[b.value].force += point_force_[i];
+      ws_.contact_wrench[b.value].torque += point_torque_b_[i];
+    }
+    if (!a.isWorld()) {
+      ws_.contact_wrench[a.value].force += -point_force_[i];
+      ws_.contact_wrench[a.value].torque += point_torque_a_[i];
+    }
   }
   accumulateSprings(state);
   accumulateBushingsAndTorsion(state);
@@ -324,12 +391,12 @@ void Dynamics::accumulateBushingsAndTorsion(const State& state) {
 
 void Dynamics::unconstrainedAccelerations(const State& state) {
   const Model& m = *model_;
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+  parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Body& body = m.bodies[b];
     if (body.kind != BodyKind::kDynamic) {
       ws_.linear_acceleration[b].setZero();
       ws_.angular_acceleration[b].setZero();
-      continue;
+      return;
     }
     const BodyState& s = state.bodies[b];
     const Vec3 force =
@@ -341,7 +408,7 @@ void Dynamics::unconstrainedAccelerations(const State& state) {
         s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));
     ws_.linear_acceleration[b] = force / body.mass + m.options.gravity;
     ws_.angular_acceleration[b] = ws_.inv_inertia_world[b] * (torque - gyro);
-  }
+  });
 }
 
 void Dynamics::solveConstraints(const State& state) {

@@ -86,6 +86,9 @@ class Dynamics {
   void setProfiling(bool on);
   bool profiling() const { return profiling_; }
   const StageProfile& profile() const { return profile_; }
+  // The threads an evaluation may use (SimulationOptions::threads resolved, under the
+  // constructing thread's ScopedThreadLimit): 1 for a scene too small to gain from more.
+  int threads() const { return threads_; }
 
  private:
   // The stages of evaluate, in order.
@@ -121,6 +124,10 @@ class Dynamics {
   bool profiling_ = false;
   StageProfile profile_;
   double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on
+  int threads_ = 1;
+  // assemble, per contact point: the force on B and the torques about B's and A's origins,
+  // computed in parallel and summed per body in contact order.
+  std::vector<Vec3> point_force_, point_torque_b_, point_torque_a_;
 };
 
 }  // namespace tribo

@@ -19,6 +19,7 @@
 #include "core/constraint_options.hpp"
 #include "core/force_element.hpp"
 #include "core/joint.hpp"
+#include "core/thread_count.hpp"
 #include "core/torsional_spring.hpp"
 #include "friction/name_table.hpp"
 
@@ -59,6 +60,9 @@ struct SimulationOptions {
   double absolute_tolerance = 1e-9;  // [m, m/s, rad/s, -]
   double max_internal_step = 0.0;    // [s]; 0: no limit
   bool event_location = true;        // stop and restart at friction regime changes
+  // Threads of one force evaluation (core/thread_count.hpp): kAutoThreads (0) or >= 1. The
+  // results do not depend on it; small scenes use one whatever it says.
+  int threads = 1;
 };
 
 struct Geometry {

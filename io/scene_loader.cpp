@@ -4,6 +4,7 @@
 //   [simulation]: [duration] [time_step] [integrator: rk4|semi_implicit_euler|dopri5|bdf]
 //                 [gravity] [baumgarte: {[alpha], [beta]}]
 //                 [rtol] [atol] [max_step] [event_location]   (dopri5, bdf only)
+//                 [threads: auto | N >= 1]   (threads of one force evaluation)
 //                 [collision: {[broadphase], [closed_form_box_halfspace],
 //                  [closed_form_primitives], [polyhedron_manifold], [max_points_per_pair],
 //                  [joined_bodies_collide], [match_radius]}]
@@ -398,6 +399,10 @@ class Loader {
     if (r.relative_tolerance) o.relative_tolerance = *r.relative_tolerance;
     if (r.absolute_tolerance) o.absolute_tolerance = *r.absolute_tolerance;
     if (r.event_location) o.event_location = *r.event_location;
+    if (r.threads) o.threads = *r.threads;
+    // A law the caller defined (in Python: it takes the GIL for each call) runs on the
+    // calling thread alone.
+    if (uses_user_law_) o.threads = 1;
     if (r.output_interval) {
       if (!(*r.output_interval > 0.0) || !std::isfinite(*r.output_interval))
         throw SceneError({file_}, "output.interval",
@@ -417,7 +422,7 @@ class Loader {
 
   void readSimulation(const Value& v) {
     const Map m(v, {"duration", "time_step", "integrator", "gravity", "baumgarte", "collision",
-                    "rtol", "atol", "max_step", "event_location", "constraints"});
+                    "rtol", "atol", "max_step", "event_location", "constraints", "threads"});
     SimulationOptions& o = builder_.options();
     if (auto x = m.get("duration")) o.duration = x->positive();
     if (auto x = m.get("time_step")) o.time_step = x->positive();
@@ -431,6 +436,17 @@ class Loader {
     if (auto x = m.get("atol")) o.absolute_tolerance = x->positive();
     if (auto x = m.get("max_step")) o.max_internal_step = x->nonNegative();
     if (auto x = m.get("event_location")) o.event_location = x->flag();
+    if (auto x = m.get("threads")) {
+      if (x->node().IsScalar() && x->text() == "auto") {
+        o.threads = kAutoThreads;
+      } else {
+        try {
+          o.threads = x->integer(1);
+        } catch (const SceneError&) {
+          x->fail("expected auto or a whole number >= 1, found " + x->found());
+        }
+      }
+    }
     o.gravity = m.vec3("gravity", o.gravity);
     if (auto x = m.get("baumgarte")) {
       const Map b(*x, {"alpha", "beta"});
@@ -762,8 +778,10 @@ class Loader {
   std::shared_ptr<const friction::FrictionLaw> frictionLaw(const Value& name) {
     const auto it = laws_.find(name.text());
     if (it == laws_.end()) {
-      if (const auto user = user_laws_.find(name.text()); user != user_laws_.end())
+      if (const auto user = user_laws_.find(name.text()); user != user_laws_.end()) {
+        uses_user_law_ = true;
         return user->second;
+      }
       Keys defined = law_names_;
       for (const auto& [user_name, law] : user_laws_) defined.push_back(user_name);
       name.fail("friction law '" + name.text() +
@@ -1058,6 +1076,7 @@ class Loader {
   std::vector<GazeboSurface> gazebo_surfaces_;
   std::vector<std::string> package_paths_;  // --package-path folders
   const UserLaws& user_laws_;
+  bool uses_user_law_ = false;  // a material's friction is one of user_laws_
   std::vector<std::string> notes_;
 };
 

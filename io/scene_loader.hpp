@@ -72,6 +72,7 @@ struct RunSettings {
   std::optional<double> absolute_tolerance;  // dopri5, bdf
   std::optional<bool> event_location;        // dopri5, bdf
   std::optional<double> output_interval;     // [s] output.interval
+  std::optional<int> threads;                // simulation.threads (kAutoThreads or >= 1)
 };
 
 // Friction laws the caller defines (e.g. one written in Python), by name: a material's

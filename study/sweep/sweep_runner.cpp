@@ -10,6 +10,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/thread_count.hpp"
 #include "io/scene_loader.hpp"
 #include "study/sweep/sweep_progress.hpp"
 #include "study/sweep/sweep_results.hpp"
@@ -133,6 +134,9 @@ void runPointsOnThreads(const SweepPlan& plan, const fs::path& out, unsigned job
                         const std::function<std::optional<std::size_t>()>& next,
                         const std::function<void(const FinishedPoint&)>& done) {
   auto worker = [&] {
+    // Points already share the cores: each evaluation keeps to its thread (no OpenMP team
+    // per point on top of `jobs` threads). With one job the scene's own threads apply.
+    const ScopedThreadLimit one_each(jobs > 1 ? 1 : 0);
     // The scene text parsed once per thread (planSweep has loaded it, so it parses).
     const io::SceneDocument document(plan.setup.scene_text, plan.setup.scene_path);
     while (const auto index = next()) {

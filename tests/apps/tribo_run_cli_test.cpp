@@ -3,7 +3,7 @@
 // computed, marked interrupted, as a byte-for-byte prefix of an uninterrupted run; a second
 // run on the same folder is refused while the first works; memory does not grow with the
 // duration (trajectory.csv is streamed); the progress line shows when asked and not with
-// --quiet.
+// --quiet; --threads gives the same trajectory bit for bit and refuses bad values.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -133,6 +133,40 @@ TEST_F(TriboRun, PeakMemoryDoesNotGrowWithTheDuration) {
   EXPECT_LT(static_cast<double>(rss[1]) / rss[0], 1.3) << rss[0] << " KiB vs " << rss[1] << " KiB";
   std::printf("peak resident memory: %ld KiB (200 s), %ld KiB (2000 s)\n", rss[0], rss[1]);
   EXPECT_EQ(lines(dir_ / durations[1] / "trajectory.csv"), 1 + 250'001);
+}
+
+}  // namespace
+
+namespace {
+
+// --threads: the same trajectory.csv, byte for byte, on 1 and 2 threads (400 boxes, 1600
+// contact points: the stages split); a value that is not a whole number >= 1 or auto is a
+// usage error naming the option.
+TEST_F(TriboRun, ThreadsGiveTheSameTrajectoryAndBadValuesAreRefused) {
+  const std::string grid = std::string(TRIBO_SOURCE_DIR) + "/scenes/box_grid20.yaml";
+  std::string csv[2];
+  for (const std::string threads : {"1", "2"}) {
+    const fs::path out = dir_ / threads;
+    const Result r = runTribo("run " + grid + " --out " + out.string() +
+                              " --quiet --set duration=0.05 --threads " + threads);
+    ASSERT_EQ(r.status, 0) << r.output;
+    csv[threads == "1" ? 0 : 1] = slurp(out / "trajectory.csv");
+  }
+  EXPECT_GT(lines(dir_ / "1" / "trajectory.csv"), 2);
+  EXPECT_TRUE(csv[0] == csv[1]);
+  for (const std::string bad : {"0", "-1", "2.5", "x"}) {
+    const Result r =
+        runTribo("run " + kBelt + " --out " + (dir_ / "bad").string() + " --threads " + bad);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("--threads: expected auto or a whole number from 1 to 4096, found '" +
+                            bad + "'"),
+              std::string::npos)
+        << r.output;
+  }
+  const Result missing =
+      runTribo("run " + kBelt + " --out " + (dir_ / "bad").string() + " --threads");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.output.find("--threads needs a value"), std::string::npos) << missing.output;
 }
 
 }  // namespace

@@ -1,0 +1,74 @@
+// Two threads against one in the same process (SimulationOptions::threads): resting box
+// grids of 20 x 20, 40 x 40 (1600 boxes) and more, generated here like scenes/box_grid20.yaml
+// (0.2 m boxes of 8 kg at a 0.25 m pitch on a half-space at their static depth, Coulomb
+// friction, semi-implicit Euler at 1 ms). Each iteration steps a one-thread simulator and a
+// two-thread one by the same steps, alternately in short runs so a change of the machine's
+// load hits both; counters: the step [us] of each, their ratio (speedup, > 1: two threads
+// faster) and the contact points per step. The trajectories are the same bit for bit
+// (tests/core/threaded_evaluation_test.cpp). Names: BM_Threads/grid<N>.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <sstream>
+#include <string>
+
+#include "core/simulator.hpp"
+#include "io/scene_loader.hpp"
+
+namespace {
+
+std::string boxGrid(int n) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "simulation: {time_step: 1.0e-3, integrator: semi_implicit_euler}\n"
+    << "friction_laws: {coulomb: {mu: 0.5, regularization: tanh, v_eps: 0.01}}\n"
+    << "materials:\n"
+    << "  - {name: m, normal: {law: linear, stiffness: 6.0e5, damping: 1000}, friction: coulomb,"
+    << " default: true}\n"
+    << "bodies:\n"
+    << "  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: halfspace}]}\n";
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      s << "  - {name: b" << i << "_" << j << ", mass: 8.0, position: [" << 0.25 * i << ", "
+        << 0.25 * j << ", " << 0.1 - 8.0 * 9.81 / (4 * 6.0e5) << "], geometry: [{name: s" << i
+        << "_" << j << ", shape: box, size: [0.2, 0.2, 0.2]}]}\n";
+  return s.str();
+}
+
+std::shared_ptr<const tribo::Model> grid(int n, int threads) {
+  tribo::io::RunSettings settings;
+  settings.threads = threads;
+  return tribo::io::loadSceneFromString(boxGrid(n), "grid.yaml", {}, {}, settings).model;
+}
+
+void BM_Threads(benchmark::State& st, int n) {
+  tribo::Simulator one(grid(n, 1)), two(grid(n, 2));
+  constexpr int kRun = 10;  // steps per turn
+  double seconds[2] = {0, 0};
+  long steps = 0;
+  for (auto _ : st) {
+    tribo::Simulator* sims[2] = {&one, &two};
+    for (int k = 0; k < 2; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      for (int i = 0; i < kRun; ++i)
+        if (!sims[k]->step().ok) {
+          st.SkipWithError("diverged");
+          return;
+        }
+      seconds[k] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    steps += kRun;
+  }
+  st.counters["step_us_1"] = 1e6 * seconds[0] / static_cast<double>(steps);
+  st.counters["step_us_2"] = 1e6 * seconds[1] / static_cast<double>(steps);
+  st.counters["speedup"] = seconds[0] / seconds[1];
+  st.counters["points_per_step"] = static_cast<double>(one.current().contacts.size());
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_Threads, grid20, 20)->Name("BM_Threads/grid20")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Threads, grid40, 40)->Name("BM_Threads/grid40")->Unit(benchmark::kMillisecond);
+// 70 x 70 (4900 boxes): set-up needs the pair bookkeeping without its O(n^2) memory first.
+// BENCHMARK_CAPTURE(BM_Threads, grid70,
+// 70)->Name("BM_Threads/grid70")->Unit(benchmark::kMillisecond);
