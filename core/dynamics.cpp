@@ -118,10 +118,12 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   }
   any_dynamic_ = any_dynamic_ || joint_forces_.jointStateSize() > 0;
   // One thread for a scene whose every stage is too small to share (no OpenMP call then).
+  // Automatic contacts have no pair list: about three pairs a geometry (a densely packed
+  // body's six neighbours, each pair counted once).
   const std::size_t most_items =
       std::max({model_->bodies.size(), model_->geometries.size(),
                 static_cast<std::size_t>(model_->options.collision.max_points_per_pair) *
-                    (model_->automatic_contacts ? model_->geometries.size()
+                    (model_->automatic_contacts ? 3 * model_->geometries.size()
                                                 : model_->contact_pairs.size())});
   threads_ = stageThreads(most_items, resolveThreads(model_->options.threads));
   detector_.setThreads(threads_);
