@@ -16,10 +16,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/contact_pair.hpp"
+
 namespace tribo {
 
 struct Model;
-struct ContactPair;
 
 struct AutomaticContacts {
   int geometry_count = 0;

@@ -206,6 +206,10 @@ void Dynamics::updatePoses(const State& state) {
 void Dynamics::detect() {
   detector_.detect(ws_.geometry_poses, ws_.contact_points);
   ws_.contacts.resize(ws_.contact_points.size());
+  // Each point's pair once (with automatic contacts it is derived from the id).
+  ws_.contact_pair.resize(ws_.contact_points.size());
+  for (std::size_t i = 0; i < ws_.contact_points.size(); ++i)
+    ws_.contact_pair[i] = model_->contactPair(ws_.contact_points[i].pair);
 }
 
 void Dynamics::contactKinematics(const State& state) {
@@ -220,7 +224,7 @@ void Dynamics::contactKinematics(const State& state) {
   const std::size_t n = ws_.contact_points.size();
   parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
-    const ContactPair pair = m.contactPair(cp.pair);
+    const ContactPair& pair = ws_.contact_pair[i];
     contact::contactKinematics(cp, geometry_motion_[static_cast<std::size_t>(pair.geometry_a)],
                                geometry_motion_[static_cast<std::size_t>(pair.geometry_b)],
                                ws_.contacts[i]);
@@ -234,7 +238,7 @@ void Dynamics::normalForces() {
   const std::size_t n = ws_.contacts.size();
   parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
     contact::ContactRecord& rec = ws_.contacts[i];
-    contact::normalForce(m.materials[m.contactPair(rec.point.pair).material], rec);
+    contact::normalForce(m.materials[ws_.contact_pair[i].material], rec);
   });
 }
 
@@ -249,7 +253,7 @@ void Dynamics::friction(const State& state) {
   // Memoryless and stateful laws: each point on its own (stateful ones only read the
   // anchors), so in parallel when no dynamic law is in play.
   auto independent = [&](contact::ContactRecord& rec) {
-    const ContactPair pair = m.contactPair(rec.point.pair);
+    const ContactPair& pair = pairOf(rec);
     const contact::Material& material = m.materials[pair.material];
     if (!stateful_material_[pair.material]) {
       contact::frictionForce(material, rec);
@@ -270,7 +274,7 @@ void Dynamics::friction(const State& state) {
   std::array<double, contact::kMaxFrictionState> z, zdot, back;
   for (std::size_t i = 0; i < ws_.contacts.size(); ++i) {
     contact::ContactRecord& rec = ws_.contacts[i];
-    const ContactPair pair = m.contactPair(rec.point.pair);
+    const ContactPair& pair = pairOf(rec);
     const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
     if (law != nullptr) {
       const contact::StickAnchor* record =
@@ -308,7 +312,7 @@ void Dynamics::assemble(const State& state) {
   point_torque_b_.resize(n);
   point_torque_a_.resize(n);
   auto bodiesOf = [&](const contact::ContactRecord& rec) {
-    const ContactPair pair = m.contactPair(rec.point.pair);
+    const ContactPair& pair = pairOf(rec);
     return std::pair{m.geometries[pair.geometry_a].body, m.geometries[pair.geometry_b].body};
   };
   parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
@@ -424,7 +428,7 @@ bool Dynamics::advanceFrictionStates(State& state) {
   const Model& m = *model_;
   anchor_book_.begin(state.stick_anchors);
   for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair pair = m.contactPair(rec.point.pair);
+    const ContactPair& pair = pairOf(rec);
     if (!stateful_material_[pair.material]) continue;
     const contact::AnchorFrames frames = anchorFrames(m, ws_, pair);
     const contact::StickAnchor* old =
@@ -451,7 +455,7 @@ bool Dynamics::registerFrictionStates(State& state) {
   next_values_.assign(state.friction_values.begin(),
                       state.friction_values.begin() + joint_forces_.jointStateSize());
   for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair pair = m.contactPair(rec.point.pair);
+    const ContactPair& pair = pairOf(rec);
     const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
     if (law == nullptr) continue;
     const contact::StickAnchor* old =
@@ -500,14 +504,13 @@ void Dynamics::settleFrictionStates(State& state) {
 }
 
 void Dynamics::stepFrictionStates(State& state, double h) const {
-  const Model& m = *model_;
   joint_forces_.stepStates(state, h);
   std::array<double, contact::kMaxFrictionState> z, back;
   for (std::size_t r = 0; r < state.friction_states.size(); ++r) {
     if (r >= ws_.friction_state_contact.size() || ws_.friction_state_contact[r] < 0) continue;
     const contact::ContactRecord& rec =
         ws_.contacts[static_cast<std::size_t>(ws_.friction_state_contact[r])];
-    const friction::DynamicFrictionLaw& law = *dynamic_law_[m.contactPair(rec.point.pair).material];
+    const friction::DynamicFrictionLaw& law = *dynamic_law_[pairOf(rec).material];
     const contact::StickAnchor& record = state.friction_states[r];
     double* stored = &state.friction_values[static_cast<std::size_t>(record.state)];
     contact::transportState(law, stored, record.normal, rec.point.normal, z.data());

@@ -112,6 +112,10 @@ class Dynamics {
   Workspace ws_;
   std::vector<Mat3> inv_inertia_body_;                    // per body, zero for kinematic bodies
   std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
+  // The pair of a record of ws_.contacts (set by detect()).
+  const ContactPair& pairOf(const contact::ContactRecord& rec) const {
+    return ws_.contact_pair[static_cast<std::size_t>(&rec - ws_.contacts.data())];
+  }
   std::vector<char> at_body_origin_;     // per geometry: its local pose is the identity
   std::vector<char> stateful_material_;  // per material: its friction law keeps state
   bool any_stateful_ = false;

@@ -62,8 +62,9 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
     a.elastic += torsionalEnergy(
         spring, torsionalDeflection(spring, bodyKinematics(state, ws.rotation, spring.body_a),
                                     bodyKinematics(state, ws.rotation, spring.body_b)));
-  for (const auto& c : ws.contacts) {
-    const ContactPair pair = model.contactPair(c.point.pair);
+  for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
+    const contact::ContactRecord& c = ws.contacts[i];
+    const ContactPair& pair = ws.contact_pair[i];
     a.elastic += contactPotential(model.materials[pair.material].normal, c.point.depth);
     const Vec3 f = c.force();  // on B; A gets -f
     const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};

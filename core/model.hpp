@@ -17,6 +17,7 @@
 #include "core/body.hpp"
 #include "core/bushing.hpp"
 #include "core/constraint_options.hpp"
+#include "core/contact_pair.hpp"
 #include "core/force_element.hpp"
 #include "core/joint.hpp"
 #include "core/thread_count.hpp"
@@ -81,12 +82,6 @@ struct Geometry {
 // Automatic contacts: the contact material between two surface materials (either order).
 struct SurfacePairMaterial {
   std::string surface_a, surface_b;
-  int material = -1;
-};
-
-struct ContactPair {
-  int geometry_a = -1;  // normal and friction forces are reported on B
-  int geometry_b = -1;
   int material = -1;
 };
 

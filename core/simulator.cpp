@@ -139,8 +139,9 @@ StepStatus Simulator::check() {
                       "' at a contact of body '" + name + "' is not finite");
   }
   const Workspace& ws = current();
-  for (const auto& c : ws.contacts) {
-    const ContactPair pair = m.contactPair(c.point.pair);
+  for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
+    const contact::ContactRecord& c = ws.contacts[i];
+    const ContactPair& pair = ws.contact_pair[i];
     // Deeper than the geometry's half width along the normal: a warning (recorded here,
     // worded after the run), not a stop; a contact that is failing shows as energy rising.
     for (int g : {pair.geometry_a, pair.geometry_b}) {

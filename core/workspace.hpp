@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/contact_point.hpp"
+#include "core/contact_pair.hpp"
 #include "core/math.hpp"
 
 namespace tribo {
@@ -32,6 +33,7 @@ struct Workspace {
   // One per contact point: contactKinematics (point, depth rate, slip), normalForces
   // (normal_force), friction (friction_force, mu).
   std::vector<contact::ContactRecord> contacts;
+  std::vector<ContactPair> contact_pair;  // contact_points[i]'s pair (geometries, material)
   // friction, dynamic laws: dz/dt for State::friction_values (zero where no contact point
   // uses the record in this evaluation), expressed against each record's stored normal; and
   // per record of State::friction_states the contact point that used it (-1: none).
