@@ -18,30 +18,12 @@
 #include <sstream>
 #include <string>
 
+#include "box_grid_scene.hpp"
 #include "core/dynamics.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
 
 namespace {
-
-std::string boxGridYaml(int side) {
-  std::ostringstream y;
-  y << "parameters: {k: 6.0e5, c: 1000.0}\n"
-       "simulation: {duration: 10, time_step: 1.0e-3, integrator: semi_implicit_euler}\n"
-       "friction_laws: {coulomb: {mu: 0.5, regularization: tanh, v_eps: 0.01}}\n"
-       "materials:\n"
-       "  - {name: ground_box, normal: {law: linear, stiffness: $k, damping: $c}, "
-       "friction: coulomb, default: true}\n"
-       "bodies:\n"
-       "  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: halfspace}]}\n";
-  y.precision(17);
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j)
-      y << "  - {name: b" << i << "_" << j << ", mass: 8.0, position: [" << 0.25 * i << ", "
-        << 0.25 * j << ", " << 0.1 - 8.0 * 9.81 / (4 * 6.0e5) << "], geometry: [{name: s" << i
-        << "_" << j << ", shape: box, size: [0.2, 0.2, 0.2]}]}\n";
-  return y.str();
-}
 
 double peakRssMb() {
   std::ifstream status("/proc/self/status");
@@ -63,7 +45,7 @@ double heapInUse() { return static_cast<double>(mallinfo2().uordblks); }
 
 void BM_GridSetUp(benchmark::State& st) {
   const int side = static_cast<int>(st.range(0));
-  const std::string text = boxGridYaml(side);
+  const std::string text = tribo::bench::boxGridYaml(side);
   double seconds = 0, loading = 0, held = 0;
   for (auto _ : st) {
     const double before = heapInUse();
@@ -96,7 +78,7 @@ double stepSeconds(const std::shared_ptr<const tribo::Model>& model, int steps) 
 
 void BM_GridStep(benchmark::State& st) {
   const int side = static_cast<int>(st.range(0));
-  const auto scene = tribo::io::loadSceneFromString(boxGridYaml(side), "grid.yaml");
+  const auto scene = tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(side), "grid.yaml");
   const int steps = std::max(20, 200000 / (side * side));
   double total = 0;
   for (auto _ : st) {
@@ -113,8 +95,8 @@ void BM_GridStep(benchmark::State& st) {
 }
 
 void BM_GridGrowth(benchmark::State& st) {
-  const auto small = tribo::io::loadSceneFromString(boxGridYaml(10), "grid.yaml");
-  const auto large = tribo::io::loadSceneFromString(boxGridYaml(70), "grid.yaml");
+  const auto small = tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(10), "grid.yaml");
+  const auto large = tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(70), "grid.yaml");
   double t_small = 0, t_large = 0;
   for (auto _ : st) {
     t_small += stepSeconds(small.model, 2000);
@@ -127,20 +109,12 @@ void BM_GridGrowth(benchmark::State& st) {
 
 }  // namespace
 
-BENCHMARK(BM_GridSetUp)
-    ->Arg(10)
-    ->Arg(20)
-    ->Arg(40)
-    ->Arg(70)
-    ->Arg(142)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
-BENCHMARK(BM_GridStep)
-    ->Arg(10)
-    ->Arg(20)
-    ->Arg(40)
-    ->Arg(70)
-    ->Arg(142)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+// Grid sides 10, 20, 40, 70 and 142, one iteration each.
+void gridSides(benchmark::internal::Benchmark* b) {
+  for (int side : {10, 20, 40, 70, 142}) b->Arg(side);
+  b->Unit(benchmark::kMillisecond)->Iterations(1);
+}
+
+BENCHMARK(BM_GridSetUp)->Apply(gridSides);
+BENCHMARK(BM_GridStep)->Apply(gridSides);
 BENCHMARK(BM_GridGrowth)->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -12,33 +12,17 @@
 #include <sstream>
 #include <string>
 
+#include "box_grid_scene.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
 
 namespace {
 
-std::string boxGrid(int n) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "simulation: {time_step: 1.0e-3, integrator: semi_implicit_euler}\n"
-    << "friction_laws: {coulomb: {mu: 0.5, regularization: tanh, v_eps: 0.01}}\n"
-    << "materials:\n"
-    << "  - {name: m, normal: {law: linear, stiffness: 6.0e5, damping: 1000}, friction: coulomb,"
-    << " default: true}\n"
-    << "bodies:\n"
-    << "  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: halfspace}]}\n";
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      s << "  - {name: b" << i << "_" << j << ", mass: 8.0, position: [" << 0.25 * i << ", "
-        << 0.25 * j << ", " << 0.1 - 8.0 * 9.81 / (4 * 6.0e5) << "], geometry: [{name: s" << i
-        << "_" << j << ", shape: box, size: [0.2, 0.2, 0.2]}]}\n";
-  return s.str();
-}
-
 std::shared_ptr<const tribo::Model> grid(int n, int threads) {
   tribo::io::RunSettings settings;
   settings.threads = threads;
-  return tribo::io::loadSceneFromString(boxGrid(n), "grid.yaml", {}, {}, settings).model;
+  return tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(n), "grid.yaml", {}, {}, settings)
+      .model;
 }
 
 void BM_Threads(benchmark::State& st, int n) {

@@ -66,12 +66,6 @@ struct BeltSpec {
   double exactX(double t) const;
 };
 
-// A box grid's scene text in the form of scenes/box_grid20.yaml: n x n boxes of 0.2 m and 8 kg
-// at a 0.25 m pitch, starting at their static depth m g / (4 k); the ground a half-space or
-// (box_ground) a kinematic box 0.2 m thick whose top is the plane z = 0, reaching 0.5 m past
-// the grid on every side.
-std::string boxGridYaml(int n, bool box_ground);
-
 // One engine's measured run.
 struct PeerRun {
   double seconds = 0.0;      // wall time of the steps only (building the world excluded)

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "box_grid_scene.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
 #include "peer_engines.hpp"
@@ -65,7 +66,7 @@ const tribo::io::Scene& scene(const Case& c) {
           tribo::io::loadScene(kScenes + c.file, c.overrides, {}, settings));
     } else {
       slot = std::make_unique<tribo::io::Scene>(tribo::io::loadSceneFromString(
-          tribo::peers::boxGridYaml(c.grid, c.box_ground), c.name, c.overrides, {}, settings));
+          tribo::bench::boxGridYaml(c.grid, c.box_ground), c.name, c.overrides, {}, settings));
     }
   }
   return *slot;
