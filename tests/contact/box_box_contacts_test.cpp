@@ -184,9 +184,11 @@ TEST(BoxBoxContacts, AgreesWithFclAndTheSeparatingAxesOverThousandsOfPoses) {
       // edge pairs of 10 m boxes: 1.5e-11 m at 2.9e-6 m depth).
       const double size = std::max(ha.maxCoeff(), hb.maxCoeff());
       EXPECT_LE(std::abs(d.depth - f.depth), 1e-6 * d.depth + 1e-12 * size) << scale << " " << i;
-      // An edge pair's depth is the penetration itself.
+      // An edge pair's depth is the penetration itself, to rounding: relative to the depth,
+      // or to the coordinates' size (the closest points of two edges of a 10 m box carry
+      // rounding of that size; clang at -O1 gives 1.3e-8 of a shallow depth there).
       if (d.feature >= 128) {
-        EXPECT_NEAR(d.depth / pen, 1.0, 1e-9) << scale << " " << i;
+        EXPECT_LE(std::abs(d.depth - pen), 1e-9 * pen + 1e-12 * size) << scale << " " << i;
       }
     }
   }
