@@ -7,16 +7,12 @@
 
 namespace tribo {
 
-namespace {
-
-std::uint64_t bodyKey(BodyIndex a, BodyIndex b) {
+std::uint64_t bodyPairKey(BodyIndex a, BodyIndex b) {
   auto x = static_cast<std::uint64_t>(static_cast<std::uint32_t>(a.value));
   auto y = static_cast<std::uint64_t>(static_cast<std::uint32_t>(b.value));
   if (x > y) std::swap(x, y);
   return (x << 32) | y;
 }
-
-}  // namespace
 
 int automaticPairId(const Model& model, int g, int h) {
   const AutomaticContacts& rule = model.automatic;
@@ -28,7 +24,7 @@ int automaticPairId(const Model& model, int g, int h) {
   if (rule.plane[g] && rule.plane[h]) return -1;
   if (!(a.collision_group & b.collision_mask) || !(b.collision_group & a.collision_mask)) return -1;
   if (!rule.joined_bodies_collide && !rule.joined.empty() &&
-      std::binary_search(rule.joined.begin(), rule.joined.end(), bodyKey(a.body, b.body)))
+      std::binary_search(rule.joined.begin(), rule.joined.end(), bodyPairKey(a.body, b.body)))
     return -1;
   return g * rule.geometry_count + h;
 }

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/body.hpp"
 #include "core/contact_pair.hpp"
 
 namespace tribo {
@@ -32,6 +33,9 @@ struct AutomaticContacts {
   std::vector<std::uint64_t> joined;  // sorted keys of body pairs joined by a joint
   bool joined_bodies_collide = false;
 };
+
+// The key of two bodies in AutomaticContacts::joined (either order).
+std::uint64_t bodyPairKey(BodyIndex a, BodyIndex b);
 
 // The most geometries automatic contacts take (pair ids are ints).
 inline constexpr int kMaxAutomaticGeometries = 46340;

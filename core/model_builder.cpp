@@ -186,12 +186,7 @@ void ModelBuilder::addAutomaticContacts(Model& model) const {
     rule.material[j * static_cast<std::size_t>(ns) + i] = e.material;
   }
   if (!rule.joined_bodies_collide)
-    for (const Joint& j : model.joints) {
-      auto x = static_cast<std::uint64_t>(static_cast<std::uint32_t>(j.parent.value));
-      auto y = static_cast<std::uint64_t>(static_cast<std::uint32_t>(j.child.value));
-      if (x > y) std::swap(x, y);
-      rule.joined.push_back((x << 32) | y);
-    }
+    for (const Joint& j : model.joints) rule.joined.push_back(bodyPairKey(j.parent, j.child));
   std::sort(rule.joined.begin(), rule.joined.end());
   rule.joined.erase(std::unique(rule.joined.begin(), rule.joined.end()), rule.joined.end());
   if (default_material_ >= 0) return;
