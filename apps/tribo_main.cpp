@@ -3,9 +3,9 @@
 // parameters (also an output that would not fit the disk), 3 the run diverged (partial
 // results written and marked so), 4 output error, 5 interrupted by SIGINT or SIGTERM
 // (results up to there written, marked so), 6 the output folder is in use by another run.
-// A run streams trajectory.csv as it goes; a first SIGINT/SIGTERM stops it at the next
-// output row, a second one ends the process at once (the files stay under their .partial
-// names).
+// A run streams trajectory.csv as it goes; a first SIGINT/SIGTERM stops it at once (back at
+// the last output row, study/scene_run.hpp), a second one ends the process at once (the files stay
+// under their .partial names).
 #include <signal.h>
 #include <unistd.h>
 
@@ -70,7 +70,7 @@ constexpr const char* kUsage =
     "world)\n"
     "  --verbose  list every note (default: one line per kind, with a count)\n";
 
-// Set by the first SIGINT or SIGTERM; the run stops at its next output row.
+// Set by the first SIGINT or SIGTERM; the run stops at once, back at its last output row.
 std::atomic<bool> g_stop{false};
 static_assert(std::atomic<bool>::is_always_lock_free);
 

@@ -21,6 +21,7 @@
 // (core/stability.hpp).
 #pragma once
 
+#include <atomic>
 #include <limits>
 #include <memory>
 #include <string>
@@ -34,10 +35,11 @@ namespace tribo {
 // and, where the integrator knows it, which body and quantity carried the largest error.
 struct IntegratorStatus {
   bool ok = true;
-  std::string message;   // set when !ok
-  std::string body;      // body concerned, empty if unknown
-  std::string quantity;  // e.g. "velocity.z", empty if unknown
-  double time = 0.0;     // [s] where the method stopped (when !ok)
+  std::string message;       // set when !ok
+  std::string body;          // body concerned, empty if unknown
+  std::string quantity;      // e.g. "velocity.z", empty if unknown
+  double time = 0.0;         // [s] where the method stopped (when !ok)
+  bool interrupted = false;  // stopped by the stop request, not by the method (when !ok)
 };
 
 // Work done so far, cumulative over the integrator's life.
@@ -59,9 +61,16 @@ class Integrator {
   // Evaluations per step for the fixed-step methods, 0 for adaptive ones (it varies).
   virtual int evaluationsPerStep() const = 0;
   const IntegratorCounters& counters() const { return counters_; }
+  // A flag set from outside (a signal handler, another thread): an adaptive method checks it
+  // at each right-hand-side evaluation and abandons the step (status interrupted), so a long
+  // stiff step ends within one evaluation. Fixed-step methods finish their short step.
+  void setStopRequest(const std::atomic<bool>* stop) { stop_ = stop; }
 
  protected:
+  bool stopRequested() const { return stop_ && stop_->load(std::memory_order_relaxed); }
+
   IntegratorCounters counters_;
+  const std::atomic<bool>* stop_ = nullptr;
 };
 
 // True for dopri5 and bdf: time_step is a communication interval, not the step.

@@ -63,10 +63,15 @@ StepStatus Simulator::advance() {
       integrator_->step(dynamics_, state_, model().options.time_step, evaluated_);
   if (integrated.ok) dynamics_.projectConstraints(state_);  // no-op unless enabled
   evaluated_ = false;
-  ++stats_.steps;
-  StepStatus status =
-      integrated.ok ? check()
-                    : failed(integrated.body, "integrator", integrated.message, integrated.time);
+  StepStatus status;
+  if (integrated.interrupted) {
+    status = {false, integrated.message, integrated.time, "", "interrupted", true};
+  } else {
+    ++stats_.steps;
+    status = integrated.ok
+                 ? check()
+                 : failed(integrated.body, "integrator", integrated.message, integrated.time);
+  }
   const IntegratorCounters& c = integrator_->counters();
   stats_.integrator_steps = c.steps;
   stats_.rejected_steps = c.rejected_steps;
@@ -97,7 +102,7 @@ StepStatus Simulator::failed(const std::string& body, const std::string& quantit
   const double t = std::isnan(time) ? state_.time : time;
   std::ostringstream s;
   s << "diverged at step " << stats_.steps << " (t = " << t << " s): " << what;
-  return {false, s.str(), t, body, quantity};
+  return {false, s.str(), t, body, quantity, false};
 }
 
 StepStatus Simulator::check() {

@@ -35,10 +35,11 @@ namespace tribo {
 
 struct StepStatus {
   bool ok = true;
-  std::string message;   // set when !ok: step, time, body and quantity in words
-  double time = 0.0;     // [s] of the state that failed the checks (when !ok)
-  std::string body;      // the body concerned, empty if none is known
-  std::string quantity;  // e.g. "velocity", "penetration", "energy", "integrator"
+  std::string message;       // set when !ok: step, time, body and quantity in words
+  double time = 0.0;         // [s] of the state that failed the checks (when !ok)
+  std::string body;          // the body concerned, empty if none is known
+  std::string quantity;      // e.g. "velocity", "penetration", "energy", "integrator"
+  bool interrupted = false;  // the stop request ended the step (not a divergence; !ok)
 };
 
 struct StepStats {
@@ -82,6 +83,11 @@ class Simulator {
 
   // Advances by the model's time step.
   StepStatus step();
+  // A flag set from outside (a signal handler, another thread). An adaptive integrator
+  // abandons its step when it sees it (within one force evaluation): step() then returns
+  // !ok with `interrupted` set and the state unchanged (the step is not counted).
+  // Fixed-step integrators finish their step; the caller checks the flag between steps.
+  void setStopRequest(const std::atomic<bool>* stop) { integrator_->setStopRequest(stop); }
   // Time per stage into StepStats::profile (core/stage_profile.hpp). Switching it on
   // starts the profile from zero; off (the default) costs nothing.
   void setProfiling(bool on);

@@ -58,6 +58,10 @@ SundialsStepper::~SundialsStepper() {
 
 int SundialsStepper::rhsCallback(double t, N_Vector y, N_Vector ydot, void* self) {
   auto* me = static_cast<SundialsStepper*>(self);
+  if (me->stopRequested()) {  // unrecoverable for the method: it returns at once
+    me->interrupted_ = true;
+    return -1;
+  }
   return me->system_.rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) ? 0 : 1;
 }
 
@@ -154,10 +158,22 @@ IntegratorStatus SundialsStepper::step(Dynamics& dynamics, State& state, double 
   int restarts_here = 0;
   IntegratorStatus status;
   setMaxSteps(maxInternalSteps(h));
+  interrupted_ = false;
   for (;;) {
     double t = state.time;
     const Advance result = advance(tout, t);
     if (result == Advance::kReached) break;
+    if (interrupted_) {
+      running_ = false;
+      last_error_.clear();
+      status.ok = false;
+      status.interrupted = true;
+      status.time = t;
+      std::ostringstream what;
+      what << "integrator " << name_ << " interrupted at t = " << t << " s";
+      status.message = what.str();
+      break;
+    }
     if (done_.steps + statistics().steps - steps_before > maxInternalSteps(h)) {
       std::ostringstream what;
       what << "more than " << maxInternalSteps(h) << " internal steps from t = " << state.time

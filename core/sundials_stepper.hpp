@@ -10,7 +10,9 @@
 //   the friction law) with the last step size as the first (the methods' own first-step
 //   estimate is unreliable at a kink); after kMaxEventRestarts events within one call (a
 //   chattering contact) suspend event location until the next call, which restarts;
-//   fail as "too much work" beyond maxInternalSteps(h) internal steps within one call.
+//   fail as "too much work" beyond maxInternalSteps(h) internal steps within one call;
+//   abandon the call when the stop request is set (checked at every right-hand side,
+//   which then reports an unrecoverable failure to the method): status interrupted.
 //
 // Counters survive restarts (SUNDIALS resets its own). A failure names the SUNDIALS error
 // and the body and quantity with the largest weighted local error (or the non-finite
@@ -82,6 +84,7 @@ class SundialsStepper : public Integrator {
   SUNContext context_ = nullptr;
   N_Vector y_ = nullptr;
   std::string last_error_;
+  bool interrupted_ = false;  // the right-hand side saw the stop request in this call
 
  private:
   void restart(double t0, bool at_event);

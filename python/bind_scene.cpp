@@ -3,8 +3,8 @@
 // (study/scene_run.hpp) and gives a Result: the trajectory's columns as NumPy arrays that view
 // the recording (no copy) and the summary as the dict of the summary.json `tribo run` writes
 // (study/result_writer.hpp: the same text, so the same numbers). The GIL is released during
-// the run; Ctrl-C stops it at the next output row and raises KeyboardInterrupt carrying the
-// partial Result as its `result` attribute.
+// the run; Ctrl-C stops it at once, back at the last output row, and raises KeyboardInterrupt
+// carrying the partial Result as its `result` attribute.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 

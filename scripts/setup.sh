@@ -14,7 +14,8 @@ PACKAGES=(build-essential cmake pkg-config clang-format
           openmpi-bin libopenmpi-dev
           pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/)
           python3-matplotlib  # examples/fig4_belt.py
-          clang libclang-rt-14-dev)  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
+          clang libclang-rt-14-dev  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
+          libomp-dev)  # OpenMP for the clang build (threads of one evaluation)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

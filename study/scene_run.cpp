@@ -132,22 +132,34 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   for (const std::string& note : droppedEquationNotes(model)) result.warnings.push_back(note);
   Simulator sim(scene.model);
   if (options.profile) sim.setProfiling(true);
+  sim.setStopRequest(options.stop);
   const auto start = std::chrono::steady_clock::now();
   result.trajectory.record(sim.state(), sim.current());
+  // The state of the last row: an interrupted run goes back to it, so the trajectory ends
+  // at the state the result reports and its rows are those of an uninterrupted run.
+  State row_state = sim.state();
   double next_output = interval;
   double next_check = monitor.interval;
   result.complete = true;
   bool at_row = true;  // the last row recorded is the current state
+  const auto interrupt = [&] {
+    if (!at_row) sim.setState(row_state);
+    result.complete = false;
+    result.interrupted = true;
+    result.message = "interrupted at t = " + numberText(sim.state().time) + " s";
+  };
   int since_clock = 0;
   auto last_progress = start;
   for (long i = 0; i < steps; ++i) {
-    if (options.stop && at_row && options.stop->load(std::memory_order_relaxed)) {
-      result.complete = false;
-      result.interrupted = true;
-      result.message = "interrupted at t = " + numberText(sim.state().time) + " s";
+    if (options.stop && options.stop->load(std::memory_order_relaxed)) {
+      interrupt();
       break;
     }
     const StepStatus status = sim.step();
+    if (status.interrupted) {
+      interrupt();
+      break;
+    }
     if (!status.ok) {
       result.complete = false;
       result.message = status.message;
@@ -157,6 +169,7 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
     at_row = false;
     if (sim.state().time >= next_output - 0.5 * dt) {
       result.trajectory.record(sim.state(), sim.current());
+      row_state = sim.state();
       next_output += interval;
       at_row = true;
     }

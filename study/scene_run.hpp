@@ -11,8 +11,11 @@
 // (study/series_spill.hpp), with the same figures as from memory. The simulator's step does
 // no I/O; a streamed row is a buffered write between steps.
 // A run may be stopped from outside (RunOptions::stop, e.g. set by a signal handler): it
-// goes on to the next output row, so the trajectory ends at the state the result reports,
-// and returns with interrupted = true.
+// stops at once (between steps, or inside a step of the adaptive integrators, which check
+// the flag at every force evaluation) and goes back to the state of the last output row,
+// so the trajectory ends at the state the result reports and its rows are those of an
+// uninterrupted run; it returns with interrupted = true. The step counts in `stats` include
+// the steps after that row that were given up.
 // Not here: opening files (study/result_writer.hpp), argument parsing, signals (apps/).
 #pragma once
 
@@ -58,7 +61,7 @@ struct RunOptions {
   // into `spill_dir` (the temporary folder when empty).
   RowSink* sink = nullptr;
   std::filesystem::path spill_dir;
-  // Set by someone else: stop at the next output row (interrupted).
+  // Set by someone else: stop now, back at the last output row (interrupted).
   const std::atomic<bool>* stop = nullptr;
   // Called about every `progress_interval` wall seconds with the simulated time [s].
   std::function<void(double)> progress;

@@ -79,7 +79,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
       for (const auto& [g, sign] : {std::pair{pair.geometry_a, -1.0}, {pair.geometry_b, 1.0}}) {
         const BodyIndex b = model_.geometries[g].body;
         if (b.isWorld()) continue;
-        slip_[b.value] = std::max(slip_[b.value], c.slip.norm());
+        slip_[b.value] = std::max(slip_[b.value], c.slip.stableNorm());
         normal_[b.value] += c.normal_force;
         friction_[b.value] += sign * c.friction_force;
       }
@@ -93,7 +93,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
       const auto p = static_cast<std::size_t>(slots_.slot(c.point.pair));
       pair_normal_[p] += c.normal_force;
       pair_friction_[p] += c.friction_force;
-      pair_slip_[p] = std::max(pair_slip_[p], c.slip.norm());
+      pair_slip_[p] = std::max(pair_slip_[p], c.slip.stableNorm());
     }
   }
   if (friction_states_) {
@@ -134,12 +134,12 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
       row_[col++] = slip_[b];
       row_[col++] = normal_[b];
     }
-    if (friction_force_) row_[col++] = friction_[b].norm();
+    if (friction_force_) row_[col++] = friction_[b].stableNorm();
   }
   if (pairs_)
     for (std::size_t p = 0; p < pair_normal_.size(); ++p) {
       row_[col++] = pair_normal_[p];
-      row_[col++] = pair_friction_[p].norm();
+      row_[col++] = pair_friction_[p].stableNorm();
       row_[col++] = pair_slip_[p];
     }
   if (joints_) {

@@ -6,6 +6,9 @@
 // study/result_writer.hpp) and, unless the recorder was made without, into memory, one
 // column per channel, so an analysis reads a column without copying (sweeps, the tradeoff).
 // A recorder that keeps no rows holds one row of scratch, whatever the duration.
+// Magnitudes (slip speeds, friction forces) are taken without overflow in the squares
+// (Eigen's stableNorm): a finite force of 1e200 N on a diverging run is written as such, never
+// as an empty field.
 // Not here: file formats, analysis.
 #pragma once
 

@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "io/scene_loader.hpp"
@@ -123,8 +125,9 @@ TEST(StreamedRun, WritesTheRowsAKeptRunHoldsAndTheSameSummary) {
   fs::remove_all(dir);
 }
 
-TEST(StreamedRun, AStopRequestEndsTheRunAtAnOutputRow) {
-  // Output every 10 steps; the stop comes at the first progress call, mid-interval.
+TEST(StreamedRun, AStopRequestEndsTheRunBackAtTheLastOutputRow) {
+  // Output every 10 steps; the stop comes at the first progress call (after 64 steps),
+  // mid-interval: the run goes back to the row at 60 steps.
   const io::Scene scene =
       io::loadScene(kBelt, {"duration=1000", "dt=0.001", "output_interval=0.01"});
   std::atomic<bool> stop{false};
@@ -142,10 +145,43 @@ TEST(StreamedRun, AStopRequestEndsTheRunAtAnOutputRow) {
   EXPECT_FALSE(r.complete);
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(calls, 1);
-  ASSERT_GE(rows.rows.size(), 2u);
+  ASSERT_EQ(rows.rows.size(), 7u);                      // t = 0, 0.01, ..., 0.06
   EXPECT_EQ(rows.rows.back()[0], r.simulated_seconds);  // the last row is the last state
-  EXPECT_LT(r.simulated_seconds, 1.0);                  // 64 steps and the rest of one interval
+  EXPECT_NEAR(r.simulated_seconds, 0.06, 1e-12);
   EXPECT_NE(r.message.find("interrupted at t = "), std::string::npos) << r.message;
+  // Those rows are an uninterrupted run's, bit for bit.
+  const RunResult full =
+      runScene(io::loadScene(kBelt, {"duration=0.1", "dt=0.001", "output_interval=0.01"}));
+  ASSERT_TRUE(full.complete);
+  for (std::size_t row = 0; row < rows.rows.size(); ++row)
+    for (std::size_t c = 0; c < rows.rows[row].size(); ++c)
+      ASSERT_EQ(rows.rows[row][c], full.trajectory.column(c)[row]) << row << " " << c;
+}
+
+TEST(StreamedRun, AStopRequestEndsALongStepOfTheAdaptiveIntegratorsInsideIt) {
+  // One step (one output interval) of 1000 s of the belt: minutes of internal steps for bdf
+  // and dopri5. The request comes from another thread while the first step runs; the run
+  // gives it up and ends at its only row, t = 0.
+  for (const std::string integrator : {"bdf", "dopri5"}) {
+    const io::Scene scene = io::loadScene(
+        kBelt, {"integrator=" + integrator, "duration=1000", "dt=1000", "output_interval=1000"});
+    std::atomic<bool> stop{false};
+    Rows rows;
+    RunOptions options;
+    options.sink = &rows;
+    options.stop = &stop;
+    std::thread raise([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      stop = true;
+    });
+    const RunResult r = runScene(scene, options);
+    raise.join();
+    EXPECT_TRUE(r.interrupted) << integrator;
+    EXPECT_FALSE(r.complete);
+    ASSERT_EQ(rows.rows.size(), 1u) << integrator;
+    EXPECT_EQ(r.simulated_seconds, 0.0);
+    EXPECT_EQ(rows.rows.back()[0], 0.0);
+  }
 }
 
 TEST(OutputBudget, RefusesWhatWouldNotFitAndNamesTheKeys) {
