@@ -1,5 +1,5 @@
 // What the urdf_tree_fuzzer harness does with one input: its bytes choose a URDF robot's
-// tree (a chain, a wide tree, random parents, a binary tree) of 1 to 40 000 links, optionally
+// tree (a chain, a wide tree, random parents, a binary tree) of 1 to 12 000 links, optionally
 // wrapped in deeply nested elements, and every number it writes (masses, inertias, collision
 // sizes and origins, joint origins, axes, limits, dynamics, <gazebo> tags) from a table of
 // ordinary, zero, negative, tiny, huge and non-finite texts; the text is read by
@@ -69,7 +69,7 @@ inline void checkReadRobot(const io::UrdfRobot& r) {
 
 // Byte 0: bits 0-1 the shape (0 chain, 1 wide: every link under the root, 2 each link under
 // one of the 256 before it, 3 binary), bit 2 clean (ordinary values only), bit 3 big (links
-// from bytes 1-2, up to 40 000; else 1 + byte 1 % 64), bit 4 nest (the <gazebo> tags wrapped
+// from bytes 1-2, up to 12 000; else 1 + byte 1 % 64), bit 4 nest (the <gazebo> tags wrapped
 // in as many nested elements as links). The rest: the value bytes, read in turn and over
 // again (each picks kUrdfValueTexts[b % 32], or [b % 8] when clean; a missing one is 0).
 class UrdfTreeText {
@@ -82,7 +82,7 @@ class UrdfTreeText {
     clean_ = (mode & 4u) != 0;
     const bool big = (mode & 8u) != 0, nest = (mode & 16u) != 0;
     const int n =
-        big ? 1 + static_cast<int>((byte(1) | (byte(2) << 8)) % 40000u) : 1 + byte(1) % 64;
+        big ? 1 + static_cast<int>((byte(1) | (byte(2) << 8)) % 12000u) : 1 + byte(1) % 64;
     std::string s = "<robot name=\"fuzz\">\n";
     for (int i = 0; i < n; ++i) link(s, i);
     static const char* const kTypes[] = {"fixed",     "revolute", "continuous",
