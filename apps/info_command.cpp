@@ -1,9 +1,11 @@
 #include "apps/info_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "core/stability.hpp"
 #include "io/urdf_reader.hpp"
@@ -13,27 +15,44 @@ namespace tribo::app {
 
 namespace {
 
+// The link tree, one line per link, indented by depth; walked with a stack of its own, as a
+// chain of links is as deep as it is long.
 void printTree(const io::UrdfRobot& r) {
   std::map<std::string, std::vector<const io::UrdfJoint*>> children;
   for (const auto& j : r.joints) children[j.parent].push_back(&j);
-  std::function<void(const std::string&, int, const io::UrdfJoint*)> visit =
-      [&](const std::string& link, int depth, const io::UrdfJoint* via) {
-        const io::UrdfLink* l = r.findLink(link);
-        std::string line(static_cast<std::size_t>(2 * depth + 2), ' ');
-        line += link;
-        if (via) line += "  [" + via->type + " '" + via->name + "']";
-        char mass[64];
-        if (l && l->has_inertial)
-          std::snprintf(mass, sizeof mass, "  %.6g kg", l->mass);
-        else
-          std::snprintf(mass, sizeof mass, "  (no inertial)");
-        line += mass;
-        if (l && !l->collisions.empty())
-          line += "  " + std::to_string(l->collisions.size()) + " collision";
-        std::printf("%s\n", line.c_str());
-        for (const auto* j : children[link]) visit(j->child, depth + 1, j);
-      };
-  visit(r.root, 0, nullptr);
+  std::map<std::string, const io::UrdfLink*> links;
+  for (const auto& l : r.links) links.emplace(l.name, &l);
+  struct Visit {
+    std::string link;
+    int depth;
+    const io::UrdfJoint* via;
+  };
+  std::vector<Visit> stack{{r.root, 0, nullptr}};
+  while (!stack.empty()) {
+    const Visit v = stack.back();
+    stack.pop_back();
+    const auto found = links.find(v.link);
+    const io::UrdfLink* l = found == links.end() ? nullptr : found->second;
+    // Indented by depth up to kIndentDepth; deeper links say their depth instead (a chain of
+    // n links would print n^2 spaces).
+    constexpr int kIndentDepth = 32;
+    std::string line(static_cast<std::size_t>(2 * std::min(v.depth, kIndentDepth) + 2), ' ');
+    if (v.depth > kIndentDepth) line += "[depth " + std::to_string(v.depth) + "] ";
+    line += v.link;
+    if (v.via) line += "  [" + v.via->type + " '" + v.via->name + "']";
+    char mass[64];
+    if (l && l->has_inertial)
+      std::snprintf(mass, sizeof mass, "  %.6g kg", l->mass);
+    else
+      std::snprintf(mass, sizeof mass, "  (no inertial)");
+    line += mass;
+    if (l && !l->collisions.empty())
+      line += "  " + std::to_string(l->collisions.size()) + " collision";
+    std::printf("%s\n", line.c_str());
+    const auto& below = children[v.link];
+    for (auto j = below.rbegin(); j != below.rend(); ++j)
+      stack.push_back({(*j)->child, v.depth + 1, *j});
+  }
 }
 
 // A note's kind: its text with quoted names and numbers set aside.

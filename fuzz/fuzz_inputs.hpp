@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "fuzz/urdf_tree_input.hpp"
 #include "io/mesh_loader.hpp"
 #include "io/scene_loader.hpp"
 #include "io/scene_parameters.hpp"
@@ -50,11 +51,13 @@ inline void sceneYaml(const std::uint8_t* data, std::size_t size) {
   }
 }
 
-// URDF text. Bad input: io::UrdfError, or issues in the robot read.
+// URDF text. Bad input: io::UrdfError, or issues in the robot read; a robot read without
+// errors has only finite numbers, none negative where a negative is wrong (checkReadRobot).
 inline void urdf(const std::uint8_t* data, std::size_t size) {
   const std::string xml(reinterpret_cast<const char*>(data), size);
   try {
-    (void)io::readUrdfFromString(xml, "fuzz.urdf").hasErrors();
+    const io::UrdfRobot robot = io::readUrdfFromString(xml, "fuzz.urdf");
+    if (!robot.hasErrors()) checkReadRobot(robot);
   } catch (const io::UrdfError&) {
   }
 }

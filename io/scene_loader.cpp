@@ -88,6 +88,7 @@
 #include "friction/tabulated_law.hpp"
 #include "io/friction_curve.hpp"
 #include "io/mesh_loader.hpp"
+#include "io/run_settings_check.hpp"
 #include "io/scene_expression.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
@@ -352,6 +353,7 @@ class Loader {
     Scene scene;
     if (auto o = m.get("output")) scene.output = readOutput(*o);
     applyRunSettings(settings, scene.output);
+    checkRunOptions(builder_.options(), file_);
     scene.path = file_;
     try {
       scene.model = builder_.build();
@@ -1134,6 +1136,10 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
   std::ifstream in(path);
   if (!std::filesystem::is_regular_file(path, ec) || !in)
     throw SceneError("cannot open scene file '" + path + "'");
+  if (looksLikeUrdf(path))
+    throw SceneError(path + ": a URDF robot (its first element is <robot>), not a scene file: " +
+                     "load it with sceneFromUrdf (`tribo run FILE`) or name it in a scene's " +
+                     "robots:");
   std::ostringstream text;
   text << in.rdbuf();
   return loadSceneFromString(text.str(), path, overrides, package_paths, settings, user_laws);

@@ -82,7 +82,9 @@ using UserLaws = std::map<std::string, std::shared_ptr<const friction::FrictionL
 
 // Loads a scene file. `overrides` are NAME=VALUE strings (the command line's --set), applied
 // to the parameters: section before any "$name" is resolved; `package_paths` are the
-// command line's --package-path folders for the robots' package:// meshes. Throws SceneError.
+// command line's --package-path folders for the robots' package:// meshes. Throws SceneError,
+// also for a bad run setting (naming the file and the setting's key, io/run_settings_check.hpp)
+// and for a URDF file (io/urdf_scene.hpp loads one as a scene).
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
                 const std::vector<std::string>& package_paths = {},
                 const RunSettings& settings = {}, const UserLaws& user_laws = {});

@@ -19,10 +19,16 @@ Eigen::Isometry3d jointMotion(const UrdfJoint& j, double q) {
 
 UrdfAssembly assembleUrdf(const UrdfRobot& robot, const Eigen::Isometry3d& base,
                           const std::map<std::string, double>& positions) {
+  // Joints by name and by child link: every look-up below is a map's, so assembling is
+  // O(n log n) in the links, whatever the shape of the tree.
+  std::map<std::string, int> joint_by_name, joint_by_child;
+  for (std::size_t k = 0; k < robot.joints.size(); ++k) {
+    joint_by_name.emplace(robot.joints[k].name, static_cast<int>(k));
+    joint_by_child[robot.joints[k].child] = static_cast<int>(k);  // the last, as before
+  }
   for (const auto& [name, q] : positions) {
-    const UrdfJoint* j = nullptr;
-    for (const auto& candidate : robot.joints)
-      if (candidate.name == name) j = &candidate;
+    const auto named = joint_by_name.find(name);
+    const UrdfJoint* j = named == joint_by_name.end() ? nullptr : &robot.joints[named->second];
     if (!j)
       throw std::invalid_argument("no joint named '" + name + "' in robot '" + robot.name + "'");
     if (j->type == "fixed")
@@ -42,11 +48,9 @@ UrdfAssembly assembleUrdf(const UrdfRobot& robot, const Eigen::Isometry3d& base,
   // Links are stored parents first, so one pass places every link and group.
   for (std::size_t i = 0; i < n; ++i) {
     const UrdfLink& link = robot.links[i];
-    const UrdfJoint* joint = nullptr;
-    int joint_index = -1;
-    for (std::size_t k = 0; k < robot.joints.size(); ++k)
-      if (robot.joints[k].child == link.name)
-        joint = &robot.joints[k], joint_index = static_cast<int>(k);
+    const auto above = joint_by_child.find(link.name);
+    const int joint_index = above == joint_by_child.end() ? -1 : above->second;
+    const UrdfJoint* joint = joint_index < 0 ? nullptr : &robot.joints[joint_index];
     if (!joint) {
       a.link_world[i] = base;
     } else {

@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "contact/shape_inertia.hpp"
@@ -154,6 +155,9 @@ UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& read,
   std::vector<Eigen::Isometry3d> body_pose(a.groups.size(), Eigen::Isometry3d::Identity());
   std::vector<int> parent_group(a.groups.size(), -1);
   std::vector<Eigen::Isometry3d> joint_world(a.groups.size(), Eigen::Isometry3d::Identity());
+  std::map<std::string, int> link_index;
+  for (std::size_t li = 0; li < robot.links.size(); ++li)
+    link_index.emplace(robot.links[li].name, static_cast<int>(li));
   for (std::size_t gi = 0; gi < a.groups.size(); ++gi) {
     const UrdfBodyGroup& g = a.groups[gi];
     const Eigen::Isometry3d& top = a.link_world[g.top_link];
@@ -168,9 +172,7 @@ UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& read,
     }
     if (g.parent_joint >= 0) {
       const UrdfJoint& j = robot.joints[g.parent_joint];
-      int parent_link = -1;
-      for (std::size_t li = 0; li < robot.links.size(); ++li)
-        if (robot.links[li].name == j.parent) parent_link = static_cast<int>(li);
+      const int parent_link = link_index.at(j.parent);
       parent_group[gi] = a.group_of_link[parent_link];
       joint_world[gi] = a.link_world[parent_link] * j.origin;
     }
@@ -194,10 +196,11 @@ UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& read,
         (j.type == "prismatic" ? Eigen::Vector3d(axis_world * qdot) : Eigen::Vector3d::Zero()) +
         ang[gi].cross(body_pose[gi].translation() - pj);
   }
+  std::set<std::string> movable;
+  for (const auto& j : robot.joints)
+    if (j.type != "fixed") movable.insert(j.name);
   for (const auto& [name, rate] : placement.joint_velocities) {
-    bool found = false;
-    for (const auto& j : robot.joints) found |= j.name == name && j.type != "fixed";
-    if (!found)
+    if (!movable.count(name))
       throw std::invalid_argument("no movable joint named '" + name + "' in robot '" + robot.name +
                                   "' (joint velocity given)");
   }

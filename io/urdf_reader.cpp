@@ -13,13 +13,11 @@
 #include <sstream>
 
 #include "io/urdf_checks.hpp"
+#include "io/urdf_xml_checks.hpp"
 
 namespace tribo::io {
 
 namespace {
-
-const std::set<std::string> kJointTypes{"fixed",     "revolute", "continuous",
-                                        "prismatic", "floating", "planar"};
 
 // Collects urdfdom's console messages while it parses, instead of printing them.
 // console_bridge has one process-wide handler: this one is installed once and files each
@@ -45,6 +43,22 @@ urdf::ModelInterfaceSharedPtr parseCollecting(const std::string& xml,
   MessageCollector::sink = nullptr;
   return model;
 }
+
+// urdfdom's links own their children (Link::child_links), so letting go of the root of a
+// long chain destroyed it link within link, in a recursion as deep as the chain (a 100 000-link
+// chain overflowed a 512 kB stack). Each link lets go of its children first, while the model
+// still holds every link; then the model frees them one by one.
+struct ModelTeardown {
+  const urdf::ModelInterfaceSharedPtr& model;
+  ~ModelTeardown() {
+    if (!model) return;
+    for (auto& [name, link] : model->links_) {
+      if (!link) continue;
+      link->child_links.clear();
+      link->child_joints.clear();
+    }
+  }
+};
 
 Eigen::Isometry3d toIsometry(const urdf::Pose& p) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -112,10 +126,6 @@ Eigen::Isometry3d originOf(const TiXmlElement* parent) {
   return t;
 }
 
-struct XmlIndex {
-  std::map<std::string, const TiXmlElement*> links, joints;
-};
-
 class Reader {
  public:
   Reader(const std::string& path, const PackagePaths& packages, const UrdfReadOptions& options)
@@ -138,6 +148,7 @@ class Reader {
       std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[bad]));
       throw UrdfError(at(line) + "expected UTF-8 text, found byte " + byte);
     }
+    checkUrdfNesting(text, path_);
     TiXmlDocument doc;
     doc.Parse(text.c_str());
     if (doc.Error() && doc.ErrorId() == TiXmlBase::TIXML_ERROR_DOCUMENT_EMPTY)
@@ -154,7 +165,8 @@ class Reader {
     std::vector<UrdfIssue> repairs;
     std::set<std::string> unlimited;
     if (!options_.strict) repair(robot, repairs, unlimited);
-    const XmlIndex index = indexAndCheck(robot);
+    const UrdfXmlIndex index = indexUrdfXml(robot, path_);
+    checkUrdfValues(robot, path_);
     std::string xml = text;
     if (!repairs.empty()) {
       TiXmlPrinter printer;
@@ -164,6 +176,7 @@ class Reader {
 
     std::vector<std::string> messages;
     const urdf::ModelInterfaceSharedPtr model = parseCollecting(xml, messages);
+    const ModelTeardown teardown{model};
     if (!model) {
       std::string why;
       for (const auto& m : messages) why += (why.empty() ? "" : "; ") + m;
@@ -176,7 +189,7 @@ class Reader {
     const urdf::LinkConstSharedPtr root = model->getRoot();
     if (!root) throw UrdfError(at(0) + "no root link");
     r.root = root->name;
-    addLink(r, root, index);
+    addTree(r, root, index);
     for (auto& j : r.joints)
       if (unlimited.count(j.name)) j.has_limits = false;
     readGazebo(r, robot);
@@ -249,76 +262,21 @@ class Reader {
     }
   }
 
-  // Locates links and joints and checks what urdfdom would only report without a line.
-  XmlIndex indexAndCheck(const TiXmlElement* robot) const {
-    XmlIndex index;
-    for (const TiXmlElement* e = robot->FirstChildElement("link"); e;
-         e = e->NextSiblingElement("link")) {
-      const char* name = e->Attribute("name");
-      if (!name) throw UrdfError(at(e->Row()) + "<link> without a name");
-      if (!index.links.emplace(name, e).second)
-        throw UrdfError(at(e->Row()) + "link '" + name + "' is defined twice");
-    }
-    for (const TiXmlElement* e = robot->FirstChildElement("joint"); e;
-         e = e->NextSiblingElement("joint")) {
-      const char* name = e->Attribute("name");
-      if (!name) throw UrdfError(at(e->Row()) + "<joint> without a name");
-      const std::string who = "joint '" + std::string(name) + "'";
-      index.joints.emplace(name, e);
-      const char* type = e->Attribute("type");
-      if (!type || !kJointTypes.count(type))
-        throw UrdfError(at(e->Row()) + who + ": unknown type '" + (type ? type : "") +
-                        "' (expected one of: fixed, revolute, continuous, prismatic, floating, "
-                        "planar)");
-      for (const char* role : {"parent", "child"}) {
-        const TiXmlElement* p = e->FirstChildElement(role);
-        const char* link = p ? p->Attribute("link") : nullptr;
-        if (!link) throw UrdfError(at(e->Row()) + who + ": no <" + role + " link=...>");
-        if (!index.links.count(link))
-          throw UrdfError(at(p->Row()) + who + ": " + role + " link '" + link + "' is not defined");
-      }
-    }
-    checkTree(index);
-    return index;
-  }
-
-  // A URDF is a tree: every link is the child of at most one joint, and following parents
-  // from any link ends at a root. Checked here, with lines, rather than left to urdfdom,
-  // whose parser also leaks the link objects of a cyclic file (they own each other).
-  void checkTree(const XmlIndex& index) const {
-    std::map<std::string, const TiXmlElement*> parent_joint;  // child link -> its joint
-    for (const auto& [name, e] : index.joints) {
-      const std::string child = e->FirstChildElement("child")->Attribute("link");
-      const auto [it, fresh] = parent_joint.emplace(child, e);
-      if (!fresh)
-        throw UrdfError(at(e->Row()) + "joint '" + name + "': link '" + child +
-                        "' is already the child of joint '" + it->second->Attribute("name") +
-                        "' (line " + std::to_string(it->second->Row()) +
-                        "); a URDF is a tree, each link has one parent");
-    }
-    for (const auto& [start, link_element] : index.links) {
-      std::vector<std::string> path{start};
-      std::set<std::string> seen{start};
-      for (auto it = parent_joint.find(start); it != parent_joint.end();
-           it = parent_joint.find(path.back())) {
-        const std::string parent = it->second->FirstChildElement("parent")->Attribute("link");
-        if (seen.count(parent)) {
-          std::string loop = parent;
-          for (auto p = path.rbegin(); p != path.rend(); ++p) {
-            loop += " -> " + *p;
-            if (*p == parent) break;
-          }
-          throw UrdfError(at(it->second->Row()) + "no root link: joint '" +
-                          it->second->Attribute("name") + "' closes the kinematic loop " + loop +
-                          " (a URDF is a tree; close loops in a scene file instead)");
-        }
-        path.push_back(parent);
-        seen.insert(parent);
-      }
+  // Links parents first, depth first in urdfdom's order of children, each after the joint
+  // above it; with a stack of its own, as a chain of links is as deep as it is long.
+  void addTree(UrdfRobot& r, const urdf::LinkConstSharedPtr& root, const UrdfXmlIndex& index) {
+    std::vector<urdf::LinkConstSharedPtr> stack{root};
+    while (!stack.empty()) {
+      const urdf::LinkConstSharedPtr link = stack.back();
+      stack.pop_back();
+      if (link != root && link->parent_joint) addJoint(r, *link->parent_joint, index);
+      addLink(r, link, index);
+      for (auto c = link->child_links.rbegin(); c != link->child_links.rend(); ++c)
+        stack.push_back(*c);
     }
   }
 
-  void addLink(UrdfRobot& r, const urdf::LinkConstSharedPtr& link, const XmlIndex& index) {
+  void addLink(UrdfRobot& r, const urdf::LinkConstSharedPtr& link, const UrdfXmlIndex& index) {
     UrdfLink l;
     l.name = link->name;
     const auto it = index.links.find(l.name);
@@ -342,13 +300,9 @@ class Reader {
       for (const auto& c : link->collision_array) addCollision(r, l, *c);
     }
     r.links.push_back(l);
-    for (const auto& child : link->child_links) {
-      addJoint(r, *child->parent_joint, index);
-      addLink(r, child, index);
-    }
   }
 
-  void addJoint(UrdfRobot& r, const urdf::Joint& j, const XmlIndex& index) {
+  void addJoint(UrdfRobot& r, const urdf::Joint& j, const UrdfXmlIndex& index) {
     UrdfJoint u;
     u.name = j.name;
     const auto it = index.joints.find(j.name);
@@ -477,14 +431,15 @@ class Reader {
   }
 
   void readGazebo(UrdfRobot& r, const TiXmlElement* robot) {
+    std::map<std::string, std::size_t> link_index;
+    for (std::size_t i = 0; i < r.links.size(); ++i) link_index.emplace(r.links[i].name, i);
     for (const TiXmlElement* g = robot->FirstChildElement("gazebo"); g;
          g = g->NextSiblingElement("gazebo")) {
       const char* ref = g->Attribute("reference");
       if (!ref) continue;
-      UrdfLink* link = nullptr;
-      for (auto& l : r.links)
-        if (l.name == ref) link = &l;
-      if (!link) continue;
+      const auto found = link_index.find(ref);
+      if (found == link_index.end()) continue;
+      UrdfLink* link = &r.links[found->second];
       auto read = [&](const char* tag, std::optional<double>& into) {
         if (const TiXmlElement* e = g->FirstChildElement(tag)) {
           const auto v = number(e->GetText());

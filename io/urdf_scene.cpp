@@ -8,6 +8,7 @@
 #include "core/number_text.hpp"
 #include "core/stability.hpp"
 #include "friction/friction_law.hpp"
+#include "io/run_settings_check.hpp"
 #include "io/scene_parameters.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
@@ -94,16 +95,40 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
                        "'");
     return *v;
   };
+  // A setting that must be > 0 (or >= 0 when `zero`), checked where it is read.
+  auto checked = [&](const std::string& name, const char* field, bool zero = false) {
+    const double v = number(name);
+    requireRunSetting(zero ? v >= 0.0 : v > 0.0, path, name, field, zero ? ">= 0" : "> 0", v);
+    return v;
+  };
+  const double duration = checked("duration", "duration");
+  const double floor = checked("min_dt", "min_dt");
+  const double depth = checked("penetration", "penetration");
+  const double mu = checked("mu", "mu", true);
+  const bool auto_k = settings["stiffness"] == "auto", auto_c = settings["damping"] == "auto";
+  if (!auto_k) checked("stiffness", "stiffness");
+  if (!auto_c) checked("damping", "damping", true);
+  const bool auto_dt = settings["dt"] == "auto";
+  if (!auto_dt) checked("dt", "time_step");
+  const bool auto_integrator = settings["integrator"] == "auto";
+  IntegratorType integrator = IntegratorType::kRk4;
+  if (!auto_integrator) {
+    try {
+      integrator = integratorFromName(settings["integrator"]);
+    } catch (const std::exception& e) {
+      throw SceneError(path + ": run setting 'integrator': " + e.what());
+    }
+  }
 
   const UrdfRobot robot = readUrdf(path, PackagePaths::withEnvironment(package_paths), read);
   std::vector<std::string> notes;
   for (const UrdfIssue& i : robot.issues)
     if (i.severity != UrdfIssue::Severity::kError) notes.push_back(i.where + ": " + i.message);
-  const bool auto_integrator = settings["integrator"] == "auto";
   ModelBuilder builder;
-  builder.options().duration = number("duration");
-  builder.options().integrator =
-      auto_integrator ? IntegratorType::kRk4 : integratorFromName(settings["integrator"]);
+  builder.options().duration = duration;
+  // Until the step is chosen: one no longer than the run, so the probe models build.
+  builder.options().time_step = std::min(1e-3, duration);
+  builder.options().integrator = integrator;
   builder.options().collision.broadphase = true;
 
   UrdfPlacement placement;
@@ -117,12 +142,24 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
 
   // Place it once to find its lowest point, then again lifted to `drop` above the ground.
   const double drop = number("drop");
+  // What the model refuses in the robot (an error finding of the reader, a mesh that does
+  // not load, a joint the builder refuses) is the URDF's: a UrdfError naming the file.
+  auto add = [&](ModelBuilder& into) {
+    try {
+      return addUrdfRobot(into, robot, placement);
+    } catch (const ModelError& e) {
+      throw UrdfError(path + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      throw UrdfError(what.rfind(path + ": ", 0) == 0 ? what : path + ": " + what);
+    }
+  };
   {
     ModelBuilder probe;
-    const double lowest = addUrdfRobot(probe, robot, placement).lowest_point;
+    const double lowest = add(probe).lowest_point;
     placement.base.translation().z() = drop - lowest;
   }
-  const UrdfModelResult added = addUrdfRobot(builder, robot, placement);
+  const UrdfModelResult added = add(builder);
   for (const std::string& n : added.notes) notes.push_back(n);
   const int ground = builder.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace());
   builder.setGeometrySurface(ground, "ground");
@@ -133,35 +170,29 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
   // Damping: critical for the link's own body on 4 points (so light links are not
   // overdamped, which would bound the explicit step far below what the stiffness needs).
   const double g = builder.options().gravity.norm();
-  const double depth = number("penetration");
-  if (!(depth > 0.0)) throw SceneError(path + ": --set penetration: expected a depth > 0 [m]");
   double moving = 0.0;
   for (const Body& b : builder.bodies()) moving += b.kind == BodyKind::kDynamic ? b.mass : 0.0;
   const int points = supportPoints(*builder.build(), added.geometries, drop + depth);
   const double weight = std::max(moving, 1e-6) * g;
-  const bool auto_k = settings["stiffness"] == "auto", auto_c = settings["damping"] == "auto";
   const double k = auto_k ? weight / (std::max(points, 1) * depth) : number("stiffness");
   for (const auto& surface : added.surfaces) {
     const double m = surface.body_mass > 0.0 ? surface.body_mass : moving;
     const contact::Material base_material =
-        groundMaterial(number("mu"), k, auto_c ? 2.0 * std::sqrt(k * m / 4.0) : number("damping"));
+        groundMaterial(mu, k, auto_c ? 2.0 * std::sqrt(k * m / 4.0) : number("damping"));
     builder.addSurfacePairMaterial(
         surface.name, "ground",
         builder.addMaterial(withGazeboTags(base_material, surface.contact, m, auto_c)));
   }
   builder.setDefaultMaterial(builder.addMaterial(groundMaterial(
-      number("mu"), k,
-      auto_c ? 2.0 * std::sqrt(k * std::max(moving, 1e-6) / 8.0) : number("damping"))));
+      mu, k, auto_c ? 2.0 * std::sqrt(k * std::max(moving, 1e-6) / 8.0) : number("damping"))));
 
   // dt auto: half the a-priori stable step of the stiffest element, at most 1 ms. Below the
   // floor min_dt the explicit run would take too long: said before the run, and an automatic
   // integrator becomes bdf (implicit: no step limit; dt is then its output interval).
-  if (settings["dt"] == "auto") {
-    builder.options().time_step = 1e-3;
+  if (auto_dt) {
     const StabilityLimit limit = estimateStableStep(*builder.build()).limit;
     const double needed = 0.5 * limit.max_step;
-    const double floor = number("min_dt");
-    builder.options().time_step = std::min(1e-3, needed);
+    builder.options().time_step = std::min({1e-3, needed, duration});
     if (needed < floor && builder.options().integrator != IntegratorType::kBdf) {
       std::ostringstream why;
       why << "the stable step of " << integratorName(builder.options().integrator) << " is "
@@ -170,11 +201,11 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
           << std::llround(builder.options().duration / needed) << " steps for the run); ";
       if (auto_integrator) {
         builder.options().integrator = IntegratorType::kBdf;
-        builder.options().time_step = 1e-3;
+        builder.options().time_step = std::min(1e-3, duration);
         why << "running with bdf instead (implicit, no step limit; --set integrator=rk4 --set "
                "dt=... forces the explicit run)";
       } else {
-        builder.options().time_step = floor;
+        builder.options().time_step = std::min(floor, duration);
         why << "running at min_dt, which may diverge (use --set integrator=bdf, or stiffen the "
                "link's mass or soften that element)";
       }
@@ -183,10 +214,15 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
   } else {
     builder.options().time_step = number("dt");
   }
+  checkRunOptions(builder.options(), path, RunSettingKeys::urdf());
 
   Scene scene;
   scene.path = path;
-  scene.model = builder.build();
+  try {
+    scene.model = builder.build();
+  } catch (const ModelError& e) {  // the checks above leave none foreseen
+    throw SceneError(path + ": " + e.what());
+  }
   scene.output.interval = std::max(1e-3, builder.options().time_step);
   for (const auto& b : scene.model->bodies) {
     if (b.kind == BodyKind::kDynamic) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "support/cli_support.hpp"
+#include "support/urdf_corpus.hpp"
 
 namespace {
 
@@ -241,8 +242,7 @@ TEST_F(TriboCli, UsageErrors) {
 }
 
 TEST_F(TriboCli, InfoPrintsTheUrdfTreeAndRefusesAnInvalidOne) {
-  const fs::path corpus = fs::path(TRIBO_SOURCE_DIR) / ".." / "shared" / "urdf";
-  if (!fs::exists(corpus / "bullet3" / "r2d2.urdf")) GTEST_SKIP() << "no URDF corpus at " << corpus;
+  TRIBO_REQUIRE_URDF_CORPUS(corpus);
   const Result ok = runTribo("info " + (corpus / "bullet3" / "r2d2.urdf").string());
   EXPECT_EQ(ok.status, 0) << ok.output;
   EXPECT_NE(ok.output.find("links 16, joints 15 (5 continuous, 7 fixed, 1 prismatic, 2 revolute), "

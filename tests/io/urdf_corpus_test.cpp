@@ -2,6 +2,8 @@
 // through urdfdom: link and joint counts, joints by type, total mass, collision elements and
 // their mesh files against the corpus' expected.json (written independently, from the XML
 // with Python's standard library); the one invalid file is refused with urdfdom's reason.
+#include "support/urdf_corpus.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,10 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path corpus() {
-  if (const char* env = std::getenv("TRIBO_URDF_CORPUS")) return env;
-  return fs::path(TRIBO_SOURCE_DIR) / ".." / "shared" / "urdf";
-}
+fs::path corpus() { return test::urdfCorpusFolder().value_or(""); }
 
 nlohmann::json expected() {
   std::ifstream in(corpus() / "expected.json");
@@ -31,10 +30,8 @@ PackagePaths corpusPackages() { return PackagePaths({corpus().string()}); }
 
 class UrdfCorpus : public ::testing::TestWithParam<std::string> {
  protected:
-  void SetUp() override {
-    if (!fs::exists(corpus() / "expected.json"))
-      GTEST_SKIP() << "URDF corpus not found at " << corpus() << " (set TRIBO_URDF_CORPUS)";
-  }
+  // Fails when the corpus is missing (skips with TRIBO_URDF_CORPUS=none).
+  void SetUp() override { TRIBO_REQUIRE_URDF_CORPUS(folder); }
 };
 
 TEST_P(UrdfCorpus, MatchesExpectedFacts) {
@@ -96,7 +93,7 @@ TEST_P(UrdfCorpus, MatchesExpectedFacts) {
 
 std::vector<std::string> corpusFiles() {
   std::vector<std::string> files;
-  if (!fs::exists(corpus() / "expected.json")) return {"(corpus missing)"};
+  if (corpus().empty() || !fs::exists(corpus() / "expected.json")) return {"(corpus missing)"};
   const nlohmann::json all = expected();
   for (const auto& [file, facts] : all["urdfs"].items()) files.push_back(file);
   return files;

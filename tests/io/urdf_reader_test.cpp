@@ -200,7 +200,7 @@ TEST_F(UrdfReader, LenientJointsWithoutLimitsAndAnUndeclaredWorld) {
   }
 }
 
-TEST_F(UrdfReader, ZeroRadiusSphereIsAContactPointAndBadDimensionsAreErrors) {
+TEST_F(UrdfReader, ZeroRadiusSphereIsAContactPointAndANegativeOneIsRefused) {
   std::string text(kPendulum);
   text.replace(text.find("<box size=\"0.05 0.05 1.0\"/>"), 27, "<sphere radius=\"0\"/>");
   const UrdfRobot point = readUrdf(write("point.urdf", text));
@@ -211,9 +211,13 @@ TEST_F(UrdfReader, ZeroRadiusSphereIsAContactPointAndBadDimensionsAreErrors) {
              i.message.find("collision sphere of radius 0 at (0, 0, -0.5): a contact point") !=
                  std::string::npos;
   EXPECT_TRUE(noted);
+  // A negative radius is refused at once (tests/io/urdf_values_test.cpp has every attribute).
   text.replace(text.find("radius=\"0\""), 10, "radius=\"-0.1\"");
-  const UrdfRobot bad = readUrdf(write("bad.urdf", text));
-  EXPECT_TRUE(bad.hasErrors());
+  const std::string bad = errorOf(write("bad.urdf", text));
+  EXPECT_NE(bad.find("bad.urdf:10: link 'arm'/collision/geometry/sphere: attribute 'radius': "
+                     "expected finite numbers >= 0, found '-0.1'"),
+            std::string::npos)
+      << bad;
 }
 
 TEST_F(UrdfReader, UnknownJointTypeNamesJointLineAndTheKnownTypes) {
@@ -260,13 +264,14 @@ TEST_F(UrdfReader, LinkWithTwoParentJointsIsRefused) {
       << e;
 }
 
-TEST_F(UrdfReader, NegativeMassAndDubiousInertiasAreFound) {
+TEST_F(UrdfReader, NegativeMassIsRefusedAndDubiousInertiasAreFound) {
   std::string text(kPendulum);
   text.replace(text.find("<mass value=\"2.0\"/>"), 19, "<mass value=\"-2.0\"/>");
-  const UrdfRobot neg = readUrdf(write("neg.urdf", text));
-  ASSERT_TRUE(neg.hasErrors());
-  EXPECT_EQ(neg.issues[0].where, "link 'arm'");
-  EXPECT_NE(neg.issues[0].message.find("mass must be >= 0 (got -2)"), std::string::npos);
+  const std::string neg = errorOf(write("neg.urdf", text));
+  EXPECT_NE(neg.find("neg.urdf:7: link 'arm'/inertial/mass: attribute 'value': expected finite "
+                     "numbers >= 0, found '-2.0'"),
+            std::string::npos)
+      << neg;
 
   std::string tri(kPendulum);
   tri.replace(tri.find("izz=\"0.01\""), 10, "izz=\"0.5\" ");

@@ -15,16 +15,14 @@
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
 #include "support/pendulum_scene.hpp"
+#include "support/urdf_corpus.hpp"
 
 namespace tribo {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path corpus() {
-  if (const char* env = std::getenv("TRIBO_URDF_CORPUS")) return env;
-  return fs::path(TRIBO_SOURCE_DIR) / ".." / "shared" / "urdf";
-}
+fs::path corpus() { return test::urdfCorpusFolder().value_or(""); }
 
 // Kinetic plus gravitational energy [J].
 double mechanicalEnergy(const Model& m, const State& s) {
@@ -44,7 +42,7 @@ double mechanicalEnergy(const Model& m, const State& s) {
 class UrdfOnGround : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(UrdfOnGround, OneSecondWithoutNanOrEnergyGain) {
-  if (!fs::exists(corpus() / "expected.json")) GTEST_SKIP() << "no URDF corpus at " << corpus();
+  TRIBO_REQUIRE_URDF_CORPUS(folder);
   const std::string file = GetParam();
   std::ifstream in(corpus() / "expected.json");
   const nlohmann::json facts = nlohmann::json::parse(in)["urdfs"][file];
