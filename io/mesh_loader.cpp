@@ -97,7 +97,17 @@ std::shared_ptr<const MeshData> finish(MeshData&& read, const std::string& name,
   mesh->source = name;
   if (mesh->triangles.empty())
     throw MeshError("mesh file '" + name + "': expected at least one triangle, found none");
-  for (auto& v : mesh->vertices) v = v.cwiseProduct(scale);
+  for (std::size_t i = 0; i < mesh->vertices.size(); ++i) {
+    auto& v = mesh->vertices[i];
+    v = v.cwiseProduct(scale);
+    if (v.allFinite() && v.cwiseAbs().maxCoeff() <= contact::kMaxLength) continue;
+    const std::string what = "mesh file '" + name + "': vertex " + std::to_string(i) +
+                             " (after scale " + contact::lengthText(scale.x()) + ", " +
+                             contact::lengthText(scale.y()) + ", " +
+                             contact::lengthText(scale.z()) + ")";
+    if (!v.allFinite()) throw MeshError(what + ": expected finite coordinates");
+    throw MeshError(contact::outsideLengthLimit(what, v));
+  }
   weld(*mesh);
   return mesh;
 }

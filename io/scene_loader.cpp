@@ -592,6 +592,7 @@ class Loader {
     if (auto x = m.get("collision_mask")) g.mask = bitSet(*x);
     g.pose.translation() = m.vec3("position", Vec3::Zero());
     g.pose.linear() = orientation(m).toRotationMatrix();
+    guarded(v, [&] { ModelBuilder::checkGeometry(g.name, g.shape, g.pose); });  // before inertia
     return g;
   }
 
