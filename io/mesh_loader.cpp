@@ -13,6 +13,7 @@
 #include <map>
 
 #include "io/collada_check.hpp"
+#include "io/file_read.hpp"
 #include "io/obj_reader.hpp"
 
 namespace tribo::io {
@@ -132,12 +133,16 @@ MeshData readWithAssimp(std::span<const unsigned char> bytes, const std::string&
 
 std::shared_ptr<const MeshData> loadMesh(const std::string& path, const Eigen::Vector3d& scale) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshError("mesh file '" + path + "': cannot open (expected an STL, OBJ or DAE file)");
-  const std::string hint = format(std::filesystem::path(path).extension().string(), path);
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (!in) throw MeshError("mesh file '" + path + "': cannot read it");
+  if (!std::filesystem::exists(path, ec))
+    throw MeshError("mesh file '" + path + "': cannot open (no such file)");
+  std::string bytes, hint;
+  try {
+    checkReadableFile(path, "mesh file", kMaxMeshBytes);  // what it is, before its name
+    hint = format(std::filesystem::path(path).extension().string(), path);
+    bytes = readFileBounded(path, "mesh file", kMaxMeshBytes);
+  } catch (const FileReadError& e) {
+    throw MeshError(e.what());
+  }
   return loadMeshFromMemory(
       std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), hint, path,
       scale);
