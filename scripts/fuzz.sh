@@ -6,19 +6,20 @@
 #   scripts/fuzz.sh --ci                the CI step: replay, then a fixed number of inputs per
 #                                       harness (FUZZ_RUNS below), seed 1
 #   scripts/fuzz.sh --list              the harness names
-# HARNESS: scene_yaml_fuzzer urdf_fuzzer mesh_fuzzer cli_values_fuzzer (docs/fuzzing.md).
+# HARNESS: scene_yaml_fuzzer urdf_fuzzer mesh_fuzzer hull_fuzzer cli_values_fuzzer
+# (docs/fuzzing.md).
 # A finding is written to build-fuzz/artifacts/HARNESS/ (crash-*, leak-*, timeout-*, oom-*);
 # fix it, then keep the input as fuzz/regressions/HARNESS/NAME so --replay and CI run it.
 # Extra libFuzzer flags: FUZZ_FLAGS="-jobs=2 -workers=2" scripts/fuzz.sh HARNESS 3600.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-HARNESSES=(scene_yaml_fuzzer urdf_fuzzer mesh_fuzzer cli_values_fuzzer)
+HARNESSES=(scene_yaml_fuzzer urdf_fuzzer mesh_fuzzer hull_fuzzer cli_values_fuzzer)
 # Inputs per harness in CI, from the rates measured on the shared 2-core machine at load 5
 # (scene 830/s, urdf 15000/s, mesh 4000/s since Tribo reads OBJ itself, cli 25000/s;
 # docs/fuzzing.md): about 2.5 minutes together, three times that at load 15.
 declare -A FUZZ_RUNS=([scene_yaml_fuzzer]=40000 [urdf_fuzzer]=300000 [mesh_fuzzer]=50000
-                      [cli_values_fuzzer]=500000)
+                      [hull_fuzzer]=20000 [cli_values_fuzzer]=500000)
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
@@ -97,7 +98,7 @@ case "${1:-}" in
       echo "fuzz: $h: $(grep -o 'Done [0-9]* runs in [0-9]* second(s)' "$BUILD_DIR/$h.ci.log")" \
            "(wall $(($(date +%s) - start)) s)"
     done ;;
-  ""|-h|--help) sed -n '2,12p' "$0" ;;
+  ""|-h|--help) sed -n '2,13p' "$0" ;;
   *)
     h=$1
     seconds=${2:-600}

@@ -54,6 +54,7 @@ void replay(const std::string& harness, void (*feed)(const std::uint8_t*, std::s
 TEST(FuzzRegressions, SceneYaml) { replay("scene_yaml_fuzzer", sceneYaml); }
 TEST(FuzzRegressions, Urdf) { replay("urdf_fuzzer", urdf); }
 TEST(FuzzRegressions, Mesh) { replay("mesh_fuzzer", mesh); }
+TEST(FuzzRegressions, Hull) { replay("hull_fuzzer", hull); }
 TEST(FuzzRegressions, CliValues) { replay("cli_values_fuzzer", cliValues); }
 
 }  // namespace
