@@ -19,7 +19,7 @@ HARNESSES=(scene_yaml_fuzzer urdf_fuzzer mesh_fuzzer hull_fuzzer cli_values_fuzz
 # (scene 830/s, urdf 15000/s, mesh 4000/s since Tribo reads OBJ itself, cli 25000/s;
 # docs/fuzzing.md): about 2.5 minutes together, three times that at load 15.
 declare -A FUZZ_RUNS=([scene_yaml_fuzzer]=40000 [urdf_fuzzer]=300000 [mesh_fuzzer]=50000
-                      [hull_fuzzer]=20000 [cli_values_fuzzer]=500000)
+                      [hull_fuzzer]=30000 [cli_values_fuzzer]=500000)
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
