@@ -1,6 +1,7 @@
 #include "contact/shape.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -21,6 +22,24 @@ Eigen::Vector3d meshHalfExtents(const MeshData& mesh) {
 }
 
 }  // namespace
+
+std::string lengthText(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  return text;
+}
+
+std::string overLengthLimit(const std::string& what, double found) {
+  if (std::isnan(found) || std::abs(found) <= kMaxLength) return {};
+  return what + ": expected at most " + lengthText(kMaxLength) + " m, found " + lengthText(found) +
+         " m";
+}
+
+std::string outsideLengthLimit(const std::string& what, const Eigen::Vector3d& p) {
+  if (!(p.cwiseAbs().maxCoeff() > kMaxLength)) return {};
+  return what + ": expected coordinates within +-" + lengthText(kMaxLength) + " m, found (" +
+         lengthText(p.x()) + ", " + lengthText(p.y()) + ", " + lengthText(p.z()) + ") m";
+}
 
 double Shape::size() const {
   switch (type) {
@@ -80,24 +99,39 @@ void Shape::validate() const {
     case ShapeType::kBox:
       if (!half_extents.allFinite() || !(half_extents.minCoeff() > 0.0))
         throw std::invalid_argument("box half extents must be > 0");
+      if (auto e = overLengthLimit("box size (an edge length)", 2.0 * half_extents.maxCoeff());
+          !e.empty())
+        throw std::invalid_argument(e);
       return;
     case ShapeType::kSphere:
       if (!(std::isfinite(radius) && radius >= 0.0))
         throw std::invalid_argument("sphere radius must be >= 0 (0: a contact point)");
+      if (auto e = overLengthLimit("sphere radius", radius); !e.empty())
+        throw std::invalid_argument(e);
       return;
     case ShapeType::kCylinder:
     case ShapeType::kCapsule:
     case ShapeType::kCone:
       if (!positive(radius)) throw std::invalid_argument(name + " radius must be > 0");
       if (!positive(half_length)) throw std::invalid_argument(name + " length must be > 0");
+      if (auto e = overLengthLimit(name + " radius", radius); !e.empty())
+        throw std::invalid_argument(e);
+      if (auto e = overLengthLimit(name + " length", 2.0 * half_length); !e.empty())
+        throw std::invalid_argument(e);
       return;
     case ShapeType::kConvexMesh:
     case ShapeType::kTriangleMesh: {
       if (!mesh || mesh->vertices.size() < 3 || mesh->triangles.empty())
         throw std::invalid_argument(name + " needs at least one triangle");
       const int n = static_cast<int>(mesh->vertices.size());
-      for (const auto& v : mesh->vertices)
+      for (std::size_t i = 0; i < mesh->vertices.size(); ++i) {
+        const Eigen::Vector3d& v = mesh->vertices[i];
         if (!v.allFinite()) throw std::invalid_argument(name + ": a vertex is not finite");
+        const std::string from = mesh->source.empty() ? "" : " of '" + mesh->source + "'";
+        if (auto e = outsideLengthLimit(name + from + " vertex " + std::to_string(i), v);
+            !e.empty())
+          throw std::invalid_argument(e);
+      }
       for (const auto& t : mesh->triangles)
         for (int i : t)
           if (i < 0 || i >= n) throw std::invalid_argument(name + ": triangle index out of range");

@@ -23,6 +23,22 @@
 
 namespace tribo::contact {
 
+// The largest length a scene may hold [m]: every dimension of a shape (a box's edge, a
+// radius, a cylinder's or capsule's length), every mesh vertex coordinate (after scale) and
+// every coordinate of a position (io/ and the model builder check these at load). 1e6 m
+// (1000 km) is far beyond any contact problem, keeps a millimetre contact depth 1e7 times
+// above the rounding of a coordinate (1.2e-10 m at 1e6 m), and keeps FCL's broadphase
+// finite: its AABB tree multiplies extents (volumes, sizes), which overflow near 1e102 m
+// for a cube and crash the tree well before that.
+inline constexpr double kMaxLength = 1e6;
+
+// "WHAT: expected at most 1e6 m, found F m" when |found| > kMaxLength, else empty; and
+// "WHAT: expected coordinates within +-1e6 m, found (x, y, z) m" when a coordinate of p is.
+// Lengths printed with 10 significant digits.
+std::string overLengthLimit(const std::string& what, double found);
+std::string outsideLengthLimit(const std::string& what, const Eigen::Vector3d& p);
+std::string lengthText(double v);
+
 enum class ShapeType {
   kBox,
   kSphere,
@@ -89,7 +105,8 @@ struct Shape {
   // The shape's points farthest along -n would be the first to touch a plane with outward
   // normal n: its support distance h(d) = max over the shape of d . x (geometry frame).
   double support(const Eigen::Vector3d& d) const;
-  // Throws std::invalid_argument naming what is wrong (non-positive dimensions, empty mesh).
+  // Throws std::invalid_argument naming what is wrong (non-positive dimensions, a dimension
+  // or a mesh vertex coordinate over kMaxLength, empty mesh), what was expected and found.
   void validate() const;
 
  private:

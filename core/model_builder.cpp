@@ -55,6 +55,8 @@ BodyIndex ModelBuilder::addBody(const Body& body) {
       !finite(body.surface_velocity) || !body.orientation.coeffs().allFinite() ||
       body.orientation.norm() < 1e-12)
     throw ModelError(who + ": initial pose and velocities must be finite");
+  if (auto e = contact::outsideLengthLimit("position", body.position); !e.empty())
+    throw ModelError(who + ": " + e);
   Body b = body;
   b.orientation.normalize();
   model_.bodies.push_back(b);
@@ -74,14 +76,7 @@ int ModelBuilder::addGeometry(const std::string& name, BodyIndex body, const con
   const std::string who = "geometry '" + name + "'";
   checkedBody(body, who);
   if (findGeometry(name)) throw ModelError(who + ": a geometry of that name already exists");
-  if (shape.type == contact::ShapeType::kBox &&
-      (!shape.half_extents.allFinite() || shape.half_extents.minCoeff() <= 0.0))
-    throw ModelError(who + ": box half extents must be > 0");
-  try {
-    shape.validate();
-  } catch (const std::invalid_argument& e) {
-    throw ModelError(who + ": " + e.what());
-  }
+  checkGeometry(name, shape, local_pose);
   Geometry geometry;
   geometry.name = name;
   geometry.body = body;
@@ -90,6 +85,23 @@ int ModelBuilder::addGeometry(const std::string& name, BodyIndex body, const con
   model_.geometries.push_back(geometry);
   geometry_index_[name] = static_cast<int>(model_.geometries.size()) - 1;
   return static_cast<int>(model_.geometries.size()) - 1;
+}
+
+void ModelBuilder::checkGeometry(const std::string& name, const contact::Shape& shape,
+                                 const Eigen::Isometry3d& local_pose) {
+  const std::string who = "geometry '" + name + "'";
+  if (shape.type == contact::ShapeType::kBox &&
+      (!shape.half_extents.allFinite() || shape.half_extents.minCoeff() <= 0.0))
+    throw ModelError(who + ": box half extents must be > 0");
+  try {
+    shape.validate();
+  } catch (const std::invalid_argument& e) {
+    throw ModelError(who + ": " + e.what());
+  }
+  if (!local_pose.matrix().allFinite())
+    throw ModelError(who + ": position and orientation must be finite");
+  if (auto e = contact::outsideLengthLimit("position", local_pose.translation()); !e.empty())
+    throw ModelError(who + ": " + e);
 }
 
 int ModelBuilder::addMaterial(const contact::Material& material) {

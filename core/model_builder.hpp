@@ -25,10 +25,18 @@ class ModelError : public std::runtime_error {
 
 class ModelBuilder {
  public:
+  // Mass > 0 and a valid inertia for dynamic bodies, a finite pose and velocities, each
+  // coordinate of the position within +-contact::kMaxLength.
   BodyIndex addBody(const Body& body);
   // Geometry on a body (or the world) at a pose in that body's frame. Returns its index.
   int addGeometry(const std::string& name, BodyIndex body, const contact::Shape& shape,
                   const Eigen::Isometry3d& local_pose = Eigen::Isometry3d::Identity());
+  // What addGeometry checks of one geometry, for a loader that wants the error before it
+  // uses the shape (its inertia): valid dimensions (contact::Shape::validate), each at most
+  // contact::kMaxLength, as every mesh vertex coordinate and the position's coordinates.
+  // Throws ModelError "geometry 'NAME': what: expected ..., found ...".
+  static void checkGeometry(const std::string& name, const contact::Shape& shape,
+                            const Eigen::Isometry3d& local_pose);
   int addMaterial(const contact::Material& material);
   void addContactPair(int geometry_a, int geometry_b, int material);
   // Automatic contacts (used when no contact pair is added): a geometry's surface material

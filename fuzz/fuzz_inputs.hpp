@@ -6,16 +6,21 @@
 // Input formats are described in docs/fuzzing.md.
 #pragma once
 
+#include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "contact/collision_detector.hpp"
+#include "contact/mesh_shape.hpp"
 #include "fuzz/urdf_tree_input.hpp"
 #include "io/mesh_loader.hpp"
 #include "io/scene_loader.hpp"
@@ -62,16 +67,97 @@ inline void urdf(const std::uint8_t* data, std::size_t size) {
   }
 }
 
+// A mesh that loaded and passed the convexity check (contact::makeConvex) meets a box: one
+// collision query through contact/ (FCL's narrowphase, libccd, the face manifold), which must
+// return. Small meshes only (the query is the point, not the hull's size).
+inline void collideWithBox(const std::shared_ptr<const contact::MeshData>& mesh) {
+  if (mesh->vertices.size() > 256) return;
+  std::shared_ptr<const contact::MeshData> hull;
+  try {
+    hull = contact::makeConvex(*mesh);
+  } catch (const contact::MeshError&) {
+    return;
+  }
+  using contact::Shape;
+  contact::CollisionDetector detector({Shape::convexMesh(hull), Shape::box({1.0, 1.0, 0.5})},
+                                      {{0, 1}});
+  // The box's top face through the hull's centre of vertices, so the two overlap.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& v : hull->vertices) centre += v;
+  centre /= static_cast<double>(hull->vertices.size());
+  Eigen::Isometry3d box = Eigen::Isometry3d::Identity();
+  box.translation() = centre - Eigen::Vector3d(0, 0, 0.5);
+  const std::array poses{Eigen::Isometry3d(Eigen::Isometry3d::Identity()), box};
+  std::vector<contact::ContactPoint> points;
+  detector.detect(poses, points);
+}
+
 // First byte: the format hint (0 stl, 1 obj, 2 dae; modulo 3), then the file's bytes.
-// Bad input: contact::MeshError.
+// Bad input: contact::MeshError. A mesh read is then tried as a convex hull against a box.
 inline void mesh(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return;
   static const char* const kHints[] = {"stl", "obj", "dae"};
   const std::string hint = kHints[data[0] % 3];
+  std::shared_ptr<const contact::MeshData> read;
   try {
-    (void)io::loadMeshFromMemory(std::span(data + 1, size - 1), hint, "fuzz." + hint);
+    read = io::loadMeshFromMemory(std::span(data + 1, size - 1), hint, "fuzz." + hint);
   } catch (const contact::MeshError&) {
+    return;
   }
+  collideWithBox(read);
+}
+
+// Near-degenerate and far-flung convex hulls (docs/fuzzing.md): first byte: the shape (modulo
+// 2: 0 a cube, 1 a tetrahedron); then 4 bytes per vertex: a magnitude 10^(b0 % 43 - 12) (1e-12
+// to 1e30 m) and a displacement (b1, b2, b3) / 127 times it, added to the unit shape's vertex
+// (missing bytes: no displacement). Written as a binary STL, read with io::loadMeshFromMemory,
+// then as mesh() does. Bad input: contact::MeshError.
+inline void hull(const std::uint8_t* data, std::size_t size) {
+  if (size < 1) return;
+  static const std::vector<std::array<int, 3>> kCube = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6},
+                                                        {0, 1, 4}, {1, 5, 4}, {2, 6, 3}, {3, 6, 7},
+                                                        {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  static const std::vector<std::array<int, 3>> kTetra = {
+      {0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  std::vector<Eigen::Vector3d> v;
+  const bool cube = data[0] % 2 == 0;
+  if (cube)
+    for (int k = 0; k < 8; ++k)
+      v.emplace_back((k & 1) ? 0.5 : -0.5, (k & 2) ? 0.5 : -0.5, (k & 4) ? 0.5 : -0.5);
+  else
+    v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (std::size_t i = 0; i < v.size() && 1 + 4 * i + 3 < size; ++i) {
+    const std::uint8_t* b = data + 1 + 4 * i;
+    const double magnitude = std::pow(10.0, static_cast<double>(b[0] % 43) - 12.0);
+    v[i] += magnitude / 127.0 *
+            Eigen::Vector3d(static_cast<std::int8_t>(b[1]), static_cast<std::int8_t>(b[2]),
+                            static_cast<std::int8_t>(b[3]));
+  }
+  const auto& triangles = cube ? kCube : kTetra;
+  std::string stl(80, ' ');
+  auto put = [&](const void* p) { stl.append(static_cast<const char*>(p), 4); };
+  const auto count = static_cast<std::uint32_t>(triangles.size());
+  const std::uint8_t le[4] = {static_cast<std::uint8_t>(count), 0, 0, 0};
+  put(le);
+  for (const auto& t : triangles) {
+    const float zero = 0.0f;
+    for (int k = 0; k < 3; ++k) put(&zero);
+    for (int i : t)
+      for (int k = 0; k < 3; ++k) {
+        const float f = static_cast<float>(v[static_cast<std::size_t>(i)](k));
+        put(&f);
+      }
+    stl.append(2, '\0');
+  }
+  std::shared_ptr<const contact::MeshData> read;
+  try {
+    read = io::loadMeshFromMemory(
+        std::span(reinterpret_cast<const unsigned char*>(stl.data()), stl.size()), "stl",
+        "fuzz.stl");
+  } catch (const contact::MeshError&) {
+    return;
+  }
+  collideWithBox(read);
 }
 
 inline void spanGrid(study::SweepAxis axis) {

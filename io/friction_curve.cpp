@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/file_read.hpp"
 #include "io/scene_parameters.hpp"
 
 namespace tribo::io {
@@ -51,13 +52,13 @@ FrictionCurve parseFrictionCurve(const std::string& text, const std::string& nam
 }
 
 FrictionCurve readFrictionCurve(const std::string& path) {
-  std::error_code ec;
-  std::ifstream in(path);
-  if (!std::filesystem::is_regular_file(path, ec) || !in)
-    throw SceneError("cannot open friction curve file '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseFrictionCurve(text.str(), path);
+  std::string text;
+  try {
+    text = readFileBounded(path, "friction curve file", kMaxTableBytes);
+  } catch (const FileReadError& e) {
+    throw SceneError(e.what());
+  }
+  return parseFrictionCurve(text, path);
 }
 
 }  // namespace tribo::io

@@ -13,6 +13,7 @@
 #include <map>
 
 #include "io/collada_check.hpp"
+#include "io/file_read.hpp"
 #include "io/obj_reader.hpp"
 
 namespace tribo::io {
@@ -97,7 +98,17 @@ std::shared_ptr<const MeshData> finish(MeshData&& read, const std::string& name,
   mesh->source = name;
   if (mesh->triangles.empty())
     throw MeshError("mesh file '" + name + "': expected at least one triangle, found none");
-  for (auto& v : mesh->vertices) v = v.cwiseProduct(scale);
+  for (std::size_t i = 0; i < mesh->vertices.size(); ++i) {
+    auto& v = mesh->vertices[i];
+    v = v.cwiseProduct(scale);
+    if (v.allFinite() && v.cwiseAbs().maxCoeff() <= contact::kMaxLength) continue;
+    const std::string what = "mesh file '" + name + "': vertex " + std::to_string(i) +
+                             " (after scale " + contact::lengthText(scale.x()) + ", " +
+                             contact::lengthText(scale.y()) + ", " +
+                             contact::lengthText(scale.z()) + ")";
+    if (!v.allFinite()) throw MeshError(what + ": expected finite coordinates");
+    throw MeshError(contact::outsideLengthLimit(what, v));
+  }
   weld(*mesh);
   return mesh;
 }
@@ -122,12 +133,16 @@ MeshData readWithAssimp(std::span<const unsigned char> bytes, const std::string&
 
 std::shared_ptr<const MeshData> loadMesh(const std::string& path, const Eigen::Vector3d& scale) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshError("mesh file '" + path + "': cannot open (expected an STL, OBJ or DAE file)");
-  const std::string hint = format(std::filesystem::path(path).extension().string(), path);
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (!in) throw MeshError("mesh file '" + path + "': cannot read it");
+  if (!std::filesystem::exists(path, ec))
+    throw MeshError("mesh file '" + path + "': cannot open (no such file)");
+  std::string bytes, hint;
+  try {
+    checkReadableFile(path, "mesh file", kMaxMeshBytes);  // what it is, before its name
+    hint = format(std::filesystem::path(path).extension().string(), path);
+    bytes = readFileBounded(path, "mesh file", kMaxMeshBytes);
+  } catch (const FileReadError& e) {
+    throw MeshError(e.what());
+  }
   return loadMeshFromMemory(
       std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), hint, path,
       scale);

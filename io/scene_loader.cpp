@@ -86,6 +86,7 @@
 #include "core/number_text.hpp"
 #include "friction/friction_law.hpp"
 #include "friction/tabulated_law.hpp"
+#include "io/file_read.hpp"
 #include "io/friction_curve.hpp"
 #include "io/mesh_loader.hpp"
 #include "io/run_settings_check.hpp"
@@ -594,6 +595,7 @@ class Loader {
     if (auto x = m.get("collision_mask")) g.mask = bitSet(*x);
     g.pose.translation() = m.vec3("position", Vec3::Zero());
     g.pose.linear() = orientation(m).toRotationMatrix();
+    guarded(v, [&] { ModelBuilder::checkGeometry(g.name, g.shape, g.pose); });  // before inertia
     return g;
   }
 
@@ -1132,17 +1134,17 @@ Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_e
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
                 const std::vector<std::string>& package_paths, const RunSettings& settings,
                 const UserLaws& user_laws) {
-  std::error_code ec;
-  std::ifstream in(path);
-  if (!std::filesystem::is_regular_file(path, ec) || !in)
-    throw SceneError("cannot open scene file '" + path + "'");
   if (looksLikeUrdf(path))
     throw SceneError(path + ": a URDF robot (its first element is <robot>), not a scene file: " +
                      "load it with sceneFromUrdf (`tribo run FILE`) or name it in a scene's " +
                      "robots:");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return loadSceneFromString(text.str(), path, overrides, package_paths, settings, user_laws);
+  std::string text;
+  try {
+    text = readFileBounded(path, "scene file", kMaxSceneBytes);
+  } catch (const FileReadError& e) {
+    throw SceneError(e.what());
+  }
+  return loadSceneFromString(text, path, overrides, package_paths, settings, user_laws);
 }
 
 }  // namespace tribo::io

@@ -4,16 +4,43 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact/shape.hpp"
 #include "core/number_text.hpp"
 
 namespace tribo::io {
+
+namespace {
+
+// A collision's dimension or origin past contact::kMaxLength, said as the URDF names it.
+std::string overLimit(const UrdfCollision& c) {
+  using K = UrdfCollision::Kind;
+  std::string e;
+  if (c.kind == K::kBox)
+    e = contact::overLengthLimit("collision <box size> (an edge length)", c.size.maxCoeff());
+  if (c.kind != K::kBox && c.kind != K::kMesh && e.empty())
+    e = contact::overLengthLimit("collision radius", c.radius);
+  if ((c.kind == K::kCylinder || c.kind == K::kCapsule) && e.empty())
+    e = contact::overLengthLimit("collision length", c.length);
+  if (e.empty()) e = contact::outsideLengthLimit("collision <origin xyz>", c.origin.translation());
+  return e;
+}
+
+}  // namespace
 
 void checkUrdfRobot(UrdfRobot& robot) {
   auto issue = [&](UrdfIssue::Severity sev, const std::string& link, const std::string& what) {
     robot.issues.push_back({sev, "link '" + link + "'", what});
   };
   using S = UrdfIssue::Severity;
+  for (const UrdfJoint& j : robot.joints)
+    if (const std::string e = contact::outsideLengthLimit("<origin xyz>", j.origin.translation());
+        !e.empty())
+      robot.issues.push_back({S::kError, "joint '" + j.name + "'", e});
   for (const UrdfLink& l : robot.links) {
+    if (const std::string e =
+            contact::outsideLengthLimit("<inertial><origin xyz>", l.inertial_origin.translation());
+        !e.empty())
+      issue(S::kError, l.name, e);
     for (const UrdfCollision& c : l.collisions) {
       auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
       using K = UrdfCollision::Kind;
@@ -30,6 +57,8 @@ void checkUrdfRobot(UrdfRobot& robot) {
                   (c.kind == K::kSphere ? "; 0 makes a contact point)" : ")"));
       } else if ((c.kind == K::kCylinder || c.kind == K::kCapsule) && !positive(c.length)) {
         issue(S::kError, l.name, "collision length must be > 0 (got " + numberText(c.length) + ")");
+      } else if (const std::string e = overLimit(c); !e.empty()) {
+        issue(S::kError, l.name, e);
       }
     }
     if (!l.has_inertial) {

@@ -44,7 +44,11 @@ contact::Shape shapeOf(const UrdfCollision& c, const std::string& link) {
       if (c.mesh_path.empty())
         throw std::invalid_argument("link '" + link + "': collision mesh '" + c.mesh_uri +
                                     "' was not found");
-      return contact::Shape::triangleMesh(loadMesh(c.mesh_path, c.scale));
+      try {  // as the link's other geometry errors: naming the link
+        return contact::Shape::triangleMesh(loadMesh(c.mesh_path, c.scale));
+      } catch (const contact::MeshError& e) {
+        throw std::invalid_argument("link '" + link + "': collision " + e.what());
+      }
   }
   throw std::invalid_argument("link '" + link + "': unsupported collision geometry");
 }

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/file_read.hpp"
 #include "io/urdf_checks.hpp"
 #include "io/urdf_xml_checks.hpp"
 
@@ -132,11 +133,13 @@ class Reader {
       : path_(path), packages_(packages), options_(options) {}
 
   UrdfRobot read() {
-    std::ifstream in(path_);
-    if (!in) throw UrdfError("cannot open URDF file '" + path_ + "'");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return parse(buffer.str());
+    std::string text;
+    try {
+      text = readFileBounded(path_, "URDF file", kMaxUrdfBytes);
+    } catch (const FileReadError& e) {
+      throw UrdfError(e.what());
+    }
+    return parse(text);
   }
 
   UrdfRobot parse(const std::string& text) {
@@ -495,6 +498,8 @@ UrdfRobot readUrdf(const std::string& path, const PackagePaths& packages,
 }
 
 bool looksLikeUrdf(const std::string& path) {
+  std::error_code ec;  // only a regular file is opened: a FIFO would block, a device not end
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
   std::string head(4096, '\0');

@@ -6,7 +6,8 @@
 #   scripts/fuzz.sh --ci                the CI step: replay, then a fixed number of inputs per
 #                                       harness (FUZZ_RUNS below), seed 1
 #   scripts/fuzz.sh --list              the harness names
-# HARNESS: scene_yaml_fuzzer urdf_fuzzer urdf_tree_fuzzer mesh_fuzzer cli_values_fuzzer
+# HARNESS: scene_yaml_fuzzer urdf_fuzzer urdf_tree_fuzzer mesh_fuzzer hull_fuzzer
+#          cli_values_fuzzer
 # (docs/fuzzing.md).
 # A finding is written to build-fuzz/artifacts/HARNESS/ (crash-*, leak-*, timeout-*, oom-*);
 # fix it, then keep the input as fuzz/regressions/HARNESS/NAME so --replay and CI run it.
@@ -14,14 +15,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-HARNESSES=(scene_yaml_fuzzer urdf_fuzzer urdf_tree_fuzzer mesh_fuzzer cli_values_fuzzer)
+HARNESSES=(scene_yaml_fuzzer urdf_fuzzer urdf_tree_fuzzer mesh_fuzzer hull_fuzzer cli_values_fuzzer)
 # Inputs per harness in CI, from the rates measured on the shared 2-core machine at load 5
 # (scene 830/s, urdf 15000/s, mesh 4000/s since Tribo reads OBJ itself, cli 25000/s;
 # docs/fuzzing.md): about 2.5 minutes together, three times that at load 15.
 # urdf_tree_fuzzer: generated robots of up to 12 000 links, so its count is by the time
 # measured for it (docs/fuzzing.md), about 20 s.
 declare -A FUZZ_RUNS=([scene_yaml_fuzzer]=40000 [urdf_fuzzer]=300000 [urdf_tree_fuzzer]=3000
-                      [mesh_fuzzer]=50000 [cli_values_fuzzer]=500000)
+                      [mesh_fuzzer]=50000 [hull_fuzzer]=30000 [cli_values_fuzzer]=500000)
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 

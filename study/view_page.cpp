@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/file_read.hpp"
 #include "io/scene_loader.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
@@ -22,11 +23,7 @@ namespace tribo::study {
 namespace {
 
 std::string readText(const std::filesystem::path& file, const std::string& what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + what + " '" + file.string() + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return io::readFileBounded(file, what, io::kMaxJsonBytes);
 }
 
 // Text placed inside <script> must not close it.

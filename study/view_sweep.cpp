@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/file_read.hpp"
 #include "study/file_commit.hpp"
 #include "study/view_assets.hpp"
 #include "study/view_trajectory.hpp"
@@ -16,11 +17,7 @@ namespace tribo::study {
 namespace {
 
 std::string readText(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read '" + file.string() + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return io::readFileBounded(file, "sweep manifest", io::kMaxJsonBytes);
 }
 
 void replaceOnce(std::string& page, const std::string& marker, const std::string& text) {
@@ -51,16 +48,18 @@ SweepViewInfo writeSweepView(const std::filesystem::path& dir, const ViewOptions
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error("'" + (dir / "sweep.json").string() + "': " + e.what());
   }
-  std::ifstream in(dir / "results.csv");
-  if (!in) throw std::runtime_error("cannot read '" + (dir / "results.csv").string() + "'");
+  const std::filesystem::path results = dir / "results.csv";
+  io::checkReadableFile(results, "sweep results", io::kMaxSweepResultsBytes);
+  std::ifstream in(results);
+  if (!in) throw std::runtime_error("cannot read '" + results.string() + "'");
   std::string line;
-  std::getline(in, line);
+  io::getLineBounded(in, line, io::kMaxCsvLineBytes, results);
   const std::vector<std::string> columns = csvFieldsOf(line);
   nlohmann::json rows = nlohmann::json::array();
   nlohmann::json linked = nlohmann::json::object();
   SweepViewInfo info;
   std::size_t kept = 0;
-  while (std::getline(in, line)) {
+  while (io::getLineBounded(in, line, io::kMaxCsvLineBytes, results)) {
     if (line.empty()) continue;
     const std::vector<std::string> fields = csvFieldsOf(line);
     rows.push_back(fields);

@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "io/file_read.hpp"
+
 namespace tribo::study {
 
 std::vector<std::string> csvFieldsOf(const std::string& line) {
@@ -45,15 +47,19 @@ int ViewTrajectory::column(const std::string& name) const {
 
 ViewTrajectory readViewTrajectory(const std::filesystem::path& csv, std::size_t frame_cap,
                                   std::size_t value_budget) {
+  // Streamed, so its size is not bounded; a device or FIFO (endless) is refused, and so is a
+  // line longer than io::kMaxCsvLineBytes.
+  io::checkReadableFile(csv, "trajectory", std::numeric_limits<std::uintmax_t>::max());
   std::ifstream in(csv);
   if (!in) throw std::runtime_error("cannot read '" + csv.string() + "'");
   ViewTrajectory v;
   std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error("'" + csv.string() + "' is empty");
+  auto next = [&] { return io::getLineBounded(in, line, io::kMaxCsvLineBytes, csv); };
+  if (!next()) throw std::runtime_error("'" + csv.string() + "' is empty");
   v.columns = csvFieldsOf(line);
   if (v.columns.empty() || v.columns[0] != "t")
     throw std::runtime_error("'" + csv.string() + "' has no column t first");
-  while (std::getline(in, line))
+  while (next())
     if (!line.empty()) ++v.rows;
   const std::size_t by_budget = std::max<std::size_t>(2, value_budget / v.columns.size());
   const std::size_t cap = std::max<std::size_t>(2, std::min(frame_cap, by_budget));
@@ -61,9 +67,9 @@ ViewTrajectory readViewTrajectory(const std::filesystem::path& csv, std::size_t 
   v.values.assign(v.columns.size(), {});
   in.clear();
   in.seekg(0);
-  std::getline(in, line);
+  next();
   std::size_t row = 0;
-  while (std::getline(in, line)) {
+  while (next()) {
     if (line.empty()) continue;
     const bool last = row + 1 == v.rows;
     if (row % v.stride == 0 || last) {

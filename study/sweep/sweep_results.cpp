@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/file_read.hpp"
 #include "study/csv_text.hpp"
 #include "study/file_commit.hpp"
 
@@ -27,10 +28,11 @@ std::string number(double v) { return csvNumber(v); }
 std::string join(const std::vector<std::string>& fields) { return csvLine(fields); }
 
 std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  try {
+    return io::readFileBounded(p, "sweep file", io::kMaxSweepResultsBytes);
+  } catch (const io::FileReadError& e) {
+    throw SweepOutputError(Reason::kOtherSweep, e.what());
+  }
 }
 
 void writeWhole(const fs::path& file, const std::string& text) {

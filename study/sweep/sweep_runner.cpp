@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/thread_count.hpp"
+#include "io/file_read.hpp"
 #include "io/scene_loader.hpp"
 #include "study/sweep/sweep_progress.hpp"
 #include "study/sweep/sweep_results.hpp"
@@ -66,11 +67,11 @@ fs::path pointDir(const fs::path& out, std::size_t index, std::size_t total) {
 }  // namespace
 
 std::string readSceneText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw io::SceneError("cannot open scene file '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  try {
+    return io::readFileBounded(path, "scene file", io::kMaxSceneBytes);
+  } catch (const io::FileReadError& e) {
+    throw io::SceneError(e.what());
+  }
 }
 
 SweepPlan planSweep(const SweepSpec& spec) {

@@ -55,6 +55,7 @@ TEST(FuzzRegressions, SceneYaml) { replay("scene_yaml_fuzzer", sceneYaml); }
 TEST(FuzzRegressions, Urdf) { replay("urdf_fuzzer", urdf); }
 TEST(FuzzRegressions, UrdfTree) { replay("urdf_tree_fuzzer", urdfTree); }
 TEST(FuzzRegressions, Mesh) { replay("mesh_fuzzer", mesh); }
+TEST(FuzzRegressions, Hull) { replay("hull_fuzzer", hull); }
 TEST(FuzzRegressions, CliValues) { replay("cli_values_fuzzer", cliValues); }
 
 }  // namespace
