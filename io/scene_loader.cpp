@@ -91,6 +91,7 @@
 #include "io/scene_expression.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
+#include "io/utf8_check.hpp"
 
 namespace tribo::io {
 namespace {
@@ -1094,6 +1095,7 @@ namespace {
 
 SceneDocument::SceneDocument(const std::string& yaml, const std::string& name_for_errors)
     : name_(name_for_errors) {
+  requireUtf8Scene(yaml, name_);
   try {
     root_ = std::make_shared<const YAML::Node>(YAML::Load(yaml));
   } catch (const YAML::Exception& e) {
@@ -1130,6 +1132,9 @@ Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_e
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
                 const std::vector<std::string>& package_paths, const RunSettings& settings,
                 const UserLaws& user_laws) {
+  if (const std::size_t bad = firstBadUtf8(path); bad != std::string::npos)
+    throw SceneError("scene file path '" + printableText(path) + "': expected UTF-8 text, found " +
+                     badUtf8Reason(path, bad));
   std::error_code ec;
   std::ifstream in(path);
   if (!std::filesystem::is_regular_file(path, ec) || !in)
