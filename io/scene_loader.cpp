@@ -221,13 +221,14 @@ class Map {
       self.fail("expected a mapping" +
                 (accepted.empty() ? std::string() : " with keys " + joined(accepted)) + ", found " +
                 self.found());
+    std::set<std::string> seen;  // not get(): a parameters: table may hold 10,000 keys
     for (auto it = node.begin(); it != node.end(); ++it) {
       const Value key = self.child(it->first, it->first.Scalar());
       if (!it->first.IsScalar()) key.fail("expected a key name, found " + key.found());
       const std::string name = it->first.Scalar();
       if (!accepted.empty() && std::find(accepted.begin(), accepted.end(), name) == accepted.end())
         key.fail("unknown key '" + name + "' (accepted keys: " + joined(accepted) + ")");
-      if (get(name)) key.fail("key '" + name + "' given twice");
+      if (!seen.insert(name).second) key.fail("key '" + name + "' given twice");
       entries_.emplace_back(name, self.child(it->second, name));
     }
   }

@@ -75,7 +75,6 @@ void ParameterTable::add(const std::string& name, const std::string& text,
   if (find(name)) throw SceneError(where, key_path, "parameter '" + name + "' defined twice");
   if (const std::size_t bad = firstBadUtf8(text); bad != std::string::npos)
     throw SceneError(where, key_path, "expected UTF-8 text, found " + badUtf8Reason(text, bad));
-  forgetValues();
   index_.emplace(name, parameters_.size());
   parameters_.push_back({name, text, parseNumber(text).has_value(), where, key_path, false, {}});
 }

@@ -9,7 +9,7 @@
 // an expression (`--set k_t=6+0.5`, `--set k=2*$m`), evaluated when the override is applied.
 // A parameter's value may be an expression over other parameters; where a number is
 // expected, io/scene_expression.hpp evaluates it, each parameter once per load (the value is
-// kept in the table until the next add or override).
+// kept in the table until the next override).
 // All text given here (names, values, overrides) must be well-formed UTF-8 (io/utf8_check.hpp).
 // Not here: YAML (io/scene_loader.cpp reads the file and feeds this table), evaluation.
 #pragma once
@@ -72,7 +72,8 @@ class ParameterTable {
     std::string key_path;     // "parameters.NAME"
     bool overridden = false;  // text came from --set
     // The evaluated value of `text` once an expression needed it (io/scene_expression.cpp);
-    // cleared by add and applyOverrides.
+    // cleared by applyOverrides. (A parameter added later cannot change it: a reference to
+    // a name not yet added fails, and failures are not kept.)
     mutable std::optional<double> value;
   };
 
