@@ -12,6 +12,7 @@
 #include "friction/elastic_stick_law.hpp"
 #include "friction/elasto_plastic_law.hpp"
 #include "friction/gms_law.hpp"
+#include "friction/law_keys.hpp"
 #include "friction/lugre_law.hpp"
 #include "friction/parameter_check.hpp"
 #include "friction/rate_state_law.hpp"
@@ -301,6 +302,33 @@ std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec) {
   for (const std::string& name : knownDynamicFrictionLaws()) known += ", " + name;
   throw FrictionParameterError("unknown friction law '" + spec.name + "' (known laws: " + known +
                                ")");
+}
+
+LawKeys frictionLawKeys(const std::string& name) {
+  const auto words = [](std::span<const std::string_view> v) {
+    return std::vector<std::string>(v.begin(), v.end());
+  };
+  if (name == "coulomb") {
+    LawKeys k{words(kCoulombKeys), words(kCoulombOptions), {}};
+    std::string all = kCoulombRegularizationNames.names();  // "a, b, c"
+    for (std::size_t at = 0; at != std::string::npos;) {
+      const std::size_t comma = all.find(", ", at);
+      k.option_words.push_back(all.substr(at, comma == std::string::npos ? comma : comma - at));
+      at = comma == std::string::npos ? comma : comma + 2;
+    }
+    return k;
+  }
+  if (name == "recurdyn" || name == "adams") return {words(kStepLawKeys), {}, {}};
+  if (name == "roh_yoo") return {words(kRohYooKeys), {}, {}};
+  if (name == "stribeck") return {words(kStribeckKeys), {}, {}};
+  if (name == "elastic_stick") return {words(kElasticStickKeys), {}, {}};
+  if (name == "lugre") return {words(kLuGreKeys), {}, {}};
+  if (name == "dahl") return {words(kDahlKeys), {}, {}};
+  if (name == "elasto_plastic") return {words(kElastoPlasticKeys), {}, {}};
+  if (name == "gms") return {words(kGmsKeys), {}, {}};
+  if (name == "rate_state")
+    return {words(kRateStateKeys), words(kRateStateOptions), {"aging", "slip"}};
+  throw FrictionParameterError("unknown friction law '" + name + "'");
 }
 
 const std::vector<std::string>& knownFrictionLaws() {

@@ -3,7 +3,10 @@
 // libmuparser-dev):
 //   $k / $m        sqrt($k / $m)        0.05 - $m * 9.81 / (4 * $k)        sin(10 deg)
 // `$name` is the current value of parameter `name` (after --set overrides); a parameter's
-// own value may be an expression over other parameters (a cycle is an error naming it).
+// own value may be an expression over other parameters (a cycle is an error naming it,
+// "a -> b -> a"). Each parameter is evaluated once per load, in dependency order without
+// recursion: chains of any length, and parameters referred to many times, cost one
+// evaluation each.
 // Constants `pi` and `e`; the postfix `deg` turns degrees into radians. Operators + - * / ^,
 // comparisons and `?:`; functions sin cos tan asin acos atan sinh cosh tanh sqrt exp ln log
 // log2 log10 abs sign rint min max sum avg. A result that is not finite (division by zero,

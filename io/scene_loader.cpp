@@ -91,8 +91,10 @@
 #include "io/mesh_loader.hpp"
 #include "io/run_settings_check.hpp"
 #include "io/scene_expression.hpp"
+#include "io/scene_keys.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
+#include "io/utf8_check.hpp"
 
 namespace tribo::io {
 namespace {
@@ -221,13 +223,14 @@ class Map {
       self.fail("expected a mapping" +
                 (accepted.empty() ? std::string() : " with keys " + joined(accepted)) + ", found " +
                 self.found());
+    std::set<std::string> seen;  // not get(): a parameters: table may hold 10,000 keys
     for (auto it = node.begin(); it != node.end(); ++it) {
       const Value key = self.child(it->first, it->first.Scalar());
       if (!it->first.IsScalar()) key.fail("expected a key name, found " + key.found());
       const std::string name = it->first.Scalar();
       if (!accepted.empty() && std::find(accepted.begin(), accepted.end(), name) == accepted.end())
         key.fail("unknown key '" + name + "' (accepted keys: " + joined(accepted) + ")");
-      if (get(name)) key.fail("key '" + name + "' given twice");
+      if (!seen.insert(name).second) key.fail("key '" + name + "' given twice");
       entries_.emplace_back(name, self.child(it->second, name));
     }
   }
@@ -325,9 +328,7 @@ class Loader {
 
   Scene load(const std::vector<std::string>& overrides, const RunSettings& settings) {
     const Value root(file_, params_, root_, "");
-    const Map m(root,
-                {"parameters", "simulation", "bodies", "robots", "joints", "springs", "bushings",
-                 "torsional_springs", "friction_laws", "materials", "contacts", "output"});
+    const Map m(root, scene_keys::kTop);
     if (auto p = m.get("parameters")) readParameters(*p);
     params_.applyOverrides(overrides, file_);
     if (auto s = m.get("simulation")) readSimulation(*s);
@@ -424,8 +425,7 @@ class Loader {
   }
 
   void readSimulation(const Value& v) {
-    const Map m(v, {"duration", "time_step", "integrator", "gravity", "baumgarte", "collision",
-                    "rtol", "atol", "max_step", "event_location", "constraints", "threads"});
+    const Map m(v, scene_keys::kSimulation);
     SimulationOptions& o = builder_.options();
     if (auto x = m.get("duration")) o.duration = x->positive();
     if (auto x = m.get("time_step")) o.time_step = x->positive();
@@ -452,15 +452,13 @@ class Loader {
     }
     o.gravity = m.vec3("gravity", o.gravity);
     if (auto x = m.get("baumgarte")) {
-      const Map b(*x, {"alpha", "beta"});
+      const Map b(*x, scene_keys::kBaumgarte);
       if (auto a = b.get("alpha")) o.baumgarte_alpha = a->nonNegative();
       if (auto a = b.get("beta")) o.baumgarte_beta = a->nonNegative();
     }
     if (auto x = m.get("constraints")) readConstraintOptions(*x, o.constraints);
     if (auto x = m.get("collision")) {
-      const Map c(*x, {"broadphase", "closed_form_box_halfspace", "closed_form_primitives",
-                       "polyhedron_manifold", "max_points_per_pair", "joined_bodies_collide",
-                       "match_radius"});
+      const Map c(*x, scene_keys::kCollision);
       if (auto a = c.get("broadphase")) o.collision.broadphase = a->flag();
       if (auto a = c.get("closed_form_box_halfspace"))
         o.collision.closed_form_box_halfspace = a->flag();
@@ -473,13 +471,12 @@ class Loader {
   }
 
   void readBody(const Value& v) {
-    const Map m(v, {"name", "kind", "mass", "inertia", "position", "orientation", "rpy", "velocity",
-                    "angular_velocity", "surface_velocity", "geometry"});
+    const Map m(v, scene_keys::kBody);
     Body body;
     body.name = m.required("name").text();
     if (auto k = m.get("kind"))
       body.kind =
-          k->choice({"dynamic", "kinematic"}) == 0 ? BodyKind::kDynamic : BodyKind::kKinematic;
+          k->choice(scene_keys::kBodyKinds) == 0 ? BodyKind::kDynamic : BodyKind::kKinematic;
     body.position = m.vec3("position", Vec3::Zero());
     body.orientation = orientation(m);
     body.velocity = m.vec3("velocity", Vec3::Zero());
@@ -531,12 +528,10 @@ class Loader {
   }
 
   GeometrySpec readGeometry(const Value& v) {
-    const Map m(v, {"name", "shape", "size", "radius", "length", "file", "scale", "surface",
-                    "collision_group", "collision_mask", "position", "orientation", "rpy"});
+    const Map m(v, scene_keys::kGeometry);
     GeometrySpec g{v, m.required("name").text(), {}, Eigen::Isometry3d::Identity()};
     const Value shape = m.required("shape");
-    const Keys shapes{"box",  "sphere",    "cylinder",    "capsule",
-                      "cone", "halfspace", "convex_mesh", "mesh"};
+    const Keys& shapes = scene_keys::kShapes;
     const std::string kind = shapes[shape.choice(shapes)];
     // Keys each shape takes; any other dimension key is an error at that key.
     const std::map<std::string, Keys> takes{{"box", {"size"}},
@@ -600,8 +595,7 @@ class Loader {
   }
 
   void readRobot(const Value& v) {
-    const Map m(v, {"file", "prefix", "position", "orientation", "rpy", "base", "joint_positions",
-                    "joint_velocities", "package_paths", "collision_group"});
+    const Map m(v, scene_keys::kRobot);
     const Value file = m.required("file");
     const std::filesystem::path folder = std::filesystem::path(file_).parent_path();
     std::filesystem::path path(file.text());
@@ -626,7 +620,7 @@ class Loader {
     if (auto x = m.get("base"))
       placement.base_mode =
           std::array{UrdfPlacement::Base::kAuto, UrdfPlacement::Base::kFixed,
-                     UrdfPlacement::Base::kFloating}[x->choice({"auto", "fixed", "floating"})];
+                     UrdfPlacement::Base::kFloating}[x->choice(scene_keys::kRobotBases)];
     auto joint_values = [&](const char* key, std::map<std::string, double>& out) {
       if (auto x = m.get(key)) {
         const Map values(*x, {});
@@ -671,23 +665,21 @@ class Loader {
   }
 
   void readConstraintOptions(const Value& v, ConstraintOptions& c) {
-    const Map m(v, {"projection", "tolerance", "iterations", "project_initial", "redundant",
-                    "solver", "sparse_threshold"});
+    const Map m(v, scene_keys::kConstraints);
     if (auto x = m.get("projection")) c.projection = x->flag();
     if (auto x = m.get("tolerance")) c.projection_tolerance = x->positive();
     if (auto x = m.get("iterations")) c.projection_iterations = x->integer(1);
     if (auto x = m.get("project_initial")) c.project_initial = x->flag();
     if (auto x = m.get("redundant"))
-      c.redundant = x->choice({"error", "remove"}) == 0 ? RedundancyPolicy::kError
-                                                        : RedundancyPolicy::kRemove;
+      c.redundant = x->choice(scene_keys::kRedundancyPolicies) == 0 ? RedundancyPolicy::kError
+                                                                    : RedundancyPolicy::kRemove;
     if (auto x = m.get("solver"))
       c.solver = guarded(*x, [&] { return constraintSolverFromName(x->text()); });
     if (auto x = m.get("sparse_threshold")) c.sparse_threshold = x->integer(1);
   }
 
   void readJoint(const Value& v) {
-    const Map m(v, {"name", "type", "parent", "child", "anchor", "axis", "axis2", "limit", "spring",
-                    "damping", "effort", "friction", "drive", "mimic"});
+    const Map m(v, scene_keys::kJoint);
     const std::string name = m.required("name").text();
     const Value type_value = m.required("type");
     const JointType type =
@@ -703,14 +695,14 @@ class Loader {
     const int joint = guarded(
         v, [&] { return builder_.addJoint(name, type, parent, child, anchor, axis, axis2); });
     if (auto x = m.get("limit")) {
-      const Map l(*x, {"lower", "upper", "stiffness", "damping"});
+      const Map l(*x, scene_keys::kJointLimit);
       JointLimit limit{l.required("lower").number(), l.required("upper").number(), 0.0, 0.0};
       if (auto k = l.get("stiffness")) limit.stiffness = k->nonNegative();
       if (auto c = l.get("damping")) limit.damping = c->nonNegative();
       guarded(*x, [&] { builder_.setJointLimit(joint, limit); });
     }
     if (auto x = m.get("spring")) {
-      const Map sp(*x, {"stiffness", "reference"});
+      const Map sp(*x, scene_keys::kJointSpring);
       const auto reference = sp.get("reference");
       const JointSpring spring{sp.required("stiffness").number(),
                                reference ? reference->number() : 0.0};
@@ -720,11 +712,11 @@ class Loader {
       guarded(*x, [&] { builder_.setJointDamping(joint, x->number()); });
     if (auto x = m.get("effort")) guarded(*x, [&] { builder_.setJointEffort(joint, x->number()); });
     if (auto x = m.get("drive")) {
-      const Map d(*x, {"mode", "constant", "slope", "amplitude", "frequency", "phase"});
+      const Map d(*x, scene_keys::kJointDrive);
       JointDrive drive;
       if (auto mode = d.get("mode"))
-        drive.mode = mode->choice({"position", "velocity"}) == 0 ? DriveMode::kPosition
-                                                                 : DriveMode::kVelocity;
+        drive.mode = mode->choice(scene_keys::kDriveModes) == 0 ? DriveMode::kPosition
+                                                                : DriveMode::kVelocity;
       auto number = [&](const char* key) {
         const auto n = d.get(key);
         return n ? n->number() : 0.0;
@@ -741,12 +733,13 @@ class Loader {
 
   void readJointReferences() {
     for (const auto& [joint, v] : pending_friction_) {
-      const Map f(v, {"law", "load", "normal_force", "radius"});
+      const Map f(v, scene_keys::kJointFriction);
       JointFriction friction;
       friction.law = frictionLaw(f.required("law"));
       if (auto x = f.get("load"))
-        friction.load = x->choice({"reaction", "constant"}) == 0 ? JointFrictionLoad::kReaction
-                                                                 : JointFrictionLoad::kConstant;
+        friction.load = x->choice(scene_keys::kJointFrictionLoads) == 0
+                            ? JointFrictionLoad::kReaction
+                            : JointFrictionLoad::kConstant;
       if (auto x = f.get("normal_force")) {
         if (friction.load != JointFrictionLoad::kConstant)
           x->fail("normal_force applies to load: constant only");
@@ -758,7 +751,7 @@ class Loader {
       guarded(v, [&, joint = joint] { builder_.setJointFriction(joint, friction); });
     }
     for (const auto& [joint, v] : pending_mimic_) {
-      const Map mm(v, {"joint", "multiplier", "offset"});
+      const Map mm(v, scene_keys::kJointMimic);
       const Value leader_value = mm.required("joint");
       const auto leader = builder_.findJoint(leader_value.text());
       if (!leader) {
@@ -828,7 +821,7 @@ class Loader {
   }
 
   void readSpring(const Value& v) {
-    const Map m(v, {"name", "a", "point_a", "b", "point_b", "stiffness", "damping", "rest_length"});
+    const Map m(v, scene_keys::kSpring);
     const std::string name = m.required("name").text();
     const BodyIndex a = body(m.required("a"));
     const BodyIndex b = body(m.required("b"));
@@ -846,7 +839,7 @@ class Loader {
   // absent).
   static void readFrame(const std::optional<Value>& v, Vec3& position, Quat& rotation) {
     if (!v) return;
-    const Map m(*v, {"position", "orientation", "rpy"});
+    const Map m(*v, scene_keys::kFrame);
     position = m.vec3("position", Vec3::Zero());
     rotation = orientation(m);
   }
@@ -862,8 +855,7 @@ class Loader {
   }
 
   void readBushing(const Value& v) {
-    const Map m(v, {"name", "a", "b", "frame_a", "frame_b", "stiffness", "damping",
-                    "rotational_stiffness", "rotational_damping"});
+    const Map m(v, scene_keys::kBushing);
     Bushing bushing;
     bushing.name = m.required("name").text();
     bushing.body_a = body(m.required("a"));
@@ -878,7 +870,7 @@ class Loader {
   }
 
   void readTorsionalSpring(const Value& v) {
-    const Map m(v, {"name", "a", "b", "axis", "stiffness", "damping", "rest_angle"});
+    const Map m(v, scene_keys::kTorsionalSpring);
     const std::string name = m.required("name").text();
     const BodyIndex a = body(m.required("a"));
     const BodyIndex b = body(m.required("b"));
@@ -938,7 +930,7 @@ class Loader {
   }
 
   void readMaterial(const Value& v) {
-    const Map m(v, {"name", "normal", "friction", "surfaces", "default"});
+    const Map m(v, scene_keys::kMaterial);
     const Value name_value = m.required("name");
     const std::string name = name_value.text();
     if (materials_.count(name)) name_value.fail("material '" + name + "' defined twice");
@@ -967,8 +959,7 @@ class Loader {
   }
 
   contact::NormalLaw readNormalLaw(const Value& v) {
-    const Map m(
-        v, {"law", "stiffness", "damping", "exponent", "max_depth", "restitution", "impact_speed"});
+    const Map m(v, scene_keys::kNormal);
     contact::NormalLaw law;
     if (auto x = m.get("law"))
       law.type = guarded(*x, [&] { return contact::normalLawFromName(x->text()); });
@@ -1002,7 +993,7 @@ class Loader {
   }
 
   void readContact(const Value& v) {
-    const Map m(v, {"a", "b", "material"});
+    const Map m(v, scene_keys::kContact);
     auto geometry = [&](const Value& g) {
       const auto index = builder_.findGeometry(g.text());
       if (!index)
@@ -1023,7 +1014,7 @@ class Loader {
   }
 
   OutputSpec readOutput(const Value& v) {
-    const Map m(v, {"interval", "channels", "summary"});
+    const Map m(v, scene_keys::kOutput);
     OutputSpec out;
     if (auto x = m.get("interval")) out.interval = x->positive();
     if (auto x = m.get("channels")) {
@@ -1038,7 +1029,7 @@ class Loader {
       }
     }
     if (auto x = m.get("summary")) {
-      const Map s(*x, {"body", "coordinate", "channel", "stick_speed", "last_cycles"});
+      const Map s(*x, scene_keys::kSummary);
       const auto b = s.get("body");
       const auto channel = s.get("channel");
       if (!b && !channel) s.required("body");  // the message names what is missing
@@ -1051,7 +1042,8 @@ class Loader {
         out.summary.channel = channel->text();
         summary_channel_.emplace(*channel);  // checked once the model is built
       }
-      if (auto c = s.get("coordinate")) out.summary.coordinate = c->choice({"x", "y", "z"});
+      if (auto c = s.get("coordinate"))
+        out.summary.coordinate = c->choice(scene_keys::kSummaryCoordinates);
       if (!out.summary.body.empty() && !hasGroup(out.channels, "contact"))
         out.channels.push_back("contact");  // the summary's stuck fraction reads it
       if (out.summary.channel.empty() && !hasGroup(out.channels, "position"))
@@ -1098,6 +1090,7 @@ namespace {
 
 SceneDocument::SceneDocument(const std::string& yaml, const std::string& name_for_errors)
     : name_(name_for_errors) {
+  requireUtf8Scene(yaml, name_);
   try {
     root_ = std::make_shared<const YAML::Node>(YAML::Load(yaml));
   } catch (const YAML::Exception& e) {
@@ -1134,6 +1127,9 @@ Scene loadSceneFromString(const std::string& yaml, const std::string& name_for_e
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
                 const std::vector<std::string>& package_paths, const RunSettings& settings,
                 const UserLaws& user_laws) {
+  if (const std::size_t bad = firstBadUtf8(path); bad != std::string::npos)
+    throw SceneError("scene file path '" + printableText(path) + "': expected UTF-8 text, found " +
+                     badUtf8Reason(path, bad));
   if (looksLikeUrdf(path))
     throw SceneError(path + ": a URDF robot (its first element is <robot>), not a scene file: " +
                      "load it with sceneFromUrdf (`tribo run FILE`) or name it in a scene's " +

@@ -5,6 +5,9 @@
 #include <sstream>
 #include <system_error>
 
+#include "io/scene_expression.hpp"
+#include "io/utf8_check.hpp"
+
 namespace tribo::io {
 namespace {
 
@@ -70,31 +73,62 @@ void ParameterTable::add(const std::string& name, const std::string& text,
                      "digit (got '" +
                          name + "')");
   if (find(name)) throw SceneError(where, key_path, "parameter '" + name + "' defined twice");
-  parameters_.push_back({name, text, parseNumber(text).has_value(), where, key_path, false});
+  if (const std::size_t bad = firstBadUtf8(text); bad != std::string::npos)
+    throw SceneError(where, key_path, "expected UTF-8 text, found " + badUtf8Reason(text, bad));
+  index_.emplace(name, parameters_.size());
+  parameters_.push_back({name, text, parseNumber(text).has_value(), where, key_path, false, {}});
+}
+
+void ParameterTable::forgetValues() {
+  for (const Parameter& p : parameters_) p.value.reset();
 }
 
 void ParameterTable::applyOverrides(std::span<const std::string> overrides,
                                     const std::string& file) {
   const SourceLocation in_file{file, 0, 0};
+  std::vector<std::pair<Parameter*, const std::string*>> expressions;  // to check once all set
   for (const std::string& item : overrides) {
+    if (const std::size_t bad = firstBadUtf8(item); bad != std::string::npos)
+      throw SceneError(in_file, "--set " + printableText(item),
+                       "expected UTF-8 text, found " + badUtf8Reason(item, bad) + " at byte " +
+                           std::to_string(bad + 1));
     const auto eq = item.find('=');
     if (eq == std::string::npos)
       throw SceneError(in_file, "--set", "expected NAME=VALUE, got '" + item + "'");
     const std::string name(trimmed(std::string_view(item).substr(0, eq)));
     const std::string value(trimmed(std::string_view(item).substr(eq + 1)));
-    Parameter* p = nullptr;
-    for (auto& candidate : parameters_)
-      if (candidate.name == name) p = &candidate;
-    if (p == nullptr)
+    const auto at = index_.find(name);
+    if (at == index_.end())
       throw SceneError(in_file, "--set " + item,
                        "unknown parameter '" + name + "' (known parameters: " + knownNames() + ")");
-    if (p->numeric && !parseNumber(value))
+    Parameter* p = &parameters_[at->second];
+    const bool expression = !parseNumber(value) && looksLikeExpression(value);
+    if (p->numeric && !parseNumber(value) && !expression)
       throw SceneError(p->where, p->key_path,
-                       "parameter '" + name + "': expected a number, got '" + value +
-                           "' (from --set " + item + ")");
+                       "parameter '" + name + "': expected a number or an expression, got '" +
+                           value + "' (from --set " + item + ")");
     p->text = value;
     p->overridden = true;
+    if (p->numeric && expression) expressions.emplace_back(p, &item);
   }
+  forgetValues();
+  // A numeric parameter's expression must have a value, with every override in place (it
+  // may refer to another overridden parameter).
+  for (const auto& [p, item] : expressions) {
+    try {
+      (void)evaluateExpression(p->text, *this, p->where, p->key_path);
+    } catch (const SceneError& e) {
+      throw SceneError(p->where, p->key_path, e.detail() + " (from --set " + *item + ")");
+    }
+  }
+}
+
+void requireUtf8Scene(std::string_view text, const std::string& file) {
+  const std::size_t bad = firstBadUtf8(text);
+  if (bad == std::string::npos) return;
+  const TextPosition at = positionOf(text, bad);
+  throw SceneError({printableText(file), at.line, at.column}, "",
+                   "expected UTF-8 text, found " + badUtf8Reason(text, bad));
 }
 
 const ParameterTable::Parameter& ParameterTable::resolve(std::string_view reference,
@@ -108,9 +142,8 @@ const ParameterTable::Parameter& ParameterTable::resolve(std::string_view refere
 }
 
 const ParameterTable::Parameter* ParameterTable::find(std::string_view name) const {
-  for (const auto& p : parameters_)
-    if (p.name == name) return &p;
-  return nullptr;
+  const auto at = index_.find(std::string(name));
+  return at == index_.end() ? nullptr : &parameters_[at->second];
 }
 
 std::string ParameterTable::knownNames() const {

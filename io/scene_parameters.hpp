@@ -5,9 +5,12 @@
 //   - a number is text that parses fully as a finite double ("1e-3", "+2", ".5"; not
 //     "1.5m", "inf", "nan").
 // Command-line overrides (`--set NAME=VALUE`) replace a parameter's value before any
-// reference is resolved; a parameter whose value in the file is a number only takes numbers.
+// reference is resolved; a parameter whose value in the file is a number takes a number or
+// an expression (`--set k_t=6+0.5`, `--set k=2*$m`), evaluated when the override is applied.
 // A parameter's value may be an expression over other parameters; where a number is
-// expected, io/scene_expression.hpp evaluates it.
+// expected, io/scene_expression.hpp evaluates it, each parameter once per load (the value is
+// kept in the table until the next override).
+// All text given here (names, values, overrides) must be well-formed UTF-8 (io/utf8_check.hpp).
 // Not here: YAML (io/scene_loader.cpp reads the file and feeds this table), evaluation.
 #pragma once
 
@@ -16,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -67,6 +71,10 @@ class ParameterTable {
     SourceLocation where;     // of the value in the file
     std::string key_path;     // "parameters.NAME"
     bool overridden = false;  // text came from --set
+    // The evaluated value of `text` once an expression needed it (io/scene_expression.cpp);
+    // cleared by applyOverrides. (A parameter added later cannot change it: a reference to
+    // a name not yet added fails, and failures are not kept.)
+    mutable std::optional<double> value;
   };
 
   // Adds a parameter read from the file, in file order. Throws SceneError at `where` for an
@@ -74,8 +82,10 @@ class ParameterTable {
   void add(const std::string& name, const std::string& text, const SourceLocation& where);
 
   // Applies NAME=VALUE overrides in order (the last one for a name wins). Throws SceneError
-  // (naming `file`) for text without '=', an unknown NAME (listing the known names), or a
-  // non-number VALUE for a numeric parameter ("parameter 'k': expected a number, got 'abc'").
+  // (naming `file`) for text that is not UTF-8, text without '=', an unknown NAME (listing
+  // the known names), or a VALUE for a numeric parameter that is neither a number nor an
+  // expression with a finite value ("parameter 'k': expected a number or an expression, got
+  // 'abc'").
   void applyOverrides(std::span<const std::string> overrides, const std::string& file);
 
   // The parameter `reference` ("$name") stands for. Throws SceneError at `where`/`key_path`
@@ -91,7 +101,14 @@ class ParameterTable {
   const std::vector<Parameter>& parameters() const { return parameters_; }
 
  private:
+  void forgetValues();
+
   std::vector<Parameter> parameters_;
+  std::unordered_map<std::string, std::size_t> index_;  // name -> position in parameters_
 };
+
+// Throws SceneError naming `file` and the line and column of the first byte of `text` that
+// is not well-formed UTF-8 (io/utf8_check.hpp).
+void requireUtf8Scene(std::string_view text, const std::string& file);
 
 }  // namespace tribo::io

@@ -15,6 +15,7 @@
 #include "io/file_read.hpp"
 #include "io/urdf_checks.hpp"
 #include "io/urdf_xml_checks.hpp"
+#include "io/utf8_check.hpp"
 
 namespace tribo::io {
 
@@ -70,28 +71,6 @@ Eigen::Isometry3d toIsometry(const urdf::Pose& p) {
   return t;
 }
 
-// Offset of the first byte of `text` that is not part of well-formed UTF-8 (or is a NUL),
-// npos when there is none. TinyXML 2.6 steps over a multi-byte character by its lead byte
-// alone, so a lead byte at the end of the text made it read past the buffer (found by
-// fuzz/urdf_fuzzer); the text is checked before it gets there.
-std::size_t badUtf8(const std::string& text) {
-  const auto* b = reinterpret_cast<const unsigned char*>(text.data());
-  for (std::size_t i = 0; i < text.size();) {
-    const unsigned char c = b[i];
-    const std::size_t n = c == 0             ? 0
-                          : c < 0x80         ? 1
-                          : (c >> 5) == 0x6  ? 2
-                          : (c >> 4) == 0xE  ? 3
-                          : (c >> 3) == 0x1E ? 4
-                                             : 0;
-    if (n == 0 || i + n > text.size()) return i;
-    for (std::size_t k = 1; k < n; ++k)
-      if ((b[i + k] & 0xC0) != 0x80) return i;
-    i += n;
-  }
-  return std::string::npos;
-}
-
 std::optional<double> number(const char* text) {
   if (!text) return std::nullopt;
   char* end = nullptr;
@@ -145,12 +124,11 @@ class Reader {
   UrdfRobot parse(const std::string& text) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos)
       throw UrdfError(at(0) + "the file is empty (expected a <robot> XML document)");
-    if (const std::size_t bad = badUtf8(text); bad != std::string::npos) {
-      const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + bad, '\n'));
-      char byte[8];
-      std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[bad]));
-      throw UrdfError(at(line) + "expected UTF-8 text, found byte " + byte);
-    }
+    // TinyXML 2.6 steps over a multi-byte character by its lead byte alone, so a lead byte
+    // at the end of the text made it read past the buffer (found by fuzz/urdf_fuzzer).
+    if (const std::size_t bad = firstBadUtf8(text); bad != std::string::npos)
+      throw UrdfError(at(positionOf(text, bad).line) + "expected UTF-8 text, found " +
+                      badUtf8Reason(text, bad));
     checkUrdfNesting(text, path_);
     TiXmlDocument doc;
     doc.Parse(text.c_str());

@@ -12,6 +12,7 @@
 #include "io/scene_parameters.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
+#include "io/utf8_check.hpp"
 
 namespace tribo::io {
 
@@ -77,7 +78,13 @@ const std::vector<std::string>& urdfSceneSettings() {
 Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& package_paths,
                     const std::vector<std::string>& overrides, const UrdfReadOptions& read) {
   std::map<std::string, std::string> settings = defaultSettings();
+  if (const std::size_t bad = firstBadUtf8(path); bad != std::string::npos)
+    throw SceneError("URDF file path '" + printableText(path) + "': expected UTF-8 text, found " +
+                     badUtf8Reason(path, bad));
   for (const std::string& o : overrides) {
+    if (const std::size_t bad = firstBadUtf8(o); bad != std::string::npos)
+      throw SceneError(path + ": --set " + printableText(o) + ": expected UTF-8 text, found " +
+                       badUtf8Reason(o, bad));
     const auto eq = o.find('=');
     const std::string name = o.substr(0, eq);
     if (eq == std::string::npos || !settings.count(name)) {

@@ -40,7 +40,10 @@ build() {
       -DTRIBO_BUILD_BENCH=OFF -DTRIBO_WITH_MPI=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       ${CMAKE_ARGS:-} >/dev/null
   fi
-  cmake --build "$BUILD_DIR" -j "$JOBS" --target "${HARNESSES[@]}"
+  cmake --build "$BUILD_DIR" -j "$JOBS" --target "${HARNESSES[@]}" scene_dictionary
+  # The scene dictionary: the words generated from the loader's own key tables (a key added
+  # there is fuzzed at once), joined with the committed one (expression fragments, extremes).
+  { cat fuzz/dictionaries/scene.dict; "$BUILD_DIR/fuzz/scene_dictionary"; } >"$BUILD_DIR/scene.dict"
 }
 
 # Options every run shares: the harness's own dictionary if it has one, a 10 s hang limit,
@@ -50,7 +53,7 @@ flags() {
   mkdir -p "$BUILD_DIR/artifacts/$h"
   echo "-timeout=10 -rss_limit_mb=2048 -max_len=16384 -artifact_prefix=$BUILD_DIR/artifacts/$h/"
   case $h in
-    scene_yaml_fuzzer) echo "-dict=fuzz/dictionaries/scene.dict" ;;
+    scene_yaml_fuzzer) echo "-dict=$BUILD_DIR/scene.dict" ;;
     # assimp leaks on many malformed files (fuzz/mesh_fuzzer.cpp); LeakSanitizer's check
     # after each such input brought the rate from thousands to 2 inputs a second.
     mesh_fuzzer) echo "-detect_leaks=0" ;;

@@ -1,9 +1,11 @@
 #include "study/sweep/sweep_grid.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <set>
 
 #include "io/scene_parameters.hpp"
+#include "io/utf8_check.hpp"
 #include "study/csv_text.hpp"
 
 namespace tribo::study {
@@ -12,6 +14,22 @@ namespace {
 
 // 12 significant digits: 0.1:0.3:3 gives "0.2", not "0.20000000000000001".
 std::string gridText(double v) { return csvNumber(v, 12); }
+
+// The shortest text that reads back as exactly `v`: for grids whose neighbours agree to 12
+// digits (1:1.000000000001:5, or -1e308:1e308:1000001 near 0).
+std::string exactText(double v) {
+  char buf[40];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
+// "--grid 'SPEC': " with bytes that are not UTF-8 shown as \xNN; throws for such bytes.
+std::string checkedWhere(std::string_view spec, const char* option) {
+  const std::string where = std::string(option) + " '" + io::printableText(spec) + "': ";
+  if (const std::size_t bad = io::firstBadUtf8(spec); bad != std::string::npos)
+    throw SweepSpecError(where + "expected UTF-8 text, found " + io::badUtf8Reason(spec, bad) +
+                         " at byte " + std::to_string(bad + 1));
+  return where;
+}
 
 std::vector<std::string_view> split(std::string_view text, char sep) {
   std::vector<std::string_view> parts;
@@ -27,7 +45,7 @@ std::vector<std::string_view> split(std::string_view text, char sep) {
 // Splits "NAME=REST" and checks NAME; `option` and `form` are for messages.
 std::pair<std::string, std::string_view> nameAndRest(std::string_view spec, const char* option,
                                                      const char* form) {
-  const std::string where = std::string(option) + " '" + std::string(spec) + "': ";
+  const std::string where = checkedWhere(spec, option);
   const std::size_t eq = spec.find('=');
   if (eq == std::string_view::npos)
     throw SweepSpecError(where + "expected " + form + ", found no '='");
@@ -62,7 +80,7 @@ void requireDistinct(const SweepAxis& axis, const std::string& where) {
 SweepAxis parseGridAxis(std::string_view spec) {
   constexpr const char* kForm = "NAME=START:STOP:COUNT";
   auto [name, rest] = nameAndRest(spec, "--grid", kForm);
-  const std::string where = "--grid '" + std::string(spec) + "': ";
+  const std::string where = checkedWhere(spec, "--grid");
   const auto fields = split(rest, ':');
   if (fields.size() != 3)
     throw SweepSpecError(where + "expected " + kForm + ", found " + std::to_string(fields.size()) +
@@ -76,27 +94,53 @@ SweepAxis parseGridAxis(std::string_view spec) {
     throw SweepSpecError(where + "STOP: expected a number, found '" + std::string(fields[1]) + "'");
   long count = 0;
   const auto c = std::from_chars(fields[2].data(), fields[2].data() + fields[2].size(), count);
-  if (c.ec != std::errc() || c.ptr != fields[2].data() + fields[2].size() || count < 1 ||
-      count > static_cast<long>(SweepGrid::kMaxPoints))
+  if (c.ec != std::errc() || c.ptr != fields[2].data() + fields[2].size() || count < 1)
     throw SweepSpecError(where + "COUNT: expected a whole number from 1 to " +
                          std::to_string(SweepGrid::kMaxPoints) + ", found '" +
                          std::string(fields[2]) + "'");
+  // Sized before any value is made: a grid is at most kMaxPoints points.
+  if (count > static_cast<long>(SweepGrid::kMaxPoints))
+    throw SweepSpecError(where + "COUNT " + std::string(fields[2]) +
+                         " is more points than a sweep may have (at most " +
+                         std::to_string(SweepGrid::kMaxPoints) + ")");
   if (count == 1 && *start != *stop)
     throw SweepSpecError(where + "COUNT 1 needs START = STOP, found " + std::string(fields[0]) +
                          " and " + std::string(fields[1]));
+  // std::lerp: exact at both ends, monotonic, and no overflow for ends of opposite sign near
+  // the largest doubles (START + i (STOP - START) / (COUNT - 1) overflowed there).
+  std::vector<double> numbers(static_cast<std::size_t>(count));
+  for (long i = 0; i < count; ++i)
+    numbers[static_cast<std::size_t>(i)] =
+        i + 1 == count
+            ? *stop
+            : std::lerp(*start, *stop, static_cast<double>(i) / static_cast<double>(count - 1));
+  for (std::size_t i = 1; i < numbers.size(); ++i)
+    if (numbers[i] == numbers[i - 1])
+      throw SweepSpecError(where + "values " + std::to_string(i) + " and " + std::to_string(i + 1) +
+                           " are both " + exactText(numbers[i]) +
+                           ": the step (STOP - START) / (COUNT - 1) is below the precision of "
+                           "a double there; points must be distinct");
   SweepAxis axis{name, {}};
-  axis.values.reserve(static_cast<std::size_t>(count));
-  for (long i = 0; i < count; ++i) {
-    const double v = i + 1 == count ? *stop : *start + i * (*stop - *start) / (count - 1);
-    axis.values.push_back(gridText(v));
-  }
+  axis.values.reserve(numbers.size());
+  for (const double v : numbers) axis.values.push_back(gridText(v));
+  // The ends are the numbers given, exactly (START and STOP typed with 17 digits).
+  for (const std::size_t end : {std::size_t{0}, numbers.size() - 1})
+    if (io::parseNumber(axis.values[end]) != numbers[end])
+      axis.values[end] = exactText(numbers[end]);
+  // Equal texts of distinct values are neighbours (a grid is monotonic): then every value
+  // gets as many digits as it needs to read back exactly.
+  for (std::size_t i = 1; i < axis.values.size(); ++i)
+    if (axis.values[i] == axis.values[i - 1]) {
+      for (std::size_t k = 0; k < numbers.size(); ++k) axis.values[k] = exactText(numbers[k]);
+      break;
+    }
   requireDistinctNeighbours(axis, where);
   return axis;
 }
 
 SweepAxis parseListAxis(std::string_view spec) {
   auto [name, rest] = nameAndRest(spec, "--list", "NAME=V1,V2,...");
-  const std::string where = "--list '" + std::string(spec) + "': ";
+  const std::string where = checkedWhere(spec, "--list");
   SweepAxis axis{name, {}};
   for (const auto v : split(rest, ',')) {
     if (v.empty()) throw SweepSpecError(where + "expected a value between commas, found none");
@@ -110,15 +154,20 @@ SweepGrid::SweepGrid(std::vector<SweepAxis> axes) : axes_(std::move(axes)) {
   if (axes_.empty()) throw SweepSpecError("expected at least one --grid or --list, found none");
   std::set<std::string> names;
   size_ = 1;
+  double points = 1;  // the product, for the message when it is too large
+  std::string shape;
   for (const auto& a : axes_) {
     if (a.values.empty()) throw SweepSpecError("parameter '" + a.name + "' has no values");
     if (!names.insert(a.name).second)
       throw SweepSpecError("parameter '" + a.name +
                            "' is swept twice; give each parameter one --grid or --list");
-    if (size_ > kMaxPoints / a.values.size())
-      throw SweepSpecError("the grid spans more than " + std::to_string(kMaxPoints) + " points");
-    size_ *= a.values.size();
+    points *= static_cast<double>(a.values.size());
+    shape += (shape.empty() ? "" : " x ") + std::to_string(a.values.size()) + " " + a.name;
   }
+  if (points > static_cast<double>(kMaxPoints))
+    throw SweepSpecError("the grid spans " + csvNumber(points, 6) + " points (" + shape +
+                         "); a sweep may have at most " + std::to_string(kMaxPoints));
+  for (const auto& a : axes_) size_ *= a.values.size();
 }
 
 std::vector<std::string> SweepGrid::values(std::size_t i) const {

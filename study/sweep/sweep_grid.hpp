@@ -8,7 +8,14 @@
 // slowest, the last fastest, so point i is the same point in every run of the same axes.
 // Values are kept as text, and a point's override NAME=TEXT uses that text: a grid value is
 // written with 12 significant digits (0.1:0.3:3 gives 0.1, 0.2, 0.3), so the text, and the
-// value the scene reads, is the same in every run.
+// value the scene reads, is the same in every run; the two ends read back exactly as the
+// numbers given (more digits when 12 do not hold them). When two neighbours agree to 12 digits
+// (1:1.000000000001:5), the axis's values are written with the digits each needs to read
+// back exactly; neighbours equal as doubles are an error. Ends may be any finite numbers
+// (-1e308:1e308:3 gives -1e+308, 0, 1e+308).
+// A sweep has at most SweepGrid::kMaxPoints points (1,000,000): a --grid COUNT above it is
+// refused before any value is made, and so is a product of axes above it.
+// Option text must be well-formed UTF-8 (io/utf8_check.hpp).
 // Not here: whether NAME is a parameter of the scene (loading the point's scene says so),
 // running points, files.
 #pragma once
@@ -41,10 +48,12 @@ SweepAxis parseListAxis(std::string_view spec);
 class SweepGrid {
  public:
   // Largest number of points a grid may span.
-  static constexpr std::size_t kMaxPoints = 10'000'000;
+  // Largest number of points a grid may span (README, Parameter sweeps): a million runs is
+  // already weeks of simulation; beyond it sweep.json and the plan's memory grow past use.
+  static constexpr std::size_t kMaxPoints = 1'000'000;
 
   // Throws SweepSpecError for no axes, an axis without values, a name given twice, or more
-  // than kMaxPoints points.
+  // than kMaxPoints points (naming the count, the axes and the limit).
   explicit SweepGrid(std::vector<SweepAxis> axes);
 
   const std::vector<SweepAxis>& axes() const { return axes_; }

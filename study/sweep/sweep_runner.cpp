@@ -13,6 +13,7 @@
 #include "core/thread_count.hpp"
 #include "io/file_read.hpp"
 #include "io/scene_loader.hpp"
+#include "io/utf8_check.hpp"
 #include "study/sweep/sweep_progress.hpp"
 #include "study/sweep/sweep_results.hpp"
 
@@ -57,6 +58,21 @@ std::string manifestFor(const SweepSpec& spec, const std::string& scene_text,
   return j.dump(2) + "\n";
 }
 
+// A parameter fixed by --set and swept by --grid/--list: which should win is a guess, and
+// sweep.json would record both; refused, naming both.
+void requireNoFixedSweptParameter(const SweepSpec& spec) {
+  for (const std::string& item : spec.fixed_overrides) {
+    std::string name = item.substr(0, item.find('='));
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    for (const SweepAxis& axis : spec.axes)
+      if (axis.name == name)
+        throw SweepSpecError("--set " + io::printableText(item) + " fixes parameter '" + name +
+                             "', which is also swept (--grid or --list " + name +
+                             "=...); give it one or the other");
+  }
+}
+
 fs::path pointDir(const fs::path& out, std::size_t index, std::size_t total) {
   const std::size_t width = std::to_string(total > 0 ? total - 1 : 0).size();
   std::string name = std::to_string(index);
@@ -83,6 +99,11 @@ SweepPlan planSweep(const SweepSpec& spec, const std::string& scene_text) {
     throw SweepSpecError("--settle applies to runs, not to --analysis modes");
   if (spec.keep_trajectories && spec.analysis == SweepAnalysis::kModes)
     throw SweepSpecError("--keep-trajectories applies to runs, not to --analysis modes");
+  requireNoFixedSweptParameter(spec);
+  if (const std::size_t bad = io::firstBadUtf8(spec.scene_path); bad != std::string::npos)
+    throw io::SceneError("scene file path '" + io::printableText(spec.scene_path) +
+                         "': expected UTF-8 text, found " +
+                         io::badUtf8Reason(spec.scene_path, bad));
   SweepPlan plan{{spec.scene_path, scene_text, spec.fixed_overrides, spec.settle, spec.analysis},
                  SweepGrid(spec.axes),
                  "",

@@ -138,6 +138,28 @@ TEST_F(SweepCli, ExitStatusAndMessages) {
     EXPECT_EQ(r.status, c.status) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
   }
+  // Refused before anything is written: a parameter both fixed and swept, a grid past the
+  // point limit (once 2.4 GB and a 249 MB sweep.json before the first point), text that is
+  // not UTF-8 (once found only when summary.json was written, after the run).
+  for (const Case& c :
+       {Case{"sweep " + kBelt + out + " --grid v_b=1:2:2 --set v_b=9", 2,
+             "--set v_b=9 fixes parameter 'v_b', which is also swept"},
+        Case{"sweep " + kBelt + out + " --set v_b=9 --list v_b=1,2", 2,
+             "--set v_b=9 fixes parameter 'v_b', which is also swept"},
+        Case{"sweep " + kBelt + out + " --grid v_b=0:1:10000000", 1,
+             "COUNT 10000000 is more points than a sweep may have (at most 1000000)"},
+        Case{"sweep " + kBelt + out + " --grid v_b=0:1:1000 --grid k=1:2:1001", 2,
+             "the grid spans 1.001e+06 points (1000 v_b x 1001 k); a sweep may have at most "
+             "1000000"},
+        Case{"sweep " + kBelt + out + " --list friction=roh_yoo,\xff", 1,
+             "--list 'friction=roh_yoo,\\xFF': expected UTF-8 text"},
+        Case{"sweep " + kBelt + out + " --grid v_b=1:2:2 --set friction=\xc0\x80", 2,
+             "--set friction=\\xC0\\x80: expected UTF-8 text"}}) {
+    const Result r = runTribo(c.args);
+    EXPECT_EQ(r.status, c.status) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "s")) << c.args;
+  }
   // A folder that holds another sweep is refused, not mixed.
   const std::string quick = " --set duration=2 --set dt=0.008 --quiet";
   ASSERT_EQ(runTribo("sweep " + kBelt + out + " --list v_b=1,2" + quick).status, 0);

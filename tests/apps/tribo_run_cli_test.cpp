@@ -45,7 +45,11 @@ TEST_F(TriboRun, OutputsThatCannotFitAreRefusedNamingTheKeysAndNothingIsWritten)
         Case{"--set duration=1e7", "over duration 1e+07 s gives about 1e+10 rows"},
         Case{"--set duration=1e15 --set dt=0.1", "steps, more than the 1e+15 a run may take"},
         Case{"--set dt=1e300", "time_step (1e+300 s) is larger than the duration (60 s)"},
-        Case{"--set duration=inf", "parameters.duration"}}) {
+        Case{"--set duration=inf", "parameters.duration"},
+        // Not UTF-8: once the whole run, then exit 4 when summary.json was written.
+        Case{"--set friction=ab\xff",
+             "--set friction=ab\\xFF: expected UTF-8 text, found byte 0xFF"},
+        Case{"--set friction=\xed\xa0\x80", "a UTF-16 surrogate"}}) {
     const Result r = runTribo("run " + kBelt + " --out " + dir_.string() + " " + c.sets);
     EXPECT_EQ(r.status, 2) << c.sets << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.sets << "\n" << r.output;

@@ -219,7 +219,7 @@ TEST(SceneLoader, NumericParameterTakesOnlyNumbers) {
   const std::string belt = readFile(kBeltPath);
   EXPECT_TRUE(Has(e, "belt.yaml:" + std::to_string(lineOf(belt, "  k: 300")) + ":"));  // k's value
   EXPECT_TRUE(Has(e, "parameters.k"));
-  EXPECT_TRUE(Has(e, "parameter 'k': expected a number, got 'abc'"));
+  EXPECT_TRUE(Has(e, "parameter 'k': expected a number or an expression, got 'abc'"));
   EXPECT_TRUE(Has(errorOf([] { loadScene(kBeltPath, {"k=3e"}); }), "got '3e'"));
   EXPECT_TRUE(Has(errorOf([] { loadScene(kBeltPath, {"k=inf"}); }), "got 'inf'"));
 }

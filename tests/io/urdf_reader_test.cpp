@@ -112,7 +112,11 @@ TEST_F(UrdfReader, TextThatIsNotUtf8IsRefusedWithItsLine) {
   for (const std::string& text :
        {std::string("<robot name=\"a\xdf"),
         std::string("<robot name=\"a\">\n<link name=\"\x95\"/>"),
-        std::string("<robot name=\"a\">\n\n<link name=\"b") + '\0' + "\"/>"}) {
+        std::string("<robot name=\"a\">\n\n<link name=\"b") + '\0' + "\"/>",
+        // The shared check (io/utf8_check.hpp) is strict: overlong forms, surrogates and
+        // code points past U+10FFFF, which the URDF reader's own check once let through.
+        std::string("<robot name=\"a\xc0\x80\"/>"), std::string("<robot name=\"\xed\xa0\x80\"/>"),
+        std::string("<robot name=\"\xf4\x90\x80\x80\"/>")}) {
     try {
       readUrdfFromString(text, "mem.urdf");
       ADD_FAILURE() << "read: " << text;

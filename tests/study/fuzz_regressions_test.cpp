@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "fuzz/fuzz_inputs.hpp"
+#include "fuzz/scene_mutator.hpp"
 
 // assimp 5.2.5 (Debian 12) leaks about 2.5 kB when its ASCII STL reader throws on a malformed
 // file (fuzz/regressions/mesh_fuzzer/leak-stl-bad-keyword): a defect of the library, which
@@ -57,6 +59,29 @@ TEST(FuzzRegressions, UrdfTree) { replay("urdf_tree_fuzzer", urdfTree); }
 TEST(FuzzRegressions, Mesh) { replay("mesh_fuzzer", mesh); }
 TEST(FuzzRegressions, Hull) { replay("hull_fuzzer", hull); }
 TEST(FuzzRegressions, CliValues) { replay("cli_values_fuzzer", cliValues); }
+
+// The scene harness's structure-aware mutations (fuzz/scene_mutator.hpp) of every seed: the
+// same seed gives the same text, and the loader meets each with a scene or a SceneError.
+TEST(FuzzRegressions, SceneMutationsAreRepeatableAndEndInASceneOrItsError) {
+  std::size_t changed = 0, total = 0;
+  for (const auto& path : inputsOf("scene_yaml_fuzzer")) {
+    if (path.parent_path().filename() != "scene_yaml_fuzzer" ||
+        path.string().find("/corpus/") == std::string::npos)
+      continue;
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (unsigned seed = 1; seed <= 12; ++seed) {
+      SCOPED_TRACE(path.string() + " seed " + std::to_string(seed));
+      std::mt19937 a(seed), b(seed);
+      const std::string once = mutateScene(text, a);
+      EXPECT_EQ(once, mutateScene(text, b));
+      changed += once != text;
+      ++total;
+      EXPECT_NO_THROW(sceneYaml(reinterpret_cast<const std::uint8_t*>(once.data()), once.size()));
+    }
+  }
+  EXPECT_GT(changed, total / 2) << "most mutations change the text";
+}
 
 }  // namespace
 }  // namespace tribo::fuzz

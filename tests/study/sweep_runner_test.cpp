@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 
@@ -22,10 +23,15 @@ using test::TempDir;
 
 const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
 
+// The belt, quick: dt, output_interval and duration fixed unless an axis sweeps them (a
+// parameter both fixed and swept is an error).
 SweepSpec beltSpec(std::vector<SweepAxis> axes, std::vector<std::string> fixed = {}) {
   SweepSpec spec;
   spec.scene_path = kBelt;
-  spec.fixed_overrides = {"dt=0.008", "output_interval=0.008", "duration=20"};
+  for (const std::string name : {"dt=0.008", "output_interval=0.008", "duration=20"})
+    if (std::none_of(axes.begin(), axes.end(),
+                     [&](const SweepAxis& a) { return name.rfind(a.name + "=", 0) == 0; }))
+      spec.fixed_overrides.push_back(name);
   spec.fixed_overrides.insert(spec.fixed_overrides.end(), fixed.begin(), fixed.end());
   spec.axes = std::move(axes);
   return spec;
