@@ -19,7 +19,7 @@ HARNESSES=(scene_yaml_fuzzer urdf_fuzzer urdf_tree_fuzzer mesh_fuzzer cli_values
 # (scene 830/s, urdf 15000/s, mesh 4000/s since Tribo reads OBJ itself, cli 25000/s;
 # docs/fuzzing.md): about 2.5 minutes together, three times that at load 15.
 # urdf_tree_fuzzer: generated robots of up to 12 000 links, so its count is by the time
-# measured for it (docs/fuzzing.md): 21 inputs in 23 s from build-sanitize/ at load 4, most of
+# measured for it (docs/fuzzing.md): 21 inputs in 23 s from build-sanitize/ at load 5, most of
 # it the 12 000-link regressions and their mutations.
 declare -A FUZZ_RUNS=([scene_yaml_fuzzer]=40000 [urdf_fuzzer]=300000 [urdf_tree_fuzzer]=40
                       [mesh_fuzzer]=50000 [cli_values_fuzzer]=500000)
