@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -208,9 +210,16 @@ inline void cliValues(const std::uint8_t* data, std::size_t size) {
         // COUNT from 1e5 to kMaxPoints: skipped. Such grids are made value by value (a
         // million take 0.5 s in Release, longer under ASan) and only slow the fuzzer down; above
         // kMaxPoints they are refused before any value is made, and are fuzzed.
-        const std::string_view count = text.substr(text.rfind(':') + 1);
-        if (count.size() == 7 && count <= "1000000" && count > "100000") break;
-        if (count.size() == 6 && count > "100000") break;
+        // The count is read as the parser reads it (leading zeros included: "01000000" once
+        // slipped past a test of the text's length), its blanks around it trimmed.
+        std::string_view count = text.substr(text.rfind(':') + 1);
+        while (!count.empty() && std::isspace(static_cast<unsigned char>(count.front())))
+          count.remove_prefix(1);
+        while (!count.empty() && std::isspace(static_cast<unsigned char>(count.back())))
+          count.remove_suffix(1);
+        long points = 0;
+        const auto read = std::from_chars(count.data(), count.data() + count.size(), points);
+        if (read.ec == std::errc() && points > 100000 && points <= 1000000) break;
         spanGrid(study::parseGridAxis(text));
         break;
       }

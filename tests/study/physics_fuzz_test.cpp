@@ -19,6 +19,7 @@
 // one seed: TRIBO_PHYSICS_FUZZ_FIRST=1234 TRIBO_PHYSICS_FUZZ_SEEDS=1 (docs/fuzzing.md).
 // A failure prints the seed and the scene text.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -317,7 +318,9 @@ class SceneGenerator {
 
   // The tabulated law's curve: a few points rising to a peak and falling to a plateau.
   static std::string curveFile(double mu_s, double mu_k, double v_s) {
-    const fs::path path = fs::temp_directory_path() / "tribo_physics_fuzz_curve.csv";
+    // One file a process: CTest runs the test cases of this file side by side.
+    const fs::path path = fs::temp_directory_path() /
+                          ("tribo_physics_fuzz_curve_" + std::to_string(::getpid()) + ".csv");
     std::ofstream out(path);
     out.precision(17);
     out << "v,mu\n0,0\n"
