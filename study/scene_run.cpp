@@ -131,10 +131,12 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   }
   for (const std::string& note : droppedEquationNotes(model)) result.warnings.push_back(note);
   Simulator sim(scene.model);
-  if (options.profile) sim.setProfiling(true);
   sim.setStopRequest(options.stop);
   const auto start = std::chrono::steady_clock::now();
   result.trajectory.record(sim.state(), sim.current());
+  // The profile is of the steps: the first row's evaluation (cold, outside any step) would
+  // count in the stages and not in the step.
+  if (options.profile) sim.setProfiling(true);
   // The state of the last row: an interrupted run goes back to it, so the trajectory ends
   // at the state the result reports and its rows are those of an uninterrupted run.
   State row_state = sim.state();
