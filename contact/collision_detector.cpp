@@ -164,6 +164,8 @@ struct CollisionDetector::Impl {
   std::unique_ptr<const PairRule> rule;  // pairs on demand (null with a list)
   CollisionOptions options;
   bool any_fcl_pair = false;
+  bool narrowphase_reaches_fcl = false;     // some pair may go to fcl::collide
+  std::unique_ptr<QueryWatchdog> watchdog;  // null unless watchQueries() started one
   std::vector<std::unique_ptr<TrackedObject>> objects;
   std::unordered_map<std::uint64_t, int> pair_index;  // listed: geometry pair -> pair
   fcl::DynamicAABBTreeCollisionManagerd manager;
@@ -202,6 +204,7 @@ struct CollisionDetector::Impl {
       return;
     }
     if (lanes.size() < static_cast<std::size_t>(team)) lanes.resize(static_cast<std::size_t>(team));
+    if (watchdog) watchdog->reserveLanes(team);
     const std::size_t base = out.size();
 #pragma omp parallel num_threads(team)
     {
@@ -302,11 +305,14 @@ struct CollisionDetector::Impl {
     fcl::CollisionResultd& result = lane.result;
     {
       const FclScope scope(timing ? &lane.fcl_seconds : nullptr);
+      const int lane_index = static_cast<int>(&lane - lanes.data());
+      if (watchdog) watchdog->begin(lane_index, a, b);
       result.clear();
       if (swap)
         fcl::collide(objects[b].get(), objects[a].get(), request, result);
       else
         fcl::collide(objects[a].get(), objects[b].get(), request, result);
+      if (watchdog) watchdog->end(lane_index);
     }
     const auto first = out.size();
     for (std::size_t i = 0; i < result.numContacts(); ++i) {
@@ -409,6 +415,28 @@ void CollisionDetector::Impl::setUp() {
       if (isPolyhedron(shapes[g]) && (any_mesh || shapes[g].type != ShapeType::kBox))
         polyhedra[g] = makePolyhedron(shapes[g]);
   }
+  narrowphase_reaches_fcl = any_fcl_pair;
+  if (rule) {
+    // Any two geometries may be asked: some pair reaches FCL when two of the present shape
+    // types (a type with itself when it occurs twice) have no closed form.
+    std::vector<int> first_of(8, -1), second_of(8, -1);
+    for (int g = 0; g < n; ++g) {
+      auto& slot = first_of[static_cast<std::size_t>(shapes[g].type)];
+      if (slot < 0)
+        slot = g;
+      else if (second_of[static_cast<std::size_t>(shapes[g].type)] < 0)
+        second_of[static_cast<std::size_t>(shapes[g].type)] = g;
+    }
+    for (std::size_t s = 0; s < first_of.size(); ++s)
+      for (std::size_t t = s; t < first_of.size(); ++t) {
+        const int a = first_of[s], b = s == t ? second_of[t] : first_of[t];
+        if (a < 0 || b < 0) continue;
+        if (shapes[a].type == ShapeType::kHalfSpace && shapes[b].type == ShapeType::kHalfSpace)
+          continue;
+        narrowphase_reaches_fcl =
+            narrowphase_reaches_fcl || fcl_kind(classify(a, b)) || fcl_kind(classify(b, a));
+      }
+  }
   any_fcl_pair = any_fcl_pair || rule != nullptr;
   for (int g = 0; g < n; ++g) {
     objects.push_back(needed[g] ? std::make_unique<TrackedObject>(makeFclGeometry(shapes[g]))
@@ -480,6 +508,15 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
 CollisionDetector::~CollisionDetector() = default;
 CollisionDetector::CollisionDetector(CollisionDetector&&) noexcept = default;
 CollisionDetector& CollisionDetector::operator=(CollisionDetector&&) noexcept = default;
+
+bool CollisionDetector::watchQueries(double limit_seconds,
+                                     QueryWatchdog::OverrunHandler on_overrun) {
+  Impl& m = *impl_;
+  if (!m.narrowphase_reaches_fcl || m.watchdog) return m.watchdog != nullptr;
+  m.watchdog = std::make_unique<QueryWatchdog>(limit_seconds, std::move(on_overrun),
+                                               static_cast<int>(m.lanes.size()));
+  return true;
+}
 
 void CollisionDetector::setTiming(bool timing) { impl_->timing = timing; }
 void CollisionDetector::setThreads(int threads) { impl_->threads = std::max(1, threads); }

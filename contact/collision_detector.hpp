@@ -29,6 +29,7 @@
 
 #include "contact/contact_point.hpp"
 #include "contact/primitive_contacts.hpp"
+#include "contact/query_watchdog.hpp"
 #include "contact/shape.hpp"
 
 namespace tribo::contact {
@@ -49,6 +50,10 @@ struct CollisionOptions {
   // contact continues the previous step's nearest contact of the same pair within this
   // distance [m] (contact/stick_anchor.hpp).
   double match_radius = 0.01;
+  // The longest one FCL narrowphase query may run [s] before the run is ended naming the
+  // pair (contact/query_watchdog.hpp; a legitimate query takes microseconds to
+  // milliseconds). 0 (or not finite): not watched.
+  double query_time_limit = 60.0;
 };
 
 // Which two geometries may touch, decided per pair the broadphase reports: their pair id
@@ -82,6 +87,13 @@ class CollisionDetector {
   // pairs are split in contiguous runs, each thread's points joined in pair order, so the
   // output is the same bit for bit for any count. Few candidates use one thread.
   void setThreads(int threads);
+
+  // A time limit on each FCL narrowphase query (contact/query_watchdog.hpp): one that runs
+  // longer than `limit_seconds` calls `on_overrun` with the pair's geometries, from a
+  // watchdog thread, and that handler must end the process. Started only when some pair can
+  // reach FCL's narrowphase (no thread for boxes, spheres and half-spaces with their closed
+  // forms); returns whether it was. Call before the first detect(), at most once.
+  bool watchQueries(double limit_seconds, QueryWatchdog::OverrunHandler on_overrun);
 
   // Wall time spent inside FCL (broadphase and FCL narrowphase) since construction [s];
   // measured only when `timing` is on (it costs two clock reads per call).

@@ -16,6 +16,9 @@
 // Results land in the Workspace, split by source. With profiling on, each stage's wall time
 // is added to a StageProfile (core/stage_profile.hpp); off, no clock is read. After a step,
 // advanceFrictionStates lets stateful friction laws move their anchors.
+// A collision query that never returns (contact/query_watchdog.hpp, limit in
+// CollisionOptions::query_time_limit) ends the process with kQueryOverrunStatus, naming the
+// two geometries and their bodies.
 // Not here: time stepping (core/integrator.hpp), run control and divergence checks
 // (core/simulator.hpp).
 #pragma once
@@ -34,6 +37,9 @@
 #include "friction/dynamic_law.hpp"
 
 namespace tribo {
+
+// Exit status of a process ended by the collision-query watchdog (README, "Exit status").
+inline constexpr int kQueryOverrunStatus = 7;
 
 class Dynamics {
  public:

@@ -26,7 +26,7 @@ inline const List kBaumgarte{"alpha", "beta"};
 inline const List kCollision{
     "broadphase",          "closed_form_box_halfspace", "closed_form_primitives",
     "polyhedron_manifold", "max_points_per_pair",       "joined_bodies_collide",
-    "match_radius"};
+    "match_radius",        "query_time_limit"};
 inline const List kConstraints{"projection", "tolerance", "iterations",      "project_initial",
                                "redundant",  "solver",    "sparse_threshold"};
 inline const List kBody{"name",        "kind", "mass",     "inertia",          "position",

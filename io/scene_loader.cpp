@@ -7,7 +7,7 @@
 //                 [threads: auto | N >= 1]   (threads of one force evaluation)
 //                 [collision: {[broadphase], [closed_form_box_halfspace],
 //                  [closed_form_primitives], [polyhedron_manifold], [max_points_per_pair],
-//                  [joined_bodies_collide], [match_radius]}]
+//                  [joined_bodies_collide], [match_radius], [query_time_limit]}]
 //   bodies: - name [kind: dynamic|kinematic] mass (dynamic) [inertia: 3 or 6 values]
 //             [position] [orientation: w x y z | rpy: roll pitch yaw] [velocity]
 //             [angular_velocity] [surface_velocity] [geometry: - name shape [size]
@@ -467,6 +467,7 @@ class Loader {
       if (auto a = c.get("polyhedron_manifold")) o.collision.polyhedron_manifold = a->flag();
       if (auto a = c.get("joined_bodies_collide")) o.collision.joined_bodies_collide = a->flag();
       if (auto a = c.get("match_radius")) o.collision.match_radius = a->positive();
+      if (auto a = c.get("query_time_limit")) o.collision.query_time_limit = a->nonNegative();
     }
   }
 

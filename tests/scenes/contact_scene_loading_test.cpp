@@ -128,7 +128,7 @@ TEST(ContactScenes, EveryCollisionOptionKeyReachesTheModel) {
 simulation:
   collision: {broadphase: true, closed_form_box_halfspace: false, closed_form_primitives: false,
               polyhedron_manifold: false, max_points_per_pair: 3, joined_bodies_collide: true,
-              match_radius: 0.002}
+              match_radius: 0.002, query_time_limit: 2.5}
 bodies:
   - {name: a, mass: 1, geometry: [{name: ga, shape: sphere, radius: 0.1}]}
 )";
@@ -144,6 +144,14 @@ bodies:
   EXPECT_EQ(c.max_points_per_pair, 3);
   EXPECT_TRUE(c.joined_bodies_collide);
   EXPECT_EQ(c.match_radius, 0.002);
+  EXPECT_EQ(c.query_time_limit, 2.5);
+  EXPECT_EQ(defaults.query_time_limit, 60.0);
+  for (const char* bad : {"-1", "nan", "x"})
+    EXPECT_NE(test::sceneErrorOf(test::replaced(text, "query_time_limit: 2.5",
+                                                std::string("query_time_limit: ") + bad))
+                  .find("simulation.collision.query_time_limit"),
+              std::string::npos)
+        << bad;
   EXPECT_NE(test::sceneErrorOf(
                 test::replaced(text, "polyhedron_manifold: false", "polyhedron_manifold: 2"))
                 .find("simulation.collision.polyhedron_manifold: expected true or false"),
