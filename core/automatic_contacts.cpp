@@ -1,6 +1,7 @@
 #include "core/automatic_contacts.hpp"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 
 #include "core/model.hpp"
@@ -12,6 +13,16 @@ std::uint64_t bodyPairKey(BodyIndex a, BodyIndex b) {
   auto y = static_cast<std::uint64_t>(static_cast<std::uint32_t>(b.value));
   if (x > y) std::swap(x, y);
   return (x << 32) | y;
+}
+
+std::uint64_t surfacePairKey(int a, int b) { return bodyPairKey(BodyIndex{a}, BodyIndex{b}); }
+
+int surfacePairMaterial(const AutomaticContacts& rule, int a, int b) {
+  const std::uint64_t key = surfacePairKey(a, b);
+  const auto it = std::lower_bound(
+      rule.pair_material.begin(), rule.pair_material.end(), key,
+      [](const std::pair<std::uint64_t, int>& e, std::uint64_t k) { return e.first < k; });
+  return it != rule.pair_material.end() && it->first == key ? it->second : rule.default_material;
 }
 
 int automaticPairId(const Model& model, int g, int h) {
@@ -35,8 +46,7 @@ ContactPair automaticPair(const Model& model, int id) {
   const bool swap = !rule.dynamic[g]   ? false
                     : !rule.dynamic[h] ? true
                                        : !rule.plane[g] && rule.plane[h];
-  const int material = rule.material[static_cast<std::size_t>(rule.surface[g] * rule.surface_count +
-                                                              rule.surface[h])];
+  const int material = surfacePairMaterial(rule, rule.surface[g], rule.surface[h]);
   return swap ? ContactPair{h, g, material} : ContactPair{g, h, material};
 }
 
@@ -62,28 +72,43 @@ std::vector<ContactPair> allAutomaticPairs(const Model& model) {
 std::vector<ContactPair> representativeAutomaticPairs(const Model& model) {
   const AutomaticContacts& rule = model.automatic;
   const int n = rule.geometry_count;
-  auto mass = [&](int g) {
-    return model.bodies[model.geometries[static_cast<std::size_t>(g)].body.value].mass;
+  auto geometry = [&](int g) -> const Geometry& {
+    return model.geometries[static_cast<std::size_t>(g)];
   };
-  // Dynamic geometries of each surface, lightest body first.
-  std::vector<std::vector<int>> by_surface(static_cast<std::size_t>(rule.surface_count));
+  auto mass = [&](int g) { return model.bodies[geometry(g).body.value].mass; };
+  // Dynamic geometries by collision filter (group, mask), then by surface, lightest body
+  // first. A geometry looks only into the filters it may touch: a robot's links (a surface
+  // each, in one filter that leaves itself out) cost one look each, not one per link.
+  using Filter = std::pair<std::uint32_t, std::uint32_t>;
+  std::map<Filter, std::map<int, std::vector<int>>> by_filter;
   std::vector<int> fixed;
-  for (int g = 0; g < n; ++g)
-    (rule.dynamic[g] ? by_surface[static_cast<std::size_t>(rule.surface[g])] : fixed).push_back(g);
-  for (auto& list : by_surface)
-    std::stable_sort(list.begin(), list.end(), [&](int x, int y) { return mass(x) < mass(y); });
+  for (int g = 0; g < n; ++g) {
+    if (!rule.dynamic[g]) {
+      fixed.push_back(g);
+      continue;
+    }
+    const Geometry& geo = geometry(g);
+    by_filter[{geo.collision_group, geo.collision_mask}][rule.surface[g]].push_back(g);
+  }
+  for (auto& [filter, by_surface] : by_filter)
+    for (auto& [surface, list] : by_surface)
+      std::stable_sort(list.begin(), list.end(), [&](int x, int y) { return mass(x) < mass(y); });
   constexpr std::size_t kTried = 64;
   std::vector<int> ids;
   for (int g = 0; g < n; ++g) {
     if (!rule.dynamic[g]) continue;
     for (int f : fixed)
       if (const int id = automaticPairId(model, g, f); id >= 0) ids.push_back(id);
-    for (const auto& list : by_surface)
-      for (std::size_t i = 0; i < std::min(list.size(), kTried); ++i)
-        if (const int id = automaticPairId(model, g, list[i]); id >= 0) {
-          ids.push_back(id);
-          break;
-        }
+    const Geometry& geo = geometry(g);
+    for (const auto& [filter, by_surface] : by_filter) {
+      if (!(geo.collision_group & filter.second) || !(filter.first & geo.collision_mask)) continue;
+      for (const auto& [surface, list] : by_surface)
+        for (std::size_t i = 0; i < std::min(list.size(), kTried); ++i)
+          if (const int id = automaticPairId(model, g, list[i]); id >= 0) {
+            ids.push_back(id);
+            break;
+          }
+    }
   }
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());

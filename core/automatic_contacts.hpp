@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/body.hpp"
@@ -29,13 +30,21 @@ struct AutomaticContacts {
   std::vector<std::uint8_t> dynamic;  // per geometry: on a dynamic body
   std::vector<std::uint8_t> plane;    // per geometry: a half-space
   int surface_count = 0;
-  std::vector<int> material;          // surface x surface -> material (-1: none)
+  // The surface pairs given a material, sorted by surfacePairKey, and the material of every
+  // other pair (-1: none). Sparse: a robot's links are a surface each (io/urdf_model.cpp),
+  // and a dense surface x surface table grew with the square of the links (1.6 GB at 20 000).
+  std::vector<std::pair<std::uint64_t, int>> pair_material;
+  int default_material = -1;
   std::vector<std::uint64_t> joined;  // sorted keys of body pairs joined by a joint
   bool joined_bodies_collide = false;
 };
 
 // The key of two bodies in AutomaticContacts::joined (either order).
 std::uint64_t bodyPairKey(BodyIndex a, BodyIndex b);
+// The key of two surface indices in AutomaticContacts::pair_material (either order).
+std::uint64_t surfacePairKey(int a, int b);
+// The material of surfaces a and b (either order): theirs, else the default.
+int surfacePairMaterial(const AutomaticContacts& rule, int a, int b);
 
 // The most geometries automatic contacts take (pair ids are ints).
 inline constexpr int kMaxAutomaticGeometries = 46340;
@@ -50,10 +59,13 @@ ContactPair automaticPair(const Model& model, int id);
 // per-pair integrator events); quadratic in the geometries.
 std::vector<ContactPair> allAutomaticPairs(const Model& model);
 
-// The pairs the stable-step estimate bounds (core/stability.hpp), linear in the geometries:
-// each dynamic geometry with every non-dynamic one it may touch, and with the lightest
-// dynamic partner of each surface it may touch (the smallest reduced mass, so the stiffest
-// test system of that material; the first 64 candidates by mass are tried).
+// The pairs the stable-step estimate bounds (core/stability.hpp): each dynamic geometry with
+// every non-dynamic one it may touch, and with the lightest dynamic partner of each surface
+// it may touch (the smallest reduced mass, so the stiffest test system of that material; the
+// first 64 candidates by mass are tried, per collision filter and surface). Linear in the
+// geometries when few surfaces share a filter that touches itself: a URDF robot's links are
+// a surface each, in a filter that leaves itself out; the same links with self-collision
+// would cost geometries x links.
 std::vector<ContactPair> representativeAutomaticPairs(const Model& model);
 
 // Every pair (listed) or the representative ones (automatic): what set-up checks go over.

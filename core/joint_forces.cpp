@@ -11,7 +11,15 @@ constexpr int kMaxFrictionIterations = 20;
 constexpr double kFrictionTolerance = 1e-12;
 }  // namespace
 
-double coordinateInertia(const Model& model, int joint) {
+std::vector<int> jointOfChild(const Model& model) {
+  std::vector<int> table(model.bodies.size(), -1);
+  for (std::size_t k = 0; k < model.joints.size(); ++k)
+    if (const BodyIndex c = model.joints[k].child; !c.isWorld())
+      table[static_cast<std::size_t>(c.value)] = static_cast<int>(k);
+  return table;
+}
+
+double coordinateInertia(const Model& model, int joint, std::span<const int> joint_of_child) {
   const Joint& j = model.joints[joint];
   const bool angular = jointCoordinate(j).angular;
   const auto dynamic = [&](BodyIndex b) {
@@ -42,9 +50,9 @@ double coordinateInertia(const Model& model, int joint) {
   if (!dynamic(j.parent)) return c;
   // The parent gives way when it is free, or turns (slides) on a joint of its own along a
   // parallel axis (a chain of fingers): then the pair's reduced inertia.
-  const Joint* below = nullptr;
-  for (const Joint& k : model.joints)
-    if (k.child == j.parent) below = &k;
+  const int below_index = joint_of_child[static_cast<std::size_t>(j.parent.value)];
+  const Joint* below =
+      below_index >= 0 ? &model.joints[static_cast<std::size_t>(below_index)] : nullptr;
   double p = std::numeric_limits<double>::infinity();
   if (!below) {
     p = angular ? about(j.parent, model.bodies[j.parent.value].position, axis)
@@ -73,6 +81,7 @@ std::vector<int> jointFrictionStateOffsets(const Model& model) {
 
 JointForces::JointForces(const Model& model) {
   const std::vector<int> offsets = jointFrictionStateOffsets(model);
+  const std::vector<int> joint_of_child = jointOfChild(model);
   const IntegratorType integrator = model.options.integrator;
   const bool fixed_step =
       integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
@@ -84,7 +93,8 @@ JointForces::JointForces(const Model& model) {
     e.coordinate = jointCoordinate(joint);
     e.elements = &joint.elements;
     if (fixed_step && model.options.time_step > 0.0)
-      e.max_slope = kDissipativeSlopeShare * coordinateInertia(model, j) / model.options.time_step;
+      e.max_slope = kDissipativeSlopeShare * coordinateInertia(model, j, joint_of_child) /
+                    model.options.time_step;
     const auto& f = joint.elements.friction;
     if (f && (e.dynamic = f->law->dynamic()) != nullptr) {
       e.state = offsets[static_cast<std::size_t>(j)];

@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "core/constraint_rows.hpp"
@@ -52,7 +53,10 @@ namespace tribo {
 // (bodies beyond the child only add inertia) unless it gives way about the same axis: a
 // free parent, or one on a joint of the same type along a parallel axis (a chain of light
 // fingers), makes it the pair's reduced inertia I_p I_c / (I_p + I_c).
-double coordinateInertia(const Model& model, int joint);
+double coordinateInertia(const Model& model, int joint, std::span<const int> joint_of_child);
+// Per body: the last joint whose child it is (-1: none), the table coordinateInertia reads
+// (made once, so that all joints' inertias cost O(joints), not O(joints^2)).
+std::vector<int> jointOfChild(const Model& model);
 
 // c_max = kDissipativeSlopeShare I_q / h (see above).
 constexpr double kDissipativeSlopeShare = 0.5;

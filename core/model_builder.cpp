@@ -154,10 +154,10 @@ void ModelBuilder::addSurfacePairMaterial(const std::string& surface_a,
   const std::string who = "surface pair (" + surface_a + ", " + surface_b + ")";
   if (material < 0 || material >= static_cast<int>(model_.materials.size()))
     throw ModelError(who + ": material index out of range");
-  for (const auto& e : surface_materials_)
-    if ((e.surface_a == surface_a && e.surface_b == surface_b) ||
-        (e.surface_a == surface_b && e.surface_b == surface_a))
-      throw ModelError(who + ": a material for this surface pair is already given");
+  // Keyed by the two names in order, each prefixed by its length (names may hold any byte).
+  const auto& [first, second] = std::minmax(surface_a, surface_b);
+  if (!surface_pairs_.insert(std::to_string(first.size()) + ":" + first + second).second)
+    throw ModelError(who + ": a material for this surface pair is already given");
   surface_materials_.push_back({surface_a, surface_b, material});
 }
 
@@ -176,27 +176,23 @@ void ModelBuilder::addAutomaticContacts(Model& model) const {
   AutomaticContacts& rule = model.automatic;
   rule.geometry_count = n;
   rule.joined_bodies_collide = model.options.collision.joined_bodies_collide;
-  std::vector<std::string> surfaces;
+  std::unordered_map<std::string, int> surfaces;  // name -> index, in order of first use
   for (const Geometry& g : model.geometries) {
-    auto it = std::find(surfaces.begin(), surfaces.end(), g.surface);
-    if (it == surfaces.end()) it = surfaces.insert(surfaces.end(), g.surface);
-    rule.surface.push_back(static_cast<int>(it - surfaces.begin()));
+    const auto it = surfaces.try_emplace(g.surface, static_cast<int>(surfaces.size())).first;
+    rule.surface.push_back(it->second);
     rule.dynamic.push_back(!g.body.isWorld() &&
                            model.bodies[g.body.value].kind == BodyKind::kDynamic);
     rule.plane.push_back(g.shape.type == contact::ShapeType::kHalfSpace);
   }
-  const int ns = static_cast<int>(surfaces.size());
-  rule.surface_count = ns;
-  rule.material.assign(static_cast<std::size_t>(ns * ns), default_material_);
+  rule.surface_count = static_cast<int>(surfaces.size());
+  rule.default_material = default_material_;
   for (const auto& e : surface_materials_) {
-    const auto a = std::find(surfaces.begin(), surfaces.end(), e.surface_a);
-    const auto b = std::find(surfaces.begin(), surfaces.end(), e.surface_b);
+    const auto a = surfaces.find(e.surface_a);
+    const auto b = surfaces.find(e.surface_b);
     if (a == surfaces.end() || b == surfaces.end()) continue;
-    const auto i = static_cast<std::size_t>(a - surfaces.begin());
-    const auto j = static_cast<std::size_t>(b - surfaces.begin());
-    rule.material[i * static_cast<std::size_t>(ns) + j] = e.material;
-    rule.material[j * static_cast<std::size_t>(ns) + i] = e.material;
+    rule.pair_material.emplace_back(surfacePairKey(a->second, b->second), e.material);
   }
+  std::sort(rule.pair_material.begin(), rule.pair_material.end());
   if (!rule.joined_bodies_collide)
     for (const Joint& j : model.joints) rule.joined.push_back(bodyPairKey(j.parent, j.child));
   std::sort(rule.joined.begin(), rule.joined.end());

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/model.hpp"
 
@@ -116,7 +117,8 @@ class ModelBuilder {
   Model model_;
   SimulationOptions options_;
   // Name -> index, so that adding n bodies and geometries costs O(n), not O(n^2).
-  std::unordered_map<std::string, int> body_index_, geometry_index_;
+  std::unordered_map<std::string, int> body_index_, geometry_index_, joint_index_;
+  std::unordered_set<std::string> surface_pairs_;  // surface pairs given a material
 };
 
 }  // namespace tribo

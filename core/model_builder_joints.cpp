@@ -39,6 +39,7 @@ int ModelBuilder::pushJoint(Joint joint) {
   if (joint.child.isWorld() || c.kind != BodyKind::kDynamic)
     throw ModelError(who + ": the child must be a dynamic body");
   if (joint.parent == joint.child) throw ModelError(who + ": parent and child are the same body");
+  joint_index_.emplace(joint.name, static_cast<int>(model_.joints.size()));
   model_.joints.push_back(std::move(joint));
   return static_cast<int>(model_.joints.size()) - 1;
 }
@@ -205,8 +206,7 @@ int ModelBuilder::addJointCoupling(const std::string& name, int leader, int foll
 }
 
 std::optional<int> ModelBuilder::findJoint(const std::string& name) const {
-  for (std::size_t i = 0; i < model_.joints.size(); ++i)
-    if (model_.joints[i].name == name) return static_cast<int>(i);
+  if (const auto it = joint_index_.find(name); it != joint_index_.end()) return it->second;
   return std::nullopt;
 }
 

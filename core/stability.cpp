@@ -504,11 +504,12 @@ StabilityReport estimateStableStep(const Model& model) {
   const bool fixed_step =
       integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
   const double h = model.options.time_step;
+  const std::vector<int> joint_of_child = jointOfChild(model);
   for (int ji = 0; ji < static_cast<int>(model.joints.size()); ++ji) {
     const Joint& joint = model.joints[ji];
     const JointElements& el = joint.elements;
     if (!hasScalarCoordinate(joint.type) || !el.hasForces()) continue;
-    const double inertia = coordinateInertia(model, ji);
+    const double inertia = coordinateInertia(model, ji, joint_of_child);
     if (!(inertia > 0.0) || std::isinf(inertia)) continue;
     const double cap = fixed_step && h > 0.0 ? kDissipativeSlopeShare * inertia / h
                                              : std::numeric_limits<double>::infinity();

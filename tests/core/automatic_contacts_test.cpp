@@ -205,6 +205,67 @@ TEST(AutomaticContacts, PairsFollowTheDocumentedRuleOverRandomModels) {
   EXPECT_GT(checked, 30);
 }
 
+// A surface per link, as a URDF robot has (io/urdf_model.cpp): every link's pair with the
+// ground has its own material, some link pairs one of theirs, the rest the default. The
+// materials follow the documented rule at every size; with the robot's filter (its links
+// leave each other out) the stable step's representatives are exactly the links on the
+// ground, and with self-collision each link also meets a lighter link.
+TEST(AutomaticContacts, ASurfacePerLinkGetsEachPairsMaterialAtEverySize) {
+  for (const int links : {3, 40, 400}) {
+    for (const bool self_collision : {false, true}) {
+      ModelBuilder b;
+      std::map<std::pair<std::string, std::string>, int> by_surface;
+      const int fallback = b.addMaterial(material(0.2));
+      b.setDefaultMaterial(fallback);
+      b.setGeometrySurface(b.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace()),
+                           "ground");
+      for (int i = 0; i < links; ++i) {
+        Body body;
+        body.name = numbered("link", i);
+        body.mass = 1.0 + i;
+        body.position = Vec3(0.3 * i, 0, 0.5);
+        const int g = b.addGeometry(numbered("box", i), b.addBody(body),
+                                    contact::Shape::box(Vec3(0.1, 0.1, 0.1)));
+        const std::string surface = numbered("link", i);
+        b.setGeometrySurface(g, surface);
+        if (!self_collision) b.setCollisionFilter(g, 2u, ~2u);
+        const int mine = b.addMaterial(material(0.3 + 0.001 * i));
+        b.addSurfacePairMaterial(surface, "ground", mine);
+        by_surface[{surface, "ground"}] = mine;
+        if (i % 7 == 3) {  // one pair between links, given in either order
+          const int between = b.addMaterial(material(0.9));
+          const std::string other = numbered("link", i - 1);
+          if (i % 2)
+            b.addSurfacePairMaterial(other, surface, between);
+          else
+            b.addSurfacePairMaterial(surface, other, between);
+          by_surface[{other, surface}] = between;
+        }
+      }
+      EXPECT_THROW(b.addSurfacePairMaterial("ground", "link0", fallback), ModelError);
+      const auto model = b.build();
+      const std::vector<Reference> expected = referencePairs(*model, by_surface, fallback);
+      std::vector<Reference> got;
+      for (const ContactPair& p : allAutomaticPairs(*model))
+        got.push_back({p.geometry_a, p.geometry_b, p.material});
+      ASSERT_EQ(got, expected) << links << " links, self-collision " << self_collision;
+      const std::vector<ContactPair> representatives = representativeAutomaticPairs(*model);
+      int on_ground = 0, between_links = 0;
+      for (const ContactPair& p : representatives) {
+        EXPECT_NE(std::find(expected.begin(), expected.end(),
+                            Reference{p.geometry_a, p.geometry_b, p.material}),
+                  expected.end());
+        (p.geometry_a == 0 ? on_ground : between_links) += 1;
+      }
+      EXPECT_EQ(on_ground, links);
+      if (self_collision)
+        EXPECT_GE(between_links, links - 1);  // each link with the lightest other one at least
+      else
+        EXPECT_EQ(between_links, 0);
+    }
+  }
+}
+
 // A pile of boxes and spheres of several sizes and masses dropped on the ground and on each
 // other; `listed` gives every pair the rule gives, in the same order, as listed contacts.
 std::shared_ptr<const Model> pile(int count, double size, bool listed) {

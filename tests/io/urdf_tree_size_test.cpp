@@ -15,38 +15,15 @@
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/urdf_xml_checks.hpp"
+#include "support/urdf_tree_text.hpp"
 
 namespace tribo::io {
 namespace {
 
-std::string linkName(int i) {
-  std::string name = "l";
-  name += std::to_string(i);
-  return name;
-}
+using test::urdfLinkName;
 
-// n links; link i > 0 hangs from link parent(i) on a revolute joint 0.1 m above it.
-template <class Parent>
-std::string tree(int n, Parent parent) {
-  std::string s = "<robot name=\"big\">\n";
-  for (int i = 0; i < n; ++i)
-    s += "<link name=\"" + linkName(i) +
-         "\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" "
-         "iyz=\"0\" izz=\"1\"/></inertial></link>\n";
-  for (int i = 1; i < n; ++i)
-    s += "<joint name=\"j" + std::to_string(i) + "\" type=\"revolute\"><parent link=\"" +
-         linkName(parent(i)) + "\"/><child link=\"" + linkName(i) +
-         "\"/><origin xyz=\"0 0 0.1\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" "
-         "effort=\"1\" velocity=\"1\"/></joint>\n";
-  return s + "</robot>\n";
-}
-
-std::string chain(int n) {
-  return tree(n, [](int i) { return i - 1; });
-}
-std::string wide(int n) {
-  return tree(n, [](int) { return 0; });
-}
+std::string chain(int n) { return test::urdfChain(n); }
+std::string wide(int n) { return test::urdfWide(n); }
 
 std::string errorOf(const std::string& text, const std::string& name) {
   try {
@@ -70,7 +47,7 @@ void expectTree(const UrdfRobot& r, int n, Parent parent) {
   ASSERT_EQ(position.size(), static_cast<std::size_t>(n));  // no link twice
   for (const UrdfJoint& j : r.joints) {
     const int child = std::stoi(j.child.substr(1));
-    EXPECT_EQ(j.parent, linkName(parent(child))) << j.name;
+    EXPECT_EQ(j.parent, urdfLinkName(parent(child))) << j.name;
     EXPECT_LT(position.at(j.parent), position.at(j.child)) << j.name;
   }
   EXPECT_DOUBLE_EQ(r.totalMass(), n);
@@ -83,7 +60,7 @@ TEST(UrdfTreeSize, ChainsOfTenToThirtyThousandLinksLoad) {
     const UrdfRobot r = readUrdfFromString(chain(n), "chain.urdf");
     expectTree(r, n, [](int i) { return i - 1; });
     // A chain is read in its order: link i after link i - 1.
-    for (int i = 0; i < n; ++i) ASSERT_EQ(r.links[i].name, linkName(i));
+    for (int i = 0; i < n; ++i) ASSERT_EQ(r.links[i].name, urdfLinkName(i));
   }
 }
 
@@ -113,7 +90,7 @@ TEST(UrdfTreeSize, LongChainAssemblesAndBuilds) {
 TEST(UrdfTreeSize, MoreLinksThanTheLimitAreRefusedWithCountAndLimit) {
   const int n = static_cast<int>(kMaxUrdfLinks) + 1;
   std::string text = "<robot name=\"big\">";
-  for (int i = 0; i < n; ++i) text += "<link name=\"" + linkName(i) + "\"/>";
+  for (int i = 0; i < n; ++i) text += "<link name=\"" + urdfLinkName(i) + "\"/>";
   text += "</robot>";
   const std::string e = errorOf(text, "many.urdf");
   EXPECT_NE(e.find("many.urdf: " + std::to_string(n) + " links: expected at most " +
@@ -151,7 +128,8 @@ TEST(UrdfTreeSize, LoopsAndSecondRootsInLongChainsAreRefused) {
     // The chain's root hung from its last link: a loop through every link.
     std::string loop = chain(n);
     loop.insert(loop.find("</robot>"), "<joint name=\"back\" type=\"fixed\"><parent link=\"" +
-                                           linkName(n - 1) + "\"/><child link=\"l0\"/></joint>\n");
+                                           urdfLinkName(n - 1) +
+                                           "\"/><child link=\"l0\"/></joint>\n");
     const std::string e = errorOf(loop, "loop.urdf");
     EXPECT_NE(e.find("closes the kinematic loop"), std::string::npos) << e.substr(0, 300);
     EXPECT_LT(e.size(), 600u) << "a long loop is told by its ends";
