@@ -419,7 +419,8 @@ void CollisionDetector::Impl::setUp() {
   if (rule) {
     // Any two geometries may be asked: some pair reaches FCL when two of the present shape
     // types (a type with itself when it occurs twice) have no closed form.
-    std::vector<int> first_of(8, -1), second_of(8, -1);
+    constexpr auto kTypes = static_cast<std::size_t>(ShapeType::kTriangleMesh) + 1;
+    std::vector<int> first_of(kTypes, -1), second_of(kTypes, -1);
     for (int g = 0; g < n; ++g) {
       auto& slot = first_of[static_cast<std::size_t>(shapes[g].type)];
       if (slot < 0)
