@@ -2,21 +2,36 @@
 // state carried from the frame it is stored in to the contact's current frame, and the
 // force and state rate there.
 //
-// Tangent-vector states are stored against the normal n0 of the record (StickAnchor::normal)
+// Each contact point under a dynamic law has a FrictionStateRecord: which contact it is
+// (contact/contact_identity.hpp), where its state z lies in State::friction_values, and the
+// normal its tangent vectors are stored against.
+// Tangent-vector states are stored against the normal n0 of the record
 // and turned with the contact frame by the smallest rotation taking n0 to the current normal
 // n (Rodrigues, with c = n0 x n, d = n0 . n):
 //   R v = v + c x v + c x (c x v) / (1 + d)
 // exactly the identity when n == n0; the rate is turned back by R^T so that it adds to the
 // stored numbers. A normal that flipped (d <= -1 + 1e-12) projects instead of rotating.
-// Not here: which record a contact continues (contact/stick_anchor.hpp), the step (core/).
+// Not here: when records are made and states advanced (core/friction_states.hpp).
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 
 #include "contact/contact_point.hpp"
 #include "friction/dynamic_law.hpp"
 
 namespace tribo::contact {
+
+// The record of one contact point's internal state.
+struct FrictionStateRecord {
+  std::uint64_t key = 0;                               // contact identity: (pair << 32) | slot
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // world contact point when set [m]
+  int state = 0;                                       // where z starts in State::friction_values
+  int state_size = 0;  // how many numbers z has (the law's stateSize())
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // the frame of z's tangent vectors
+
+  bool operator==(const FrictionStateRecord&) const = default;
+};
 
 // Largest number of internal-state values a law may declare (scratch sizes).
 constexpr int kMaxFrictionState = 96;

@@ -1,14 +1,10 @@
 #include "core/dynamics.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
 
-#include "contact/dynamic_friction.hpp"
 #include "contact/parallel_range.hpp"
+#include "core/model_detector.hpp"
 
 namespace tribo {
 
@@ -25,62 +21,6 @@ int stageThreads(std::size_t items, int threads) {
   return contact::threadsFor(items, threads, kItemsPerThread);
 }
 
-// Automatic contacts: the model's rule (core/automatic_contacts.hpp), asked on demand.
-class ModelPairRule : public contact::PairRule {
- public:
-  explicit ModelPairRule(std::shared_ptr<const Model> model) : model_(std::move(model)) {}
-  int pairId(int g, int h) const override { return automaticPairId(*model_, g, h); }
-  std::pair<int, int> geometries(int id) const override {
-    const ContactPair p = automaticPair(*model_, id);
-    return {p.geometry_a, p.geometry_b};
-  }
-
- private:
-  std::shared_ptr<const Model> model_;
-};
-
-// A geometry as a message names it: 'name' of body 'body' (or of the world).
-std::string geometryLabel(const Model& model, int g) {
-  const Geometry& geometry = model.geometries[static_cast<std::size_t>(g)];
-  return "geometry '" + geometry.name + "' (" +
-         (geometry.body.isWorld() ? std::string("world")
-                                  : "body '" + model.bodies[geometry.body.value].name + "'") +
-         ")";
-}
-
-// An FCL query that never returns (contact/query_watchdog.hpp) cannot be interrupted: say
-// which pair, then end the process with status 7; the outputs stay as .partial files.
-void queryOverrun(const std::shared_ptr<const Model>& model, int a, int b, double seconds) {
-  std::fprintf(stderr,
-               "tribo: the collision query between %s and %s has run %.0f s without finishing "
-               "(limit %.0f s; FCL/libccd has no iteration limit for convex pairs: is one of "
-               "them a mesh of extreme shape?); the run cannot continue, its outputs stay as "
-               ".partial files\n",
-               geometryLabel(*model, a).c_str(), geometryLabel(*model, b).c_str(), seconds,
-               model->options.collision.query_time_limit);
-  std::fflush(stderr);
-  std::_Exit(kQueryOverrunStatus);
-}
-
-contact::CollisionDetector makeDetector(const std::shared_ptr<const Model>& shared) {
-  const Model& model = *shared;
-  std::vector<contact::Shape> shapes;
-  for (const auto& g : model.geometries) shapes.push_back(g.shape);
-  std::vector<std::pair<int, int>> pairs;
-  for (const auto& p : model.contact_pairs) pairs.emplace_back(p.geometry_a, p.geometry_b);
-  contact::CollisionDetector detector =
-      model.automatic_contacts
-          ? contact::CollisionDetector(std::move(shapes), std::make_unique<ModelPairRule>(shared),
-                                       model.options.collision)
-          : contact::CollisionDetector(std::move(shapes), std::move(pairs),
-                                       model.options.collision);
-  if (const double limit = model.options.collision.query_time_limit;
-      limit > 0.0 && std::isfinite(limit))
-    detector.watchQueries(
-        limit, [shared](int a, int b, double seconds) { queryOverrun(shared, a, b, seconds); });
-  return detector;
-}
-
 // Motion of geometry g: its body's, with the geometry's surface velocity (world).
 contact::GeometryMotion motionOf(const Model& model, const State& state, const Workspace& ws,
                                  int g) {
@@ -93,13 +33,6 @@ contact::GeometryMotion motionOf(const Model& model, const State& state, const W
   m.angular_velocity = s.angular_velocity;
   m.surface_velocity = surfaceVelocityOf(model, ws.rotation, g);
   return m;
-}
-
-contact::AnchorFrames anchorFrames(const Model& model, const Workspace& ws,
-                                   const ContactPair& pair) {
-  return {&ws.geometry_poses[pair.geometry_a], &ws.geometry_poses[pair.geometry_b],
-          surfaceVelocityOf(model, ws.rotation, pair.geometry_a),
-          surfaceVelocityOf(model, ws.rotation, pair.geometry_b)};
 }
 
 inline void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3& force) {
@@ -117,10 +50,11 @@ int resolveThreads(int requested) {
 
 Dynamics::Dynamics(std::shared_ptr<const Model> model)
     : model_(std::move(model)),
-      detector_(makeDetector(model_)),
+      detector_(makeModelDetector(model_)),
       solver_(*model_),
       joint_forces_(*model_),
-      projection_(*model_) {
+      projection_(*model_),
+      friction_(*model_, joint_forces_) {
   const std::size_t nb = model_->bodies.size();
   for (const Body& b : model_->bodies)
     inv_inertia_body_.push_back(b.kind == BodyKind::kDynamic ? Mat3(b.inertia.inverse())
@@ -143,13 +77,6 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
       model_->automatic_contacts ? 8 * model_->geometries.size() : 8 * model_->contact_pairs.size();
   ws_.contact_points.reserve(expected);
   ws_.contacts.reserve(expected);
-  for (const auto& material : model_->materials) {
-    stateful_material_.push_back(material.friction->stateful() ? 1 : 0);
-    any_stateful_ = any_stateful_ || material.friction->stateful();
-    dynamic_law_.push_back(material.friction->dynamic());
-    any_dynamic_ = any_dynamic_ || material.friction->dynamic() != nullptr;
-  }
-  any_dynamic_ = any_dynamic_ || joint_forces_.jointStateSize() > 0;
   // One thread for a scene whose every stage is too small to share (no OpenMP call then).
   // Automatic contacts have no pair list: about three pairs a geometry (a densely packed
   // body's six neighbours, each pair counted once).
@@ -169,8 +96,7 @@ State Dynamics::initialState() const {
     s.bodies.push_back({b.position, b.orientation, b.velocity, b.angular_velocity});
   const ConstraintOptions& c = model_->options.constraints;
   if (c.project_initial) projection_.project(s, c.projection_tolerance, c.projection_iterations);
-  s.friction_values.assign(static_cast<std::size_t>(joint_forces_.jointStateSize()), 0.0);
-  joint_forces_.initialJointStates(s.friction_values.data());
+  friction_.initial(s, joint_forces_);
   return s;
 }
 
@@ -276,60 +202,7 @@ void Dynamics::normalForces() {
 }
 
 void Dynamics::friction(const State& state) {
-  const Model& m = *model_;
-  if (any_dynamic_) {  // the joints' rates, first, are the joint stage's (assemble)
-    ws_.friction_state_rate.resize(state.friction_values.size());
-    std::fill(ws_.friction_state_rate.begin() + joint_forces_.jointStateSize(),
-              ws_.friction_state_rate.end(), 0.0);
-    ws_.friction_state_contact.assign(state.friction_states.size(), -1);
-  }
-  // Memoryless and stateful laws: each point on its own (stateful ones only read the
-  // anchors), so in parallel when no dynamic law is in play.
-  auto independent = [&](contact::ContactRecord& rec) {
-    const ContactPair& pair = pairOf(rec);
-    const contact::Material& material = m.materials[pair.material];
-    if (!stateful_material_[pair.material]) {
-      contact::frictionForce(material, rec);
-      return;
-    }
-    const contact::StickAnchor* anchor =
-        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
-    const friction::StickView view =
-        contact::stickView(anchor, rec.point, anchorFrames(m, ws_, pair), state.time);
-    contact::frictionForce(material, view, rec);
-  };
-  if (!any_dynamic_ || steady_friction_) {
-    const std::size_t n = ws_.contacts.size();
-    parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) { independent(ws_.contacts[i]); });
-    return;
-  }
-  // Dynamic laws: the first point using a record drives it, so in contact order.
-  std::array<double, contact::kMaxFrictionState> z, zdot, back;
-  for (std::size_t i = 0; i < ws_.contacts.size(); ++i) {
-    contact::ContactRecord& rec = ws_.contacts[i];
-    const ContactPair& pair = pairOf(rec);
-    const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
-    if (law != nullptr) {
-      const contact::StickAnchor* record =
-          contact::findAnchor(state.friction_states, rec.point, m.options.collision.match_radius);
-      if (record == nullptr) {
-        law->initialState(z.data());  // a contact new within the step: not integrated yet
-        contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
-        continue;
-      }
-      contact::transportState(*law, &state.friction_values[record->state], record->normal,
-                              rec.point.normal, z.data());
-      contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
-      const auto r = static_cast<std::size_t>(record - state.friction_states.data());
-      if (ws_.friction_state_contact[r] >= 0) continue;  // the first point using it drives it
-      ws_.friction_state_contact[r] = static_cast<int>(i);
-      contact::transportState(*law, zdot.data(), record->normal, rec.point.normal, back.data(),
-                              true);
-      std::copy_n(back.data(), record->state_size, &ws_.friction_state_rate[record->state]);
-      continue;
-    }
-    independent(rec);
-  }
+  friction_.evaluate(state, ws_, stageThreads(ws_.contacts.size(), threads_));
 }
 
 void Dynamics::assemble(const State& state) {
@@ -455,102 +328,24 @@ void Dynamics::solveConstraints(const State& state) {
   joint_forces_.applyReactionFriction(solver_, ws_);
 }
 
-bool Dynamics::advanceFrictionStates(State& state) {
-  if (!any_stateful_) return false;
+bool Dynamics::beforeStep(State& state) {
+  if (!friction_.dynamic()) return false;
   StageClock clock(profiling_ ? &profile_ : nullptr);
-  const Model& m = *model_;
-  anchor_book_.begin(state.stick_anchors);
-  for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair& pair = pairOf(rec);
-    if (!stateful_material_[pair.material]) continue;
-    const contact::AnchorFrames frames = anchorFrames(m, ws_, pair);
-    const contact::StickAnchor* old =
-        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
-    const friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
-    const friction::StickUpdate update =
-        m.materials[pair.material].friction->advance(rec.slip, rec.normal_force, view);
-    anchor_book_.add(contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point, frames,
-                                       state.time, update));
-  }
-  const bool changed = anchor_book_.finish(state.stick_anchors);
+  const bool changed = friction_.beforeStep(state, ws_);
   clock.lap(Stage::kFrictionStates);
   return changed;
 }
 
-bool Dynamics::registerFrictionStates(State& state) {
-  if (!any_dynamic_) return false;
+bool Dynamics::afterStep(State& state) {
+  if (!friction_.stateful()) return false;
   StageClock clock(profiling_ ? &profile_ : nullptr);
-  const Model& m = *model_;
-  const double cos_rebase = std::cos(kRebaseAngle);
-  bool forces_changed = false;
-  state_book_.begin(state.friction_states);
-  // Joints' states first, as they are; the contacts' records after them.
-  next_values_.assign(state.friction_values.begin(),
-                      state.friction_values.begin() + joint_forces_.jointStateSize());
-  for (const contact::ContactRecord& rec : ws_.contacts) {
-    const ContactPair& pair = pairOf(rec);
-    const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
-    if (law == nullptr) continue;
-    const contact::StickAnchor* old =
-        contact::findAnchor(state.friction_states, rec.point, m.options.collision.match_radius);
-    contact::StickAnchor next;
-    next.key = state_book_.claim(rec.point, old);
-    next.position = rec.point.position;
-    next.time = state.time;
-    next.state = static_cast<int>(next_values_.size());
-    next.state_size = law->stateSize();
-    next_values_.resize(next_values_.size() + static_cast<std::size_t>(next.state_size));
-    double* z = &next_values_[static_cast<std::size_t>(next.state)];
-    if (old != nullptr && old->key == next.key) {
-      const double* stored = &state.friction_values[static_cast<std::size_t>(old->state)];
-      if (old->normal.dot(rec.point.normal) < cos_rebase) {
-        contact::transportState(*law, stored, old->normal, rec.point.normal, z);
-        next.normal = rec.point.normal;
-        forces_changed = forces_changed || law->tangentVectors() > 0;
-      } else {
-        std::copy_n(stored, next.state_size, z);
-        next.normal = old->normal;
-      }
-    } else {
-      law->initialState(z);
-      next.normal = rec.point.normal;
-      // The evaluation gave this point the state of a record another point continues.
-      forces_changed = forces_changed || old != nullptr;
-    }
-    state_book_.add(next);
-  }
-  state_book_.finish(state.friction_states);
-  state.friction_values.swap(next_values_);
-  if (!forces_changed) friction(state);  // same forces; the rates for the new records
+  const bool changed = friction_.afterStep(state, ws_);
   clock.lap(Stage::kFrictionStates);
-  return forces_changed;
+  return changed;
 }
 
-void Dynamics::settleFrictionStates(State& state) {
-  if (!any_dynamic_) return;
-  evaluate(state);
-  registerFrictionStates(state);
-  evaluate(state);
-  // A step far beyond every decay time at frozen slip lands on the steady state.
-  constexpr double kForever = 1e12;  // [s]
-  stepFrictionStates(state, kForever);
-}
-
-void Dynamics::stepFrictionStates(State& state, double h) const {
-  joint_forces_.stepStates(state, h);
-  std::array<double, contact::kMaxFrictionState> z, back;
-  for (std::size_t r = 0; r < state.friction_states.size(); ++r) {
-    if (r >= ws_.friction_state_contact.size() || ws_.friction_state_contact[r] < 0) continue;
-    const contact::ContactRecord& rec =
-        ws_.contacts[static_cast<std::size_t>(ws_.friction_state_contact[r])];
-    const friction::DynamicFrictionLaw& law = *dynamic_law_[pairOf(rec).material];
-    const contact::StickAnchor& record = state.friction_states[r];
-    double* stored = &state.friction_values[static_cast<std::size_t>(record.state)];
-    contact::transportState(law, stored, record.normal, rec.point.normal, z.data());
-    law.stableStep(z.data(), rec.slip, rec.normal_force, h);
-    contact::transportState(law, z.data(), record.normal, rec.point.normal, back.data(), true);
-    std::copy_n(back.data(), record.state_size, stored);
-  }
+void Dynamics::stepFrictionMemory(State& state, double h) const {
+  friction_.stepStable(state, ws_, joint_forces_, h);
 }
 
 }  // namespace tribo

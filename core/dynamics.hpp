@@ -4,21 +4,17 @@
 //   detect             collision detection (contact/collision_detector.hpp)
 //   contactKinematics  per contact point: depth rate, slip (contact/contact_force.hpp)
 //   normalForces       per contact point: penalty normal force
-//   friction           per contact point: the pair's friction law (stateful laws: anchor
-//                      lookup and state view, contact/stick_anchor.hpp; dynamic laws: the
-//                      internal state's record, force and state rate,
-//                      contact/dynamic_friction.hpp)
+//   friction           per contact point: the pair's friction law, with the memory of
+//                      stateful and dynamic laws (core/friction_states.hpp)
 //   assemble           wrenches by source: contacts, force elements (spring-dampers,
 //                      bushings, torsional springs), joint forces (core/joint_forces.hpp)
 //   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations
 //   solveConstraints   Lagrange multipliers (core/constraint_solver.hpp), then joint
 //                      friction under reaction load
 // Results land in the Workspace, split by source. With profiling on, each stage's wall time
-// is added to a StageProfile (core/stage_profile.hpp); off, no clock is read. After a step,
-// advanceFrictionStates lets stateful friction laws move their anchors.
-// A collision query that never returns (contact/query_watchdog.hpp, limit in
-// CollisionOptions::query_time_limit) ends the process with kQueryOverrunStatus, naming the
-// two geometries and their bodies.
+// is added to a StageProfile (core/stage_profile.hpp); off, no clock is read. Before and
+// after a step, the friction memory is brought up to date (beforeStep, afterStep).
+// Collision detection is set up by core/model_detector.hpp (with its query watchdog).
 // Not here: time stepping (core/integrator.hpp), run control and divergence checks
 // (core/simulator.hpp).
 #pragma once
@@ -29,17 +25,15 @@
 #include "contact/contact_force.hpp"
 #include "core/constraint_projection.hpp"
 #include "core/constraint_solver.hpp"
+#include "core/friction_states.hpp"
 #include "core/joint_forces.hpp"
 #include "core/model.hpp"
+#include "core/model_detector.hpp"
 #include "core/stage_profile.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
-#include "friction/dynamic_law.hpp"
 
 namespace tribo {
-
-// Exit status of a process ended by the collision-query watchdog (README, "Exit status").
-inline constexpr int kQueryOverrunStatus = 7;
 
 class Dynamics {
  public:
@@ -56,36 +50,20 @@ class Dynamics {
   // joint constraints (core/constraint_projection.hpp); does nothing unless enabled.
   void projectConstraints(State& state);
 
-  // Stateful friction: true when some material's law keeps per-contact state. After a step,
-  // with the workspace evaluated at `state`, advanceFrictionStates lets each stateful law
-  // decide its contacts' new mode and elongation and re-sets their anchors in
-  // state.stick_anchors (contact/stick_anchor.hpp); returns true when they changed.
-  bool hasStatefulFriction() const { return any_stateful_; }
-  bool advanceFrictionStates(State& state);
-
-  // Dynamic friction (friction/dynamic_law.hpp): true when some material's or joint's law
-  // carries an internal state integrated with the motion. State::friction_values holds the
-  // joints' states first (a fixed slice per joint, core/joint_forces.hpp), then the
-  // contacts'.
-  bool hasDynamicFriction() const { return any_dynamic_; }
-  // Before a step, with the workspace evaluated at `state`: gives every contact point under
-  // a dynamic law its record in state.friction_states (continuing the one it matched, a new
-  // one from the law's initial state, ended contacts forgotten), turning stored tangent
-  // vectors to the current normal once it has turned by more than kRebaseAngle. Returns
-  // true when a force of the evaluation may have changed (a state was turned or a record
-  // shared by two points was split), so the caller must evaluate again; otherwise it
-  // refreshes the workspace's state rates for the new records itself.
-  bool registerFrictionStates(State& state);
-  // Semi-implicit Euler's update of the internal states over h at the slip and load of the
-  // workspace's evaluation (DynamicFrictionLaw::stableStep): bounded for stiff bristles.
-  void stepFrictionStates(State& state, double h) const;
-  static constexpr double kRebaseAngle = 1e-3;  // [rad]
-  // Quasi-steady friction: with it on, dynamic laws act through their steady-state curve
-  // (as memoryless laws, for the steady-state search of `tribo modes`); off by default.
-  void setSteadyFriction(bool on) { steady_friction_ = on; }
-  // Gives `state` its records (as registerFrictionStates) and sets every internal state to
-  // the law's steady state at the slip and load of the evaluation at `state`.
-  void settleFrictionStates(State& state);
+  // Friction memory (core/friction_states.hpp): which kinds the model has, and its layout.
+  const FrictionStates& frictionMemory() const { return friction_; }
+  // Before a step, with the workspace evaluated at `state`: the records of dynamic laws;
+  // true when the caller must evaluate again (FrictionStates::beforeStep).
+  bool beforeStep(State& state);
+  // After a step, with the workspace evaluated at `state`: stateful laws move their anchors;
+  // true when they changed (FrictionStates::afterStep).
+  bool afterStep(State& state);
+  // Semi-implicit Euler's bounded update of the internal states over h at the slip and load
+  // of the workspace's evaluation (FrictionStates::stepStable).
+  void stepFrictionMemory(State& state, double h) const;
+  // Quasi-steady friction: with it on, dynamic laws act through their steady-state curve (as
+  // memoryless laws, for the steady-state search of `tribo modes`); off by default.
+  void setSteadyFriction(bool on) { friction_.setSteady(on); }
 
   // Time per stage (core/stage_profile.hpp). Switching profiling on starts the profile from
   // zero; switching it off keeps the totals. Off by default.
@@ -122,15 +100,8 @@ class Dynamics {
   const ContactPair& pairOf(const contact::ContactRecord& rec) const {
     return ws_.contact_pair[static_cast<std::size_t>(&rec - ws_.contacts.data())];
   }
-  std::vector<char> at_body_origin_;     // per geometry: its local pose is the identity
-  std::vector<char> stateful_material_;  // per material: its friction law keeps state
-  bool any_stateful_ = false;
-  contact::AnchorBook anchor_book_;
-  std::vector<const friction::DynamicFrictionLaw*> dynamic_law_;  // per material, or nullptr
-  bool any_dynamic_ = false;
-  bool steady_friction_ = false;
-  contact::AnchorBook state_book_;
-  std::vector<double> next_values_;
+  std::vector<char> at_body_origin_;  // per geometry: its local pose is the identity
+  FrictionStates friction_;
   bool profiling_ = false;
   StageProfile profile_;
   double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on

@@ -21,7 +21,7 @@ class SemiImplicitEuler final : public Integrator {
       s.position += h * s.velocity;
       s.orientation = rotateBy(s.angular_velocity, h, s.orientation);
     }
-    if (dynamics.hasDynamicFriction()) dynamics.stepFrictionStates(state, h);
+    if (dynamics.frictionMemory().dynamic()) dynamics.stepFrictionMemory(state, h);
     state.time += h;
     ++counters_.steps;
     return {};
@@ -52,9 +52,11 @@ class RungeKutta4 final : public Integrator {
       // Dynamic friction states: their records are those of `state` in every stage.
       z_rates_[k].assign(ws.friction_state_rate.begin(), ws.friction_state_rate.end());
     }
-    for (std::size_t i = 0; i < state.friction_values.size(); ++i)
-      state.friction_values[i] += h * (kWeight[0] * z_rates_[0][i] + kWeight[1] * z_rates_[1][i] +
-                                       kWeight[2] * z_rates_[2][i] + kWeight[3] * z_rates_[3][i]);
+    z_sum_.resize(z_rates_[0].size());
+    for (std::size_t i = 0; i < z_sum_.size(); ++i)
+      z_sum_[i] = kWeight[0] * z_rates_[0][i] + kWeight[1] * z_rates_[1][i] +
+                  kWeight[2] * z_rates_[2][i] + kWeight[3] * z_rates_[3][i];
+    addRates(state, z_sum_, h, state);
     for (std::size_t b = 0; b < state.bodies.size(); ++b) {
       BodyState& s = state.bodies[b];
       Rate sum{};
@@ -87,8 +89,7 @@ class RungeKutta4 final : public Integrator {
   void makeStage(const State& base, const std::vector<Rate>& rate,
                  const std::vector<double>& z_rate, double dt) {
     stage_.time = base.time + dt;
-    for (std::size_t i = 0; i < base.friction_values.size(); ++i)
-      stage_.friction_values[i] = base.friction_values[i] + dt * z_rate[i];
+    addRates(base, z_rate, dt, stage_);
     for (std::size_t b = 0; b < base.bodies.size(); ++b) {
       const BodyState& s = base.bodies[b];
       BodyState& o = stage_.bodies[b];
@@ -102,7 +103,8 @@ class RungeKutta4 final : public Integrator {
 
   State stage_;
   std::vector<std::vector<Rate>> rates_;
-  std::vector<std::vector<double>> z_rates_;  // per stage, dz/dt of State::friction_values
+  std::vector<std::vector<double>> z_rates_;  // per stage, dz/dt of the friction states
+  std::vector<double> z_sum_;                 // their weighted sum
 };
 
 }  // namespace

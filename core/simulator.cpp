@@ -55,9 +55,9 @@ StepStatus Simulator::advance() {
   last_good_ = state_;
   // Dynamic friction: every contact point of the evaluation at the step's start gets its
   // internal state's record before the integrator carries the states with the bodies.
-  if (dynamics_.hasDynamicFriction()) {
+  if (dynamics_.frictionMemory().dynamic()) {
     current();
-    if (dynamics_.registerFrictionStates(state_)) evaluated_ = false;
+    if (dynamics_.beforeStep(state_)) evaluated_ = false;
   }
   const IntegratorStatus integrated =
       integrator_->step(dynamics_, state_, model().options.time_step, evaluated_);
@@ -86,8 +86,7 @@ StepStatus Simulator::advance() {
   }
   // Advance friction states: stateful laws decide from the evaluation at the new state;
   // when their anchors move, the next evaluation must see them.
-  if (dynamics_.hasStatefulFriction() && dynamics_.advanceFrictionStates(state_))
-    evaluated_ = false;
+  if (dynamics_.frictionMemory().stateful() && dynamics_.afterStep(state_)) evaluated_ = false;
   return status;
 }
 
@@ -122,26 +121,10 @@ StepStatus Simulator::check() {
       return failed(name, quantity, "body '" + name + "' " + words + " is not finite");
     }
   }
-  for (std::size_t i = 0; i < state_.friction_values.size(); ++i) {
-    if (std::isfinite(state_.friction_values[i])) continue;
-    if (!std::any_of(state_.friction_states.begin(), state_.friction_states.end(),
-                     [&](const contact::StickAnchor& r) {
-                       return i >= static_cast<std::size_t>(r.state) &&
-                              i < static_cast<std::size_t>(r.state + r.state_size);
-                     }))
-      return failed("", "friction_state",
-                    "the internal state of a joint's friction law is not finite");
-  }
-  for (const contact::StickAnchor& record : state_.friction_states) {
-    const double* z = &state_.friction_values[static_cast<std::size_t>(record.state)];
-    if (std::all_of(z, z + record.state_size, [](double x) { return std::isfinite(x); })) continue;
-    const ContactPair pair = m.contactPair(contact::keyPair(record.key));
-    const Geometry& g = m.geometries[pair.geometry_b];
-    const std::string name = g.body.isWorld() ? "world" : m.bodies[g.body.value].name;
-    return failed(name, "friction_state",
-                  "the internal state of friction law '" +
-                      std::string(m.materials[pair.material].friction->name()) +
-                      "' at a contact of body '" + name + "' is not finite");
+  if (dynamics_.frictionMemory().dynamic()) {
+    std::string body;
+    if (std::string what = dynamics_.frictionMemory().nonFinite(state_, body); !what.empty())
+      return failed(body, "friction_state", what);
   }
   const Workspace& ws = current();
   for (std::size_t i = 0; i < ws.contacts.size(); ++i) {

@@ -30,7 +30,7 @@ enum class Stage : int {
   kAssemble,           // contact, spring and joint-force wrenches on the bodies
   kAccelerations,      // unconstrained accelerations: forces, gravity, gyroscopic terms
   kConstraints,        // constraint solve and joint friction under reaction load
-  kFrictionStates,     // Dynamics::advanceFrictionStates, after a step
+  kFrictionStates,     // friction memory before and after a step (core/friction_states.hpp)
   kCount
 };
 

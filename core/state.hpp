@@ -1,15 +1,17 @@
 // The mutable state of a run: what is needed to restart it bit for bit. Cheap to copy.
 //
 // One BodyState per model body (index = BodyIndex::value); kinematic bodies are set from
-// time by the simulator. Stateful friction laws keep one StickAnchor per contact point,
-// sorted by its persistent contact key (contact/stick_anchor.hpp); memoryless laws none.
-// Dynamic friction laws (friction/dynamic_law.hpp) keep one record per contact point in
-// friction_states, sorted by the same keys, whose internal state z is the slice
-// [state, state + state_size) of friction_values: integrated with the bodies.
+// time by the simulator. Friction memory (its layout and updates: core/friction_states.hpp):
+// stateful laws keep one StickAnchor per contact point (contact/stick_anchor.hpp), dynamic
+// laws one FrictionStateRecord per contact point (contact/dynamic_friction.hpp), each list
+// sorted by the persistent contact key (contact/contact_identity.hpp); friction_values holds
+// the dynamic laws' internal states z (the joints' slices, then the records'): integrated
+// with the bodies. Memoryless laws keep nothing.
 #pragma once
 
 #include <vector>
 
+#include "contact/dynamic_friction.hpp"
 #include "contact/stick_anchor.hpp"
 #include "core/math.hpp"
 
@@ -25,9 +27,9 @@ struct BodyState {
 struct State {
   double time = 0.0;  // [s]
   std::vector<BodyState> bodies;
-  std::vector<contact::StickAnchor> stick_anchors;    // stateful friction, sorted by key
-  std::vector<contact::StickAnchor> friction_states;  // dynamic friction, sorted by key
-  std::vector<double> friction_values;                // their internal states, z
+  std::vector<contact::StickAnchor> stick_anchors;            // stateful friction, sorted by key
+  std::vector<contact::FrictionStateRecord> friction_states;  // dynamic friction, by key
+  std::vector<double> friction_values;                        // their internal states, z
 };
 
 }  // namespace tribo

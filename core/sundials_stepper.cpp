@@ -12,8 +12,8 @@ namespace {
 constexpr double kQuaternionDrift = 1e-6;  // restart from a normalized q beyond this
 
 // The records of dynamic friction states, by what y depends on (not where they were set).
-bool sameRecords(const std::vector<contact::StickAnchor>& a,
-                 const std::vector<contact::StickAnchor>& b) {
+bool sameRecords(const std::vector<contact::FrictionStateRecord>& a,
+                 const std::vector<contact::FrictionStateRecord>& b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
     return x.key == y.key && x.state == y.state && x.state_size == y.state_size &&
            x.normal == y.normal;

@@ -196,7 +196,7 @@ std::pair<std::string, std::string> OdeSystem::componentName(int i) const {
   if (i < 0 || i >= size()) return {"", ""};
   const int bodies = kPerBody * static_cast<int>(dynamic_.size());
   if (i >= bodies) {  // an internal friction state: the body B of its contact
-    for (const contact::StickAnchor& r : scratch_.friction_states) {
+    for (const contact::FrictionStateRecord& r : scratch_.friction_states) {
       if (i - bodies < r.state || i - bodies >= r.state + r.state_size) continue;
       const ContactPair pair = model_.contactPair(contact::keyPair(r.key));
       const BodyIndex b = model_.geometries[pair.geometry_b].body;

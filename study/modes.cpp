@@ -50,6 +50,18 @@ void sortByGrowth(std::vector<Mode>& modes) {
                    [](const Mode& x, const Mode& y) { return x.growth_rate > y.growth_rate; });
 }
 
+// Gives `state` its friction records (Dynamics::beforeStep) and sets every internal state to
+// its law's steady state at the slip and load there: a step far beyond every decay time at
+// frozen slip lands on the steady state.
+void settleFrictionStates(Dynamics& dynamics, State& state) {
+  if (!dynamics.frictionMemory().dynamic()) return;
+  dynamics.evaluate(state);
+  dynamics.beforeStep(state);
+  dynamics.evaluate(state);
+  constexpr double kForever = 1e12;  // [s]
+  dynamics.stepFrictionMemory(state, kForever);
+}
+
 }  // namespace
 
 std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& coords,
@@ -149,7 +161,7 @@ ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
     throw ModesError(e.what());
   }
   dynamics.setSteadyFriction(false);
-  dynamics.settleFrictionStates(out.steady.state);
+  settleFrictionStates(dynamics, out.steady.state);
   out.steady_seconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
   const State& x = out.steady.state;

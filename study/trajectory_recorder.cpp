@@ -102,7 +102,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
     std::fill(pair_points_.begin(), pair_points_.end(), 0);
     for (std::size_t r = 0; r < state.friction_states.size(); ++r) {
       if (r >= ws.friction_state_contact.size() || ws.friction_state_contact[r] < 0) continue;
-      const contact::StickAnchor& rec = state.friction_states[r];
+      const contact::FrictionStateRecord& rec = state.friction_states[r];
       const auto p = static_cast<std::size_t>(slots_.slot(contact::keyPair(rec.key)));
       const double* z = &state.friction_values[static_cast<std::size_t>(rec.state)];
       for (int i = 0; i < pair_state_size_[p]; ++i)

@@ -184,7 +184,7 @@ TEST(LuGreStickSlip, TheStateOfOneContactDoesNotLeakIntoAnother) {
   EXPECT_EQ(s.bodies[still].position, start);
   ASSERT_EQ(s.friction_states.size(), 8u);  // four corners each
   int still_records = 0;
-  for (const contact::StickAnchor& r : s.friction_states) {
+  for (const contact::FrictionStateRecord& r : s.friction_states) {
     const ContactPair pair = scene.model->contactPair(contact::keyPair(r.key));
     const bool is_still = scene.model->geometries[pair.geometry_b].name == "still_shape";
     const double* z = &s.friction_values[static_cast<std::size_t>(r.state)];
