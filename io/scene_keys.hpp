@@ -1,9 +1,11 @@
 // The keys of a scene file, one table per section, and the option words the loader accepts
-// where a word is expected: the one list io/scene_loader.cpp checks each mapping against,
-// and the one list the fuzzing dictionary is generated from (tools/scene_dictionary.cpp), so
-// a key the loader accepts is fuzzed the day it exists (tests/io/scene_keys_test.cpp checks
-// the committed fuzz/dictionaries/scene.dict holds them all).
-// Not here: what a key means (io/scene_loader.cpp's header comment), vocabularies owned by
+// where a word is expected: the one list the scene reader (io/scene_reader.hpp) checks each
+// mapping against, and the one list the fuzzing dictionary is generated from
+// (tools/scene_dictionary.cpp), so a key the loader accepts is fuzzed the day it exists
+// (tests/io/scene_keys_test.cpp checks the committed fuzz/dictionaries/scene.dict holds them
+// all), and documented (tests/io/scene_format_doc_test.cpp checks docs/scene-format.md lists
+// each section's keys exactly).
+// Not here: what a key means (docs/scene-format.md), vocabularies owned by
 // other modules (friction laws and their keys: friction/law_keys.hpp; normal laws,
 // shapes, joint types, integrators: contact/ and core/; output channel groups:
 // io/output_channels.hpp).

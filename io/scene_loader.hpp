@@ -1,7 +1,7 @@
 // Scene files: a YAML description of bodies, geometry, joints, force elements, friction laws,
 // materials, contact pairs and output, turned into a validated, immutable Model through
-// ModelBuilder. The format is documented on scenes/belt.yaml and in io/scene_loader.cpp;
-// in short, the top-level keys are
+// ModelBuilder. The format is documented in docs/scene-format.md, with scenes/belt.yaml as
+// a commented example; in short, the top-level keys are
 //   parameters, simulation, bodies, robots (URDF files), joints, springs, bushings,
 //   torsional_springs, friction_laws, materials, contacts, output
 // and a scalar "$name" anywhere stands for parameter `name` (io/scene_parameters.hpp).

@@ -11,7 +11,8 @@
 // expected, io/scene_expression.hpp evaluates it, each parameter once per load (the value is
 // kept in the table until the next override).
 // All text given here (names, values, overrides) must be well-formed UTF-8 (io/utf8_check.hpp).
-// Not here: YAML (io/scene_loader.cpp reads the file and feeds this table), evaluation.
+// Not here: YAML (the scene reader, io/scene_reader.hpp, reads the file and feeds this
+// table), evaluation.
 #pragma once
 
 #include <optional>
