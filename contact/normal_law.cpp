@@ -26,9 +26,8 @@ double g(double z) {
 
 double NormalLaw::energy(double depth) const {
   if (depth <= 0.0) return 0.0;
-  const double p = type == NormalLawType::kLinear  ? 1.0
-                   : type == NormalLawType::kHertz ? 1.5
-                                                   : exponent;
+  if (type == NormalLawType::kLinear) return 0.5 * stiffness * depth * depth;
+  const double p = elasticExponent();
   return stiffness * std::pow(depth, p + 1.0) / (p + 1.0);
 }
 

@@ -60,7 +60,13 @@ struct NormalLaw {
     return f > 0.0 ? f : 0.0;
   }
 
-  // Elastic potential energy stored at depth d [J] (the integral of the spring part).
+  // The exponent p of the elastic part k d^p: 1 (linear), 3/2 (hertz), `exponent` (the
+  // others).
+  double elasticExponent() const {
+    return type == NormalLawType::kLinear ? 1.0 : type == NormalLawType::kHertz ? 1.5 : exponent;
+  }
+  // Elastic potential energy stored at depth d [J]: k d^(p+1) / (p+1), the integral of the
+  // elastic part (the energy guard's contact term, core/energy.hpp).
   double energy(double depth) const;
 
   // Throws std::invalid_argument naming the law and the bad parameter.

@@ -9,12 +9,6 @@ namespace {
 
 constexpr double kFloor = 1e-9;  // [J] below this a rise is rounding noise
 
-double contactPotential(const contact::NormalLaw& law, double depth) {
-  if (depth <= 0.0) return 0.0;
-  if (law.type == contact::NormalLawType::kLinear) return 0.5 * law.stiffness * depth * depth;
-  return law.stiffness * std::pow(depth, law.exponent + 1.0) / (law.exponent + 1.0);
-}
-
 }  // namespace
 
 EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
@@ -65,7 +59,7 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
   for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
     const contact::ContactRecord& c = ws.contacts[i];
     const ContactPair& pair = ws.contact_pair[i];
-    a.elastic += contactPotential(model.materials[pair.material].normal, c.point.depth);
+    a.elastic += model.materials[pair.material].normal.energy(c.point.depth);
     const Vec3 f = c.force();  // on B; A gets -f
     const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};
     for (const auto& [geometry, sign] : sides) {

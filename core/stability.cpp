@@ -99,19 +99,13 @@ struct Tangent {
   double damping = 0.0;    // dF/dd' [N s/m]
 };
 
-double exponentOf(const contact::NormalLaw& law) {
-  return law.type == contact::NormalLawType::kLinear  ? 1.0
-         : law.type == contact::NormalLawType::kHertz ? 1.5
-                                                      : law.exponent;
-}
-
 // Depth at which the elastic part k d^p carries `load` [N].
 double depthAtLoad(const contact::NormalLaw& law, double load) {
-  return std::pow(load / law.stiffness, 1.0 / exponentOf(law));
+  return std::pow(load / law.stiffness, 1.0 / law.elasticExponent());
 }
 
 Tangent tangentAt(const contact::NormalLaw& law, double depth) {
-  const double p = exponentOf(law);
+  const double p = law.elasticExponent();
   const double f = law.stiffness * std::pow(depth, p);  // elastic part at d
   switch (law.type) {
     case contact::NormalLawType::kLinear:
@@ -412,7 +406,7 @@ StabilityReport estimateStableStep(const Model& model) {
            << " carries no weight (no gravity); its limit uses the tangent stiffness at the "
               "stated depth "
            << kUnloadedDepth << " m (deeper contacts are stiffer: the limit scales as depth^-"
-           << (exponentOf(law) - 1.0) / 2.0 << ")";
+           << (law.elasticExponent() - 1.0) / 2.0 << ")";
       report.notes.push_back(note.str());
     }
 

@@ -24,13 +24,6 @@ double DahlLaw::slope(double v) const { return std::isnan(v) ? v : 0.0; }
 
 double DahlLaw::maxCoefficient(double) const { return params_.mu_c; }
 
-std::string DahlLaw::stateName(int i) const {
-  static constexpr const char* kNames[] = {"z.x", "z.y", "z.z"};
-  return kNames[std::clamp(i, 0, 2)];
-}
-
-void DahlLaw::initialState(double* z) const { z[0] = z[1] = z[2] = 0.0; }
-
 void DahlLaw::rate(const double* z, const Eigen::Vector3d& slip, double, double* zdot) const {
   const double v = slip.norm();
   if (v == 0.0) {

@@ -31,7 +31,7 @@
 #include <string_view>
 #include <vector>
 
-#include "friction/dynamic_law.hpp"
+#include "friction/bristle_law.hpp"
 
 namespace tribo::friction {
 
@@ -41,7 +41,7 @@ struct DahlParams {
   double alpha = 1.0;   // shape exponent [-], >= 1
 };
 
-class DahlLaw final : public DynamicFrictionLaw {
+class DahlLaw final : public BristleLaw {
  public:
   static constexpr double kStickSpeed = 1e-6;  // nominal [m/s]: the law has no speed scale
 
@@ -54,13 +54,8 @@ class DahlLaw final : public DynamicFrictionLaw {
   // mu_c: |sigma0 z| <= mu_c for every state reached from |z| <= mu_c / sigma0.
   double maxCoefficient(double v_max) const override;
   double stickSpeed() const override { return kStickSpeed; }
-  std::vector<double> breakpoints() const override { return {}; }
   std::string_view name() const override { return "dahl"; }
 
-  int stateSize() const override { return 3; }
-  int tangentVectors() const override { return 1; }
-  std::string stateName(int i) const override;
-  void initialState(double* z) const override;
   void rate(const double* z, const Eigen::Vector3d& slip, double fn, double* zdot) const override;
   Eigen::Vector3d force(const double* z, const double* zdot, const Eigen::Vector3d& slip, double fn,
                         double* mu_out) const override;

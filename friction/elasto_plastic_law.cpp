@@ -35,13 +35,6 @@ double ElastoPlasticLaw::maxCoefficient(double v_max) const {
          params_.sigma2 * v;
 }
 
-std::string ElastoPlasticLaw::stateName(int i) const {
-  static constexpr const char* kNames[] = {"z.x", "z.y", "z.z"};
-  return kNames[std::clamp(i, 0, 2)];
-}
-
-void ElastoPlasticLaw::initialState(double* z) const { z[0] = z[1] = z[2] = 0.0; }
-
 double ElastoPlasticLaw::alpha(const Eigen::Vector3d& z, const Eigen::Vector3d& slip) const {
   return alphaAt(z, slip, g_.value(slip.norm()));
 }

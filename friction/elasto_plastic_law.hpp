@@ -29,7 +29,7 @@
 #include <string_view>
 #include <vector>
 
-#include "friction/dynamic_law.hpp"
+#include "friction/bristle_law.hpp"
 #include "friction/stribeck_curve.hpp"
 
 namespace tribo::friction {
@@ -44,7 +44,7 @@ struct ElastoPlasticParams {
   double z_ba_fraction = 0.7;          // break-away deflection / (mu_c / sigma0) [-], in (0, 1)
 };
 
-class ElastoPlasticLaw final : public DynamicFrictionLaw {
+class ElastoPlasticLaw final : public BristleLaw {
  public:
   // Throws FrictionParameterError when a rule above is broken or a value is not finite.
   explicit ElastoPlasticLaw(const ElastoPlasticParams& params);
@@ -56,13 +56,8 @@ class ElastoPlasticLaw final : public DynamicFrictionLaw {
   // |s| (1 + mu_s / mu_c) for states reached from |z| <= mu_s / sigma0.
   double maxCoefficient(double v_max) const override;
   double stickSpeed() const override { return params_.v_s; }
-  std::vector<double> breakpoints() const override { return {}; }
   std::string_view name() const override { return "elasto_plastic"; }
 
-  int stateSize() const override { return 3; }
-  int tangentVectors() const override { return 1; }
-  std::string stateName(int i) const override;
-  void initialState(double* z) const override;
   void rate(const double* z, const Eigen::Vector3d& slip, double fn, double* zdot) const override;
   Eigen::Vector3d force(const double* z, const double* zdot, const Eigen::Vector3d& slip, double fn,
                         double* mu_out) const override;

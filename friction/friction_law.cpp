@@ -1,5 +1,7 @@
 // The law factory (scene name and keys -> a validated law) and the shared tangential-force
-// helper. Key handling lives here; each law's constructor checks the values.
+// helper. One table (kLaws) lists every law once: its name, kind, keys, options and factory;
+// the factory, frictionLawKeys and the name lists read it. Key handling lives here; each
+// law's constructor checks the values.
 #include "friction/friction_law.hpp"
 
 #include <cmath>
@@ -273,6 +275,62 @@ std::unique_ptr<const FrictionLaw> makeElasticStick(const LawSpec& spec) {
                          .stick_speed = reader.optional("stick_speed", defaults.stick_speed)});
 }
 
+// The words of coulomb's `regularization` option.
+std::vector<std::string> coulombRegularizations() {
+  std::vector<std::string> words;
+  const std::string all = kCoulombRegularizationNames.names();  // "a, b, c"
+  for (std::size_t at = 0; at != std::string::npos;) {
+    const std::size_t comma = all.find(", ", at);
+    words.push_back(all.substr(at, comma == std::string::npos ? comma : comma - at));
+    at = comma == std::string::npos ? comma : comma + 2;
+  }
+  return words;
+}
+
+std::vector<std::string> rateStateEvolutions() { return {"aging", "slip"}; }
+
+enum class LawKind { kMemoryless, kStateful, kDynamic };
+
+// One row per law: its scene name, kind, accepted keys and options, the words its options
+// take, and its factory. The factory, the key lists and the name lists all read this table.
+struct LawEntry {
+  std::string_view name;
+  LawKind kind;
+  std::span<const std::string_view> keys;
+  std::span<const std::string_view> options;
+  std::vector<std::string> (*option_words)();  // nullptr: none
+  std::unique_ptr<const FrictionLaw> (*make)(const LawSpec&);
+};
+
+constexpr LawEntry kLaws[] = {
+    {"coulomb", LawKind::kMemoryless, kCoulombKeys, kCoulombOptions, coulombRegularizations,
+     makeCoulomb},
+    {"recurdyn", LawKind::kMemoryless, kStepLawKeys, {}, nullptr, makeRecurDyn},
+    {"adams", LawKind::kMemoryless, kStepLawKeys, {}, nullptr, makeAdams},
+    {"roh_yoo", LawKind::kMemoryless, kRohYooKeys, {}, nullptr, makeRohYoo},
+    {"stribeck", LawKind::kMemoryless, kStribeckKeys, {}, nullptr, makeStribeck},
+    {"elastic_stick", LawKind::kStateful, kElasticStickKeys, {}, nullptr, makeElasticStick},
+    {"lugre", LawKind::kDynamic, kLuGreKeys, {}, nullptr, makeLuGre},
+    {"dahl", LawKind::kDynamic, kDahlKeys, {}, nullptr, makeDahl},
+    {"elasto_plastic", LawKind::kDynamic, kElastoPlasticKeys, {}, nullptr, makeElastoPlastic},
+    {"gms", LawKind::kDynamic, kGmsKeys, {}, nullptr, makeGms},
+    {"rate_state", LawKind::kDynamic, kRateStateKeys, kRateStateOptions, rateStateEvolutions,
+     makeRateState},
+};
+
+const LawEntry* findLaw(const std::string& name) {
+  for (const LawEntry& entry : kLaws)
+    if (entry.name == name) return &entry;
+  return nullptr;
+}
+
+std::vector<std::string> lawNames(LawKind kind) {
+  std::vector<std::string> names;
+  for (const LawEntry& entry : kLaws)
+    if (entry.kind == kind) names.emplace_back(entry.name);
+  return names;
+}
+
 }  // namespace
 
 Eigen::Vector3d FrictionLaw::stickForce(const Eigen::Vector3d& slip, double fn, const StickView&,
@@ -285,66 +343,36 @@ StickUpdate FrictionLaw::advance(const Eigen::Vector3d&, double, const StickView
 }
 
 std::unique_ptr<const FrictionLaw> makeFrictionLaw(const LawSpec& spec) {
-  if (spec.name == "coulomb") return makeCoulomb(spec);
-  if (spec.name == "recurdyn") return makeRecurDyn(spec);
-  if (spec.name == "adams") return makeAdams(spec);
-  if (spec.name == "roh_yoo") return makeRohYoo(spec);
-  if (spec.name == "stribeck") return makeStribeck(spec);
-  if (spec.name == "elastic_stick") return makeElasticStick(spec);
-  if (spec.name == "lugre") return makeLuGre(spec);
-  if (spec.name == "dahl") return makeDahl(spec);
-  if (spec.name == "elasto_plastic") return makeElastoPlastic(spec);
-  if (spec.name == "gms") return makeGms(spec);
-  if (spec.name == "rate_state") return makeRateState(spec);
+  if (const LawEntry* entry = findLaw(spec.name)) return entry->make(spec);
   std::string known;
-  for (const std::string& name : knownFrictionLaws()) known += (known.empty() ? "" : ", ") + name;
-  for (const std::string& name : knownStatefulFrictionLaws()) known += ", " + name;
-  for (const std::string& name : knownDynamicFrictionLaws()) known += ", " + name;
+  for (const LawEntry& entry : kLaws)
+    known += (known.empty() ? "" : ", ") + std::string(entry.name);
   throw FrictionParameterError("unknown friction law '" + spec.name + "' (known laws: " + known +
                                ")");
 }
 
 LawKeys frictionLawKeys(const std::string& name) {
+  const LawEntry* entry = findLaw(name);
+  if (entry == nullptr) throw FrictionParameterError("unknown friction law '" + name + "'");
   const auto words = [](std::span<const std::string_view> v) {
     return std::vector<std::string>(v.begin(), v.end());
   };
-  if (name == "coulomb") {
-    LawKeys k{words(kCoulombKeys), words(kCoulombOptions), {}};
-    std::string all = kCoulombRegularizationNames.names();  // "a, b, c"
-    for (std::size_t at = 0; at != std::string::npos;) {
-      const std::size_t comma = all.find(", ", at);
-      k.option_words.push_back(all.substr(at, comma == std::string::npos ? comma : comma - at));
-      at = comma == std::string::npos ? comma : comma + 2;
-    }
-    return k;
-  }
-  if (name == "recurdyn" || name == "adams") return {words(kStepLawKeys), {}, {}};
-  if (name == "roh_yoo") return {words(kRohYooKeys), {}, {}};
-  if (name == "stribeck") return {words(kStribeckKeys), {}, {}};
-  if (name == "elastic_stick") return {words(kElasticStickKeys), {}, {}};
-  if (name == "lugre") return {words(kLuGreKeys), {}, {}};
-  if (name == "dahl") return {words(kDahlKeys), {}, {}};
-  if (name == "elasto_plastic") return {words(kElastoPlasticKeys), {}, {}};
-  if (name == "gms") return {words(kGmsKeys), {}, {}};
-  if (name == "rate_state")
-    return {words(kRateStateKeys), words(kRateStateOptions), {"aging", "slip"}};
-  throw FrictionParameterError("unknown friction law '" + name + "'");
+  return {words(entry->keys), words(entry->options),
+          entry->option_words != nullptr ? entry->option_words() : std::vector<std::string>{}};
 }
 
 const std::vector<std::string>& knownFrictionLaws() {
-  static const std::vector<std::string> names = {"coulomb", "recurdyn", "adams", "roh_yoo",
-                                                 "stribeck"};
+  static const std::vector<std::string> names = lawNames(LawKind::kMemoryless);
   return names;
 }
 
 const std::vector<std::string>& knownStatefulFrictionLaws() {
-  static const std::vector<std::string> names = {"elastic_stick"};
+  static const std::vector<std::string> names = lawNames(LawKind::kStateful);
   return names;
 }
 
 const std::vector<std::string>& knownDynamicFrictionLaws() {
-  static const std::vector<std::string> names = {"lugre", "dahl", "elasto_plastic", "gms",
-                                                 "rate_state"};
+  static const std::vector<std::string> names = lawNames(LawKind::kDynamic);
   return names;
 }
 

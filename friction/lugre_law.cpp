@@ -32,13 +32,6 @@ double LuGreLaw::maxCoefficient(double v_max) const {
   return params_.mu_s + (2.0 * params_.sigma1 + params_.sigma2) * v_max;
 }
 
-std::string LuGreLaw::stateName(int i) const {
-  static constexpr const char* kNames[] = {"z.x", "z.y", "z.z"};
-  return kNames[std::clamp(i, 0, 2)];
-}
-
-void LuGreLaw::initialState(double* z) const { z[0] = z[1] = z[2] = 0.0; }
-
 void LuGreLaw::rate(const double* z, const Eigen::Vector3d& slip, double, double* zdot) const {
   const double v = slip.norm();
   const double k = params_.sigma0 * v / g(v);

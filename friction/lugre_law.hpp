@@ -25,7 +25,7 @@
 #include <string_view>
 #include <vector>
 
-#include "friction/dynamic_law.hpp"
+#include "friction/bristle_law.hpp"
 
 namespace tribo::friction {
 
@@ -38,7 +38,7 @@ struct LuGreParams {
   double v_s = 1e-3;                   // Stribeck speed [m/s], > 0
 };
 
-class LuGreLaw final : public DynamicFrictionLaw {
+class LuGreLaw final : public BristleLaw {
  public:
   // Throws FrictionParameterError when a rule above is broken or a value is not finite.
   explicit LuGreLaw(const LuGreParams& params);
@@ -50,13 +50,8 @@ class LuGreLaw final : public DynamicFrictionLaw {
   // |z| <= mu_s / sigma0).
   double maxCoefficient(double v_max) const override;
   double stickSpeed() const override { return params_.v_s; }
-  std::vector<double> breakpoints() const override { return {}; }
   std::string_view name() const override { return "lugre"; }
 
-  int stateSize() const override { return 3; }
-  int tangentVectors() const override { return 1; }
-  std::string stateName(int i) const override;
-  void initialState(double* z) const override;
   void rate(const double* z, const Eigen::Vector3d& slip, double fn, double* zdot) const override;
   Eigen::Vector3d force(const double* z, const double* zdot, const Eigen::Vector3d& slip, double fn,
                         double* mu_out) const override;

@@ -141,5 +141,21 @@ TEST(NormalLaw, EnergyIsTheIntegralOfTheElasticForce) {
   }
 }
 
+// The exponent the energy guard and the stability estimate use is the force's own: the
+// elastic force at rest, F(d) = k d^p, gives p = ln(F(d2) / F(d1)) / ln(d2 / d1), for every
+// law (hertz ignores the `exponent` field, whatever it holds).
+TEST(NormalLaw, ElasticExponentIsTheSlopeOfTheForceOnLogAxes) {
+  for (const NormalLaw& law : {NormalLaw{NormalLawType::kLinear, 1e5, 10.0, 2.7},
+                               NormalLaw{NormalLawType::kHertz, 1e9, 0.0, 2.7},
+                               NormalLaw{NormalLawType::kHuntCrossley, 1e7, 0.3, 1.3},
+                               NormalLaw{NormalLawType::kRecurDyn, 1e7, 50.0, 2.2, 1e-4}}) {
+    for (double d1 : {1e-7, 1e-5, 1e-3}) {
+      const double d2 = 3.0 * d1;
+      const double slope = std::log(law.force(d2, 0.0) / law.force(d1, 0.0)) / std::log(3.0);
+      EXPECT_NEAR(law.elasticExponent(), slope, 1e-12) << normalLawName(law.type) << " at " << d1;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tribo::contact

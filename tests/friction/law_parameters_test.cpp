@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -145,7 +146,34 @@ TEST(FrictionParameters, OptionsAreChecked) {
 TEST(FrictionParameters, UnknownLawListsTheKnownOnes) {
   const std::string message = errorFor({"karnopp", {}, {}});
   EXPECT_THAT(message, HasSubstr("unknown friction law 'karnopp'"));
-  EXPECT_THAT(message, HasSubstr("coulomb, recurdyn, adams, roh_yoo, stribeck"));
+  EXPECT_THAT(message, HasSubstr("coulomb, recurdyn, adams, roh_yoo, stribeck, elastic_stick, "
+                                 "lugre, dahl, elasto_plastic, gms, rate_state)"));
+}
+
+// The three name lists come from one table: no law in two of them, and each law's kind is
+// what its list says (memoryless: neither stateful nor dynamic).
+TEST(FrictionParameters, EachLawIsInTheListOfItsKind) {
+  std::set<std::string> seen;
+  for (const auto* list :
+       {&knownFrictionLaws(), &knownStatefulFrictionLaws(), &knownDynamicFrictionLaws()})
+    for (const std::string& name : *list) EXPECT_TRUE(seen.insert(name).second) << name;
+  EXPECT_EQ(seen.size(), 11u);
+  for (const std::string& name : knownStatefulFrictionLaws()) {
+    const auto law =
+        makeFrictionLaw({name, {{"mu_s", 0.5}, {"mu_k", 0.4}, {"stiffness", 1e5}}, {}});
+    EXPECT_TRUE(law->stateful()) << name;
+    EXPECT_EQ(law->dynamic(), nullptr) << name;
+  }
+  for (const std::string& name : knownDynamicFrictionLaws()) {
+    const auto law = makeFrictionLaw({name, {}, {}});  // every dynamic law has defaults
+    EXPECT_FALSE(law->stateful()) << name;
+    EXPECT_NE(law->dynamic(), nullptr) << name;
+  }
+  for (const std::string& name : knownFrictionLaws()) {
+    const auto law = makeFrictionLaw(table1(name));
+    EXPECT_FALSE(law->stateful()) << name;
+    EXPECT_EQ(law->dynamic(), nullptr) << name;
+  }
 }
 
 TEST(FrictionParameters, DirectConstructionValidatesToo) {
