@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "io/scene_parameters.hpp"
-#include "study/modes_report.hpp"
-#include "study/stability_boundary.hpp"
+#include "study/modes/modes_report.hpp"
+#include "study/modes/stability_boundary.hpp"
 
 namespace tribo::app {
 namespace {

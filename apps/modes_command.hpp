@@ -2,10 +2,10 @@
 //  [--growth-tolerance X] [--solver auto|dense|sparse] [--modes N]`: will steady sliding
 // squeal? Finds the scene's steady state, linearizes about it and prints its modes (all of
 // them by the dense eigensolver, the N of largest growth rate by the sparse one; auto picks
-// by size: study/modes.hpp says how); writes
-// DIR/modes.json and DIR/modes.csv (study/modes_report.hpp) and, with --boundary, bisects
+// by size: study/modes/modes.hpp says how); writes
+// DIR/modes.json and DIR/modes.csv (study/modes/modes_report.hpp) and, with --boundary, bisects
 // the parameter NAME over [LO, HI] for the value where the largest growth rate crosses zero
-// (study/stability_boundary.hpp) into DIR/boundary.json.
+// (study/modes/stability_boundary.hpp) into DIR/boundary.json.
 // Exit status: 0 stable, 1 usage, 2 bad scene or parameter (also: stateful friction, nothing
 // dynamic, a --boundary bracket without a crossing), 4 output error, 8 unstable (some mode
 // grows), 9 no steady state found, 10 the linearization or the eigenproblem failed.

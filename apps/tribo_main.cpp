@@ -35,7 +35,7 @@
 #include "study/result_writer.hpp"
 #include "study/run_progress.hpp"
 #include "study/scene_run.hpp"
-#include "study/view_page.hpp"
+#include "study/view/view_page.hpp"
 
 namespace {
 

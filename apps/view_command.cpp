@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "io/scene_parameters.hpp"
-#include "study/view_page.hpp"
-#include "study/view_sweep.hpp"
+#include "study/view/view_page.hpp"
+#include "study/view/view_sweep.hpp"
 
 namespace tribo::app {
 namespace {

@@ -1,5 +1,5 @@
 // `tribo view RUN_DIR [--frames N] [--three PATH]`: writes RUN_DIR/view.html, a replay of
-// the run that opens in a browser without a server (study/view_page.hpp; docs/view.md).
+// the run that opens in a browser without a server (study/view/view_page.hpp; docs/view.md).
 // Also used by `tribo run ... --view` after the run. Exit status: 0 written, 1 usage,
 // 2 the run folder, its scene or three.js cannot be read, 4 the page cannot be written.
 #pragma once

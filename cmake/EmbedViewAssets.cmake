@@ -1,6 +1,6 @@
 # Embeds the replay and sweep pages' templates (view/*.html, *.css, *.js) into a generated header,
-# study/view_assets.hpp in the build tree, as raw string literals: the page generator
-# (study/view_page.cpp) needs no files at run time but three.js. Each file must stay under
+# study/view/view_assets.hpp in the build tree, as raw string literals: the page generator
+# (study/view/view_page.cpp) needs no files at run time but three.js. Each file must stay under
 # 64 KiB (ISO C++'s guaranteed string literal length; -Woverlength-strings under -Wpedantic).
 function(tribo_embed_view_assets out_header)
   set(dir ${PROJECT_SOURCE_DIR}/view)

@@ -11,9 +11,9 @@
 #include "io/scene_parameters.hpp"
 #include "io/urdf_reader.hpp"
 #include "python/bindings.hpp"
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
+#include "study/modes/steady_state.hpp"
 #include "study/output_budget.hpp"
-#include "study/steady_state.hpp"
 #include "study/sweep/sweep_grid.hpp"
 
 namespace tribo::python {

@@ -1,7 +1,7 @@
 // Studies from Python: tribo.sweep runs a parameter sweep on the local cores as `tribo sweep`
 // does (study/sweep/sweep_runner.hpp: the same plan, the same results.csv) and returns its
 // rows as a list of dicts; tribo.modes analyses a scene's linear stability as `tribo modes`
-// does (study/modes.hpp) and returns the steady state's figures and the modes as a dict.
+// does (study/modes/modes.hpp) and returns the steady state's figures and the modes as a dict.
 // tribo.tradeoff measures the speed-accuracy ladder as `tribo tradeoff` does
 // (study/tradeoff.hpp) and returns its rows. The GIL is released while they run. Not here:
 // plotting.
@@ -16,7 +16,7 @@
 
 #include "python/bindings.hpp"
 #include "python/scene_handle.hpp"
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 #include "study/sweep/sweep_results.hpp"
 #include "study/sweep/sweep_runner.hpp"
 #include "study/tradeoff.hpp"

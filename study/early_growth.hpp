@@ -9,7 +9,7 @@
 // peak-to-peak stays within a factor `max_change` of the first one used (beyond it a growing
 // oscillation is meeting its nonlinearity, e.g. stick-slip, or a decaying one the noise).
 // At least `min_cycles`, else nothing is measured.
-// Not here: the linear prediction (study/modes.hpp), the cycles themselves, a run whose
+// Not here: the linear prediction (study/modes/modes.hpp), the cycles themselves, a run whose
 // start is far from the steady state (its first cycles are then not the linear regime: the
 // figure is what the run shows, not sigma).
 #pragma once

@@ -1,4 +1,4 @@
-// Cost of the stability analysis (tribo modes, study/modes.hpp) and the baseline it is read
+// Cost of the stability analysis (tribo modes, study/modes/modes.hpp) and the baseline it is read
 // against in the same process: the belt's in-plane pair from the hand-reduced equation
 //   m x'' + N mu'(v_b) x' + k x = 0   (the 2 x 2 companion matrix and its eigenvalues),
 // the cheapest possible answer. Names: BM_ModesLinearize/<scene> (basis, steps, central
@@ -10,9 +10,9 @@
 // without parsing the text again), BM_ModesChain/<law>/<n> (a chain of n boxes pressed on a
 // belt, tests/support/chain_on_belt.hpp), BM_ModesSolver/<dense|sparse>/<n> (the
 // eigensolvers alone on the chain's A, linearized once per n: every mode by Eigen's dense
-// solver against the 12 of largest growth rate by study/sparse_modes.hpp's band scan; the sparse
-// case reports dense_over_sparse, the ratio to the dense case's time measured just before in the
-// same process); BM_Baseline_BeltClosedForm.
+// solver against the 12 of largest growth rate by study/modes/sparse_modes.hpp's band scan; the
+// sparse case reports dense_over_sparse, the ratio to the dense case's time measured just before in
+// the same process); BM_Baseline_BeltClosedForm.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Eigenvalues>
@@ -25,7 +25,7 @@
 
 #include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 #include "study/sweep/sweep_point.hpp"
 #include "support/chain_on_belt.hpp"
 

@@ -3,7 +3,7 @@
 #include <exception>
 
 #include "io/scene_loader.hpp"
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
 

@@ -23,7 +23,7 @@ class SceneDocument;
 namespace tribo::study {
 
 // What a point computes: a run of the scene (the oscillation figures), or the linear
-// stability of its steady state (study/modes.hpp: largest growth rate, its frequency, the
+// stability of its steady state (study/modes/modes.hpp: largest growth rate, its frequency, the
 // number of unstable modes; milliseconds instead of a simulation).
 enum class SweepAnalysis { kRun, kModes };
 inline constexpr NameTable<SweepAnalysis, 2> kSweepAnalysisNames{

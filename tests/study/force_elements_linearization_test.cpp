@@ -1,4 +1,4 @@
-// study/linearization differentiates the whole evaluation, so bushings and torsional springs
+// study/modes/linearization differentiates the whole evaluation, so bushings and torsional springs
 // enter the linearized stiffness with no code of their own: a body on a bushing to the world
 // (gains all different, frame A turned) plus a torsional spring about frame A's z has the
 // squared frequencies k_i / m and k_ri / I_i, about z (k_rz + k_t) / I_z, as the eigenvalues
@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "core/model_builder.hpp"
-#include "study/linearization.hpp"
+#include "study/modes/linearization.hpp"
 
 namespace tribo::study {
 namespace {

@@ -16,7 +16,7 @@
 #include "io/mesh_loader.hpp"
 #include "io/scene_loader.hpp"
 #include "io/urdf_reader.hpp"
-#include "study/view_trajectory.hpp"
+#include "study/view/view_trajectory.hpp"
 
 namespace tribo {
 namespace {

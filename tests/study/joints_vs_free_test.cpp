@@ -19,7 +19,7 @@
 #include <sstream>
 
 #include "io/scene_loader.hpp"
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 #include "support/scene_text.hpp"
 
 namespace tribo::study {

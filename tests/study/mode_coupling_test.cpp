@@ -26,7 +26,7 @@
 #include <functional>
 #include <numbers>
 
-#include "study/stability_boundary.hpp"
+#include "study/modes/stability_boundary.hpp"
 
 namespace tribo::study {
 namespace {

@@ -17,7 +17,7 @@
 #include <cstdio>
 
 #include "io/scene_loader.hpp"
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 
 namespace tribo::study {
 namespace {

@@ -8,7 +8,7 @@
 //   sigma_z = -4 c_c / (2 m),  omega_z = sqrt(4 k_c / m - sigma_z^2),
 // and must come out stable. The oracle-free check: a run started 1 mm beside x_eq, whose
 // growth (or decay) rate is fitted to the logarithm of its first peaks.
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 
 #include <gtest/gtest.h>
 

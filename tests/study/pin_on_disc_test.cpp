@@ -25,7 +25,7 @@
 
 #include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 #include "study/scene_run.hpp"
 
 namespace tribo::study {

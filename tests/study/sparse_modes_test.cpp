@@ -1,4 +1,4 @@
-// The sparse eigensolver (study/sparse_modes.hpp) against what is known independently:
+// The sparse eigensolver (study/modes/sparse_modes.hpp) against what is known independently:
 //  - a block-diagonal A built here from 2 x 2 blocks [[s, w], [-w, s]] (eigenvalues s +- i w
 //    by construction), one growing pair buried among many decaying ones: the solver must
 //    find that pair, its frequency, its eigenvector on its block, and exactly the 12
@@ -9,7 +9,7 @@
 //  - a chain of boxes on a belt (tests/support/chain_on_belt.hpp, 240 states): the modes of
 //    the sparse solver against Eigen's dense solver on the same A;
 //  - refusals: too few states, a non-finite A.
-#include "study/sparse_modes.hpp"
+#include "study/modes/sparse_modes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@
 #include <random>
 #include <vector>
 
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 #include "support/chain_on_belt.hpp"
 
 namespace tribo::study {

@@ -1,8 +1,8 @@
-// The replay page's generator (study/view_page.hpp and its parts): decimation of
+// The replay page's generator (study/view/view_page.hpp and its parts): decimation of
 // trajectory.csv to a frame cap and a value budget, the scene's geometry as JSON, and a
 // page written from a real run with a stand-in three.js. The page's behaviour in a browser
 // is tested in tests/view/.
-#include "study/view_page.hpp"
+#include "study/view/view_page.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@
 #include "io/urdf_scene.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
-#include "study/view_scene.hpp"
-#include "study/view_trajectory.hpp"
+#include "study/view/view_scene.hpp"
+#include "study/view/view_trajectory.hpp"
 
 namespace fs = std::filesystem;
 using namespace tribo;

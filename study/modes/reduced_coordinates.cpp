@@ -1,4 +1,4 @@
-#include "study/reduced_coordinates.hpp"
+#include "study/modes/reduced_coordinates.hpp"
 
 #include <stdexcept>
 

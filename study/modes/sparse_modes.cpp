@@ -7,7 +7,7 @@
 #pragma GCC diagnostic ignored "-Wuse-after-free"
 #endif
 
-#include "study/sparse_modes.hpp"
+#include "study/modes/sparse_modes.hpp"
 
 #include <Spectra/GenEigsSolver.h>
 
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "study/modes_error.hpp"
+#include "study/modes/modes_error.hpp"
 
 namespace tribo::study {
 

@@ -1,4 +1,4 @@
-#include "study/steady_state.hpp"
+#include "study/modes/steady_state.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include "core/constraint_projection.hpp"
 #include "core/stability.hpp"
-#include "study/linearization.hpp"
-#include "study/reduced_coordinates.hpp"
+#include "study/modes/linearization.hpp"
+#include "study/modes/reduced_coordinates.hpp"
 
 namespace tribo::study {
 

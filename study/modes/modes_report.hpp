@@ -12,14 +12,14 @@
 //               full coordinate (e.g. box.x);
 //   boundary.json (with --boundary) the parameter, bracket, critical value, growth rates
 //               at the ends and the number of analyses.
-// Not here: the analysis (study/modes.hpp), printing (apps/modes_command.cpp).
+// Not here: the analysis (study/modes/modes.hpp), printing (apps/modes_command.cpp).
 #pragma once
 
 #include <filesystem>
 
 #include "io/scene_loader.hpp"
-#include "study/modes.hpp"
-#include "study/stability_boundary.hpp"
+#include "study/modes/modes.hpp"
+#include "study/modes/stability_boundary.hpp"
 
 namespace tribo::study {
 

@@ -1,10 +1,10 @@
 // The steady state of a scene: the configuration where every dynamic body is at rest while
 // kinematic bodies and belt surfaces keep their motion (a belt's surface velocity makes
 // steady sliding a true equilibrium), i.e. the root of the reduced accelerations
-//   g(q) = q''(x0 + N q, v = 0) = 0           (study/reduced_coordinates.hpp)
+//   g(q) = q''(x0 + N q, v = 0) = 0           (study/modes/reduced_coordinates.hpp)
 // found by Newton's method on the full model (springs, contacts, friction at the steady
 // slip, joint constraints): the Jacobian dg/dq by central differences
-// (study/linearization.hpp), the step dq = -(dg/dq)^-1 g halved until |g| falls (Armijo
+// (study/modes/linearization.hpp), the step dq = -(dg/dq)^-1 g halved until |g| falls (Armijo
 // backtracking), the new configuration projected back onto the joint constraints
 // (core/constraint_projection.hpp) and the basis N rebuilt there. It converges when
 // max |g| <= tolerance.
@@ -18,8 +18,8 @@
 // named: e.g. a box on a belt with no spring), when the line search stalls or the
 // iterations run out; std::invalid_argument for a scene with nothing to move.
 // Not here: stateful friction (its anchors would hold any configuration: refused by
-// study/modes.hpp), steady motions other than rest (a spinning dynamic disc), periodic
-// orbits, the stability of the state (study/modes.hpp).
+// study/modes/modes.hpp), steady motions other than rest (a spinning dynamic disc), periodic
+// orbits, the stability of the state (study/modes/modes.hpp).
 #pragma once
 
 #include <memory>

@@ -14,7 +14,7 @@
 // of J along the manifold keeps its first-order share, the constraint forces' geometric
 // stiffness (Blajer 2002, Multibody System Dynamics 7:265-284, projective formulation).
 // Not here: rheonomic constraints (drives are treated as frozen at t), time stepping,
-// deciding which state to linearize about (study/steady_state.hpp).
+// deciding which state to linearize about (study/modes/steady_state.hpp).
 #pragma once
 
 #include <Eigen/Dense>

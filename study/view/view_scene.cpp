@@ -1,4 +1,4 @@
-#include "study/view_scene.hpp"
+#include "study/view/view_scene.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,5 +1,5 @@
 // The linearized equations of motion about a state, by central finite differences of
-// Dynamics::evaluate in independent coordinates (study/reduced_coordinates.hpp):
+// Dynamics::evaluate in independent coordinates (study/modes/reduced_coordinates.hpp):
 //   q'' = g(q, u),   K = dg/dq,   C = dg/du  at q = u = 0,
 //   column j of K ~ (g(h e_j, 0) - g(-h e_j, 0)) / (2 h)   (error O(h^2), rounding O(eps/h))
 // and the first-order system  y' = A y,  y = (q, u),  A = [[0, I], [K, C]].
@@ -16,9 +16,9 @@
 // Internal states of dynamic friction laws (friction/dynamic_law.hpp) enter as a third
 // block y = (q, u, z): the columns for q and u also give dz'/dq and dz'/du, and each state
 // value z_i is stepped by h_z = 1e-4 |z_i| + 1e-12 (the states' own scale) for dq''/dz and
-// dz'/dz; the records stay those of `at` (study/modes.cpp settles them first).
-// Not here: elastic_stick's anchors (study/modes.cpp refuses them), analytic derivatives,
-// choosing the state (study/steady_state.hpp).
+// dz'/dz; the records stay those of `at` (study/modes/modes.cpp settles them first).
+// Not here: elastic_stick's anchors (study/modes/modes.cpp refuses them), analytic derivatives,
+// choosing the state (study/modes/steady_state.hpp).
 #pragma once
 
 #include <Eigen/Dense>
@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "core/dynamics.hpp"
-#include "study/reduced_coordinates.hpp"
+#include "study/modes/reduced_coordinates.hpp"
 
 namespace tribo::study {
 

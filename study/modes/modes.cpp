@@ -1,4 +1,4 @@
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -3,13 +3,13 @@
 // parameters (lines over one; with more, the first two at the others' first values), each
 // point linked to its own replay page when the sweep kept its trajectory (points/<point>/,
 // whose view.html is written too, up to a count). No three.js: a canvas only.
-// Not here: a run's replay (study/view_page.hpp), running sweeps (study/sweep/).
+// Not here: a run's replay (study/view/view_page.hpp), running sweeps (study/sweep/).
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
 
-#include "study/view_page.hpp"
+#include "study/view/view_page.hpp"
 
 namespace tribo::study {
 

@@ -1,7 +1,7 @@
-// A model's geometry for the replay page (study/view_page.hpp), as JSON text: per body its
+// A model's geometry for the replay page (study/view/view_page.hpp), as JSON text: per body its
 // name, kind, initial pose, surface velocity and geometries (shape, dimensions, local pose;
 // meshes as vertex and triangle lists up to a size cap), and the world's geometries.
-// Not here: the motion (study/view_trajectory.hpp), drawing (view/scene.js).
+// Not here: the motion (study/view/view_trajectory.hpp), drawing (view/scene.js).
 #pragma once
 
 #include <string>

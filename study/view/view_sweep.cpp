@@ -1,4 +1,4 @@
-#include "study/view_sweep.hpp"
+#include "study/view/view_sweep.hpp"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -9,8 +9,8 @@
 
 #include "io/file_read.hpp"
 #include "study/file_commit.hpp"
-#include "study/view_assets.hpp"
-#include "study/view_trajectory.hpp"
+#include "study/view/view_assets.hpp"
+#include "study/view/view_trajectory.hpp"
 
 namespace tribo::study {
 

@@ -1,4 +1,4 @@
-#include "study/view_trajectory.hpp"
+#include "study/view/view_trajectory.hpp"
 
 #include <algorithm>
 #include <cmath>

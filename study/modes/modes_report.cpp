@@ -1,4 +1,4 @@
-#include "study/modes_report.hpp"
+#include "study/modes/modes_report.hpp"
 
 #include <cmath>
 #include <nlohmann/json.hpp>

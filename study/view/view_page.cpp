@@ -1,4 +1,4 @@
-#include "study/view_page.hpp"
+#include "study/view/view_page.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -14,9 +14,9 @@
 #include "io/urdf_scene.hpp"
 #include "study/csv_text.hpp"
 #include "study/file_commit.hpp"
-#include "study/view_assets.hpp"
-#include "study/view_scene.hpp"
-#include "study/view_trajectory.hpp"
+#include "study/view/view_assets.hpp"
+#include "study/view/view_scene.hpp"
+#include "study/view/view_trajectory.hpp"
 
 namespace tribo::study {
 

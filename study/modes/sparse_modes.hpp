@@ -1,4 +1,4 @@
-// The few eigenpairs of a large real matrix A (y' = A y, study/linearization.hpp) that decide
+// The few eigenpairs of a large real matrix A (y' = A y, study/modes/linearization.hpp) that decide
 // its stability: those of largest growth rate Re(lambda) among the eigenvalues near the
 // imaginary axis, found by scanning the frequency band with shift-and-invert Arnoldi at
 // shifts sigma_k = i w_k (Saad, "Numerical Methods for Large Eigenvalue Problems", 2nd ed.,
@@ -26,8 +26,8 @@
 // the discs (far left of the axis, stiff heavily damped or real ones, or above `top`),
 // multiplicities (eigenvalues within the deduplication tolerance are reported once).
 //
-// Not here: mode shapes and sorting (study/modes.hpp), the dense solver (Eigen::EigenSolver in
-// study/modes.cpp), generalized problems (M y' = A y).
+// Not here: mode shapes and sorting (study/modes/modes.hpp), the dense solver (Eigen::EigenSolver
+// in study/modes/modes.cpp), generalized problems (M y' = A y).
 #pragma once
 
 #include <Eigen/Dense>
@@ -57,10 +57,10 @@ struct SparseEigenpairs {
 // w_max above: max_i (sqrt|(A^2)_ii| + |A_ii|) (1 when that is 0).
 double bandBound(const Eigen::MatrixXd& a);
 
-// Throws LinearizationFailure (study/modes_error.hpp) when A is not finite, A - sigma I cannot
-// be factorized, an Arnoldi run does not converge, the scan needs more than max_shifts shifts
-// or a residual is too large; ModesError when count < 1 or A has fewer than
-// 2 per_shift + 4 states (use the dense solver).
+// Throws LinearizationFailure (study/modes/modes_error.hpp) when A is not finite, A - sigma I
+// cannot be factorized, an Arnoldi run does not converge, the scan needs more than max_shifts
+// shifts or a residual is too large; ModesError when count < 1 or A has fewer than 2 per_shift + 4
+// states (use the dense solver).
 SparseEigenpairs sparseEigenpairs(const Eigen::MatrixXd& a, const SparseEigenOptions& options);
 
 }  // namespace tribo::study

@@ -1,4 +1,4 @@
-// A run's trajectory.csv read for the replay page (study/view_page.hpp): the header, and
+// A run's trajectory.csv read for the replay page (study/view/view_page.hpp): the header, and
 // every stride-th row (plus the last) so that the page holds at most `frame_cap` frames and
 // at most `value_budget` numbers in all. Two passes over the file (count, then keep), so a
 // long run never sits in memory whole. Not here: writing the page, the scene's geometry.

@@ -1,6 +1,6 @@
 // Where steady sliding turns unstable along one scene parameter: bisection on the sign of
 //   s(p) = sigma_max(p) - growth_tolerance
-// (sigma_max the largest growth rate of study/modes.hpp with the parameter set to p through
+// (sigma_max the largest growth rate of study/modes/modes.hpp with the parameter set to p through
 // the scene's `--set` overrides), from a bracket [lo, hi] where s changes sign, halving it
 // until hi - lo <= tolerance. Each evaluation reloads the scene (the model is immutable and
 // everything derived from the parameter follows) and redoes the steady state, linearization
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "study/modes.hpp"
+#include "study/modes/modes.hpp"
 
 namespace tribo::study {
 

@@ -1,6 +1,6 @@
 // Will it squeal? The linear stability of a scene's steady state (complex eigenvalue
-// analysis). The steady state comes from study/steady_state.hpp, the linearized system
-// y' = A y from study/linearization.hpp; the eigenvalues lambda = sigma + i omega of A give
+// analysis). The steady state comes from study/modes/steady_state.hpp, the linearized system
+// y' = A y from study/modes/linearization.hpp; the eigenvalues lambda = sigma + i omega of A give
 // per mode
 //   frequency f = |omega| / (2 pi) [Hz],  growth rate sigma [1/s],
 //   damping ratio zeta = -sigma / |lambda|  (1 for a real, decaying lambda; -1 growing),
@@ -11,7 +11,7 @@
 // Two eigensolvers (ModesSpec::solver): dense, every eigenpair (Eigen::EigenSolver, cubic in
 // the states), and sparse, the `sparse_modes` modes of largest growth rate among those near
 // the imaginary axis (shift-and-invert Arnoldi scanning the frequency band,
-// study/sparse_modes.hpp; residual-checked). auto takes
+// study/modes/sparse_modes.hpp; residual-checked). auto takes
 // the dense one up to kSparseAboveStates states and the sparse one above, falling back to
 // the dense one with a warning when the sparse one fails (docs/stability.md has the timings
 // the threshold comes from). The sparse solver's unstable_count counts the modes it returned.
@@ -21,7 +21,7 @@
 // non-finite linearization, an eigenproblem that fails); NoSteadyState from the steady-state
 // search. Never a table of NaN.
 // Not here: the internal states of stateful friction laws, nonlinear (limit-cycle)
-// amplitudes, modes outside the sparse solver's scanned discs (study/sparse_modes.hpp says
+// amplitudes, modes outside the sparse solver's scanned discs (study/modes/sparse_modes.hpp says
 // what its scan certifies), files (apps/modes_command.cpp).
 #pragma once
 
@@ -30,10 +30,10 @@
 #include <vector>
 
 #include "io/scene_loader.hpp"
-#include "study/linearization.hpp"
-#include "study/modes_error.hpp"
-#include "study/sparse_modes.hpp"
-#include "study/steady_state.hpp"
+#include "study/modes/linearization.hpp"
+#include "study/modes/modes_error.hpp"
+#include "study/modes/sparse_modes.hpp"
+#include "study/modes/steady_state.hpp"
 
 namespace tribo::study {
 
@@ -44,7 +44,7 @@ inline constexpr int kSparseAboveStates = 200;
 
 struct ModesSpec {
   SteadyStateOptions steady;
-  double check_tolerance = 1e-4;   // finite-difference step check (study/linearization.hpp)
+  double check_tolerance = 1e-4;   // finite-difference step check (study/modes/linearization.hpp)
   double growth_tolerance = 1e-6;  // sigma above this is unstable [1/s]
   EigenSolverChoice solver = EigenSolverChoice::kAuto;
   int sparse_modes = 12;  // modes the sparse solver returns (a complex pair once)

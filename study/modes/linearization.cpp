@@ -1,4 +1,4 @@
-#include "study/linearization.hpp"
+#include "study/modes/linearization.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "study/stability_boundary.hpp"
+#include "study/modes/stability_boundary.hpp"
 
 #include <cmath>
 #include <cstdio>
