@@ -10,7 +10,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -26,8 +25,8 @@
 #include "apps/tradeoff_command.hpp"
 #include "apps/view_command.hpp"
 #include "io/scene_loader.hpp"
+#include "io/scene_source.hpp"
 #include "io/urdf_reader.hpp"
-#include "io/urdf_scene.hpp"
 #include "study/dir_lock.hpp"
 #include "study/early_growth.hpp"
 #include "study/orbit_shape.hpp"
@@ -229,20 +228,12 @@ int run(const std::vector<std::string>& args) {
 
   tribo::io::Scene scene;
   try {
-    // A URDF by its content (an XML <robot> root), whatever the extension (.URDF, .xml), or
-    // by its name when its content is not even XML (the reader then says what it is).
-    std::string ext = std::filesystem::path(scene_path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    tribo::io::RunSettings settings;
-    settings.threads = threads;
-    const bool urdf = tribo::io::looksLikeUrdf(scene_path) || ext == ".urdf";
-    scene = urdf ? tribo::io::sceneFromUrdf(scene_path, package_paths, overrides, read)
-                 : tribo::io::loadScene(scene_path, overrides, package_paths, settings);
-    if (urdf && threads) {
-      auto model = std::make_shared<tribo::Model>(*scene.model);
-      model->options.threads = *threads;
-      scene.model = std::move(model);
-    }
+    tribo::io::SceneRequest request;
+    request.overrides = overrides;
+    request.package_paths = package_paths;
+    request.settings.threads = threads;
+    request.urdf = read;
+    scene = tribo::io::loadAnyScene(scene_path, request);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 2;

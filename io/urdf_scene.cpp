@@ -76,7 +76,12 @@ const std::vector<std::string>& urdfSceneSettings() {
 }
 
 Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& package_paths,
-                    const std::vector<std::string>& overrides, const UrdfReadOptions& read) {
+                    const std::vector<std::string>& overrides, const UrdfReadOptions& read,
+                    const RunSettings& run) {
+  if (run.integrator || run.time_step || run.duration || run.relative_tolerance ||
+      run.absolute_tolerance || run.event_location || run.output_interval)
+    throw SceneError(path + ": a URDF run takes its integrator, step and duration as --set " +
+                     "integrator=, dt=, duration= (its run settings take threads only)");
   std::map<std::string, std::string> settings = defaultSettings();
   if (const std::size_t bad = firstBadUtf8(path); bad != std::string::npos)
     throw SceneError("URDF file path '" + printableText(path) + "': expected UTF-8 text, found " +
@@ -221,6 +226,7 @@ Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& pac
   } else {
     builder.options().time_step = number("dt");
   }
+  if (run.threads) builder.options().threads = *run.threads;
   checkRunOptions(builder.options(), path, RunSettingKeys::urdf());
 
   Scene scene;

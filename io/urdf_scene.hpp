@@ -31,8 +31,11 @@ namespace tribo::io {
 // The names --set may give a URDF run (the settings above), sorted.
 const std::vector<std::string>& urdfSceneSettings();
 
+// `run.threads` replaces the run's threads of one force evaluation (default 1); the other run
+// settings of a URDF run are the --set names above, and giving them in `run` is a SceneError.
 // Throws SceneError (unknown --set name, bad value) or UrdfError.
 Scene sceneFromUrdf(const std::string& path, const std::vector<std::string>& package_paths,
-                    const std::vector<std::string>& overrides, const UrdfReadOptions& read = {});
+                    const std::vector<std::string>& overrides, const UrdfReadOptions& read = {},
+                    const RunSettings& run = {});
 
 }  // namespace tribo::io

@@ -10,6 +10,7 @@
 
 #include "io/file_read.hpp"
 #include "io/scene_loader.hpp"
+#include "io/scene_source.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
 #include "study/csv_text.hpp"
@@ -91,17 +92,18 @@ ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOption
     // A robot run from its URDF alone (`tribo run ROBOT.urdf`) reloads as `tribo run` loaded
     // it: its settings are the parameters recorded. Its --package-path folders are not
     // recorded: they come again from options.package_paths (or ROS_PACKAGE_PATH).
-    if (io::looksLikeUrdf(scene_path)) {
+    io::SceneRequest request;
+    request.package_paths = options.package_paths;
+    if (io::isUrdfScene(scene_path)) {
       // summary.json also records what the run derived (support_points...): only the
       // settings go back in.
-      std::vector<std::string> settings;
       for (const std::string& o : overrides)
         for (const std::string& name : io::urdfSceneSettings())
-          if (o.rfind(name + "=", 0) == 0) settings.push_back(o);
-      scene = io::sceneFromUrdf(scene_path, options.package_paths, settings);
+          if (o.rfind(name + "=", 0) == 0) request.overrides.push_back(o);
     } else {
-      scene = io::loadScene(scene_path, overrides, options.package_paths);
+      request.overrides = overrides;
     }
+    scene = io::loadAnyScene(scene_path, request);
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot reload the run's scene '" + scene_path + "' (" + e.what() +
                              "); run tribo view from the folder the run was started in");
