@@ -13,6 +13,34 @@
 
 namespace tribo::io::scene_detail {
 
+namespace {
+
+// A scene whose geometries could touch but that gives no contact at all: no `contacts:` list
+// and no material that is the default or names surface pairs, so every body passes through
+// every other. Said before the run (empty when some contact is modelled, or when no two
+// geometries on different bodies, one of them moving, exist).
+std::string noContactNote(const Model& model) {
+  if (model.automatic_contacts || !model.contact_pairs.empty()) return {};
+  const Geometry* moving = nullptr;
+  for (const Geometry& g : model.geometries)
+    if (!g.body.isWorld() && model.bodies[g.body.value].kind == BodyKind::kDynamic) {
+      moving = &g;
+      break;
+    }
+  if (moving == nullptr) return {};
+  for (const Geometry& g : model.geometries) {
+    if (&g == moving || (!g.body.isWorld() && g.body.value == moving->body.value)) continue;
+    return "no contact is modelled: the scene lists no contacts: and no material is "
+           "`default: true` or names `surfaces:`, so geometry '" +
+           moving->name + "' passes through '" + g.name +
+           "' and every other (add `default: true` to a material, or list the pairs under "
+           "contacts:)";
+  }
+  return {};
+}
+
+}  // namespace
+
 Scene Loader::load(const std::vector<std::string>& overrides, const RunSettings& settings) {
   const Value root(file_, params_, root_, "");
   const Map m(root, scene_keys::kTop);
@@ -60,6 +88,7 @@ Scene Loader::load(const std::vector<std::string>& overrides, const RunSettings&
           "A/B.z.x needs friction_states)");
   }
   noteSurfaceVelocityOffTheSurface(*scene.model);
+  if (std::string note = noContactNote(*scene.model); !note.empty()) notes_.push_back(note);
   scene.parameters = params_.values();
   scene.notes = notes_;
   return scene;
