@@ -10,6 +10,7 @@
 
 #include "contact/dynamic_friction.hpp"
 #include "contact/stick_anchor.hpp"
+#include "support/contact_point_at.hpp"
 
 namespace tribo::contact {
 namespace {
@@ -17,13 +18,7 @@ namespace {
 using Eigen::Vector3d;
 
 ContactPoint point(int pair, int feature, const Vector3d& p) {
-  ContactPoint cp;
-  cp.pair = pair;
-  cp.feature = feature;
-  cp.position = p;
-  cp.normal = Vector3d::UnitZ();
-  cp.depth = 1e-4;
-  return cp;
+  return test::contactPointAt(pair, feature, p);
 }
 
 template <class Record>

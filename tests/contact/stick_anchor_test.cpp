@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/contact_point_at.hpp"
+
 namespace tribo::contact {
 namespace {
 
@@ -12,13 +14,7 @@ using Eigen::Isometry3d;
 using Eigen::Vector3d;
 
 ContactPoint point(int pair, int feature, const Vector3d& p) {
-  ContactPoint cp;
-  cp.pair = pair;
-  cp.feature = feature;
-  cp.position = p;
-  cp.normal = Vector3d::UnitZ();
-  cp.depth = 1e-4;
-  return cp;
+  return test::contactPointAt(pair, feature, p);
 }
 
 TEST(StickAnchor, FeaturePointsKeepTheirKeyAndOthersMatchTheNearestWithinTheRadius) {
