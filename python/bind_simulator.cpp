@@ -15,6 +15,7 @@
 #include "python/bindings.hpp"
 #include "python/python_law.hpp"
 #include "python/scene_handle.hpp"
+#include "study/result_writer.hpp"
 
 namespace tribo::python {
 namespace {
@@ -198,17 +199,12 @@ void bindSimulator(py::module_& m) {
           "contacts", [](PySimulator& s) { return contactsOf(*s.model, s.sim.current()); },
           "The contact points of the current state: position, normal (A into B), depth, "
           "normal_force, friction_force (on B), slip (B rel. A), mu, body_a, body_b.")
-      .def_property_readonly("stats", [](const PySimulator& s) {
-        const StepStats& st = s.sim.stats();
-        py::dict d;
-        d["steps"] = st.steps;
-        d["evaluations"] = st.evaluations;
-        d["max_penetration"] = st.max_penetration;
-        d["max_constraint_error"] = st.max_constraint_error;
-        d["integrator_steps"] = st.integrator_steps;
-        d["rejected_steps"] = st.rejected_steps;
-        return d;
-      });
+      .def_property_readonly(
+          "stats",
+          [](const PySimulator& s) {
+            return jsonToPython(study::stepStatsJsonText(s.sim.stats()));
+          },
+          "The run statistics so far, as summary.json's \"run\" block names them.");
 }
 
 }  // namespace tribo::python

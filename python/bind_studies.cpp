@@ -17,6 +17,7 @@
 #include "python/bindings.hpp"
 #include "python/scene_handle.hpp"
 #include "study/modes/modes.hpp"
+#include "study/modes/modes_report.hpp"
 #include "study/sweep/sweep_results.hpp"
 #include "study/sweep/sweep_runner.hpp"
 #include "study/tradeoff.hpp"
@@ -134,22 +135,8 @@ py::list runSweep(const py::object& scene, const py::dict& grid, const py::objec
   }
 }
 
-py::dict modeDict(const study::Mode& mode) {
-  py::dict d;
-  d["eigenvalue"] = mode.eigenvalue;
-  d["frequency"] = mode.frequency;
-  d["growth_rate"] = mode.growth_rate;
-  d["damping_ratio"] = mode.damping_ratio;
-  d["unstable"] = mode.unstable;
-  d["dominant"] = mode.dominant;
-  py::dict shape;
-  for (const study::ShapeEntry& e : mode.shape)
-    shape[py::str(e.coordinate)] = py::make_tuple(e.magnitude, e.phase_deg);
-  d["shape"] = shape;  // coordinate -> (magnitude, phase [deg])
-  return d;
-}
-
-py::dict runModes(const SceneHandle& scene, bool settle, double settle_time) {
+// modes.json's document as a dict (study/modes/modes_report.hpp spells its fields).
+py::object runModes(const SceneHandle& scene, bool settle, double settle_time) {
   study::ModesSpec spec;
   spec.steady.settle = settle;
   spec.steady.settle_time = settle_time;
@@ -158,18 +145,7 @@ py::dict runModes(const SceneHandle& scene, bool settle, double settle_time) {
     py::gil_scoped_release release;
     r = study::analyzeModes(scene.scene, spec);
   }
-  py::dict d;
-  py::list modes;
-  for (const study::Mode& mode : r.modes) modes.append(modeDict(mode));
-  d["modes"] = modes;
-  d["unstable"] = r.unstable_count;
-  d["coordinates"] = r.coordinates;
-  d["steady_residual"] = r.steady.residual;
-  d["steady_iterations"] = r.steady.iterations;
-  d["worst_disagreement"] = r.worst_disagreement;
-  d["warnings"] = r.warnings;
-  d["seconds"] = r.steady_seconds + r.linearize_seconds;
-  return d;
+  return jsonToPython(study::modesJsonText(scene.scene, r));
 }
 
 py::list runTradeoff(const py::object& scene, const py::object& set,
@@ -202,21 +178,20 @@ py::list runTradeoff(const py::object& scene, const py::object& set,
     py::gil_scoped_release release;
     result = study::measureTradeoff(spec);
   }
+  // tradeoff.csv's columns (study::tradeoffFields), numbers at full precision, NaN for none.
+  const std::string scene_name = std::filesystem::path(spec.scene_path).stem().string();
   py::list rows;
   for (const study::TradeoffRow& r : result.rows) {
     py::dict d;
-    d["setting"] = r.setting.label();
-    d["integrator"] = integratorName(r.setting.integrator);
-    d[r.setting.valueName()] = r.setting.value();
-    d["status"] = r.status;
-    d["message"] = r.message;
-    d["amplitude"] = r.amplitude;
-    d["amplitude_error"] = r.amplitude_error;
-    d["trajectory_error"] = r.trajectory_error;
-    d["wall"] = r.wall;
-    d["cpu"] = r.cpu;
-    d["steps"] = r.steps;
-    d["evaluations"] = r.evaluations;
+    for (const study::TradeoffField& f : study::tradeoffFields(scene_name, r)) {
+      using K = study::TradeoffField::Kind;
+      if (f.kind == K::kNumber)
+        d[f.name] = f.number;
+      else if (f.kind == K::kCount)
+        d[f.name] = f.count;
+      else
+        d[f.name] = f.text;
+    }
     rows.append(d);
   }
   return rows;
@@ -235,14 +210,16 @@ void bindStudies(py::module_& m) {
   m.def("modes", &runModes, py::arg("scene"), py::arg("settle") = false,
         py::arg("settle_time") = 0.0,
         "modes(scene, settle=False) -> dict: the linear stability of the scene's steady "
-        "sliding, as `tribo modes` computes it (modes sorted by decreasing growth rate; "
-        "'unstable' counts the unstable ones). Raises NoSteadyState, ModesError.");
+        "sliding, as `tribo modes` computes it: modes.json's document (modes sorted by "
+        "decreasing growth rate, 'unstable_count' the unstable ones; a figure that is not "
+        "finite is None). Raises NoSteadyState, ModesError.");
   m.def("tradeoff", &runTradeoff, py::arg("scene"), py::arg("set") = py::none(),
         py::arg("integrators") = std::vector<std::string>{}, py::arg("window") = 10.0,
         py::arg("repeat") = 1,
         "tradeoff(scene_file, set={...}, integrators=[...], window=10, repeat=1) -> list of "
-        "dicts, one per setting (the rows of tradeoff.csv; the first is the reference at half "
-        "its step), as `tribo tradeoff` measures them: amplitude and trajectory errors "
+        "dicts, one per setting (tradeoff.csv's columns and rows at full precision, NaN for "
+        "an empty field; the first is the reference at half its step), as `tribo tradeoff` "
+        "measures them: amplitude and trajectory errors "
         "against a converged reference, and the processor time.");
 }
 

@@ -20,6 +20,18 @@ namespace {
 // JSON has no NaN or infinity: a non-finite figure is written as null.
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; }
 
+nlohmann::json stepStatsJson(const StepStats& stats) {
+  return {{"steps", stats.steps},
+          {"max_penetration", stats.max_penetration},
+          {"max_constraint_error", stats.max_constraint_error},
+          {"max_constraint_rate_error", stats.max_constraint_rate_error},
+          {"integrator_steps", stats.integrator_steps},
+          {"rejected_steps", stats.rejected_steps},
+          {"force_evaluations", stats.evaluations},
+          {"events", stats.events},
+          {"joint_friction_unconverged_steps", stats.joint_friction_unconverged}};
+}
+
 }  // namespace
 
 TrajectoryCsvFile::TrajectoryCsvFile(const std::filesystem::path& file,
@@ -171,21 +183,15 @@ std::string summaryJsonText(const io::Scene& scene, const RunResult& result) {
                       {"mean", number(c.mean)}});
   }
   j["cycles"] = listed;
-  j["run"] = {
-      {"simulated_seconds", result.simulated_seconds},
-      {"steps", result.stats.steps},
-      {"wall_seconds", result.wall_seconds},
-      {"simulated_seconds_per_wall_second", number(result.simulated_seconds / result.wall_seconds)},
-      {"max_penetration", result.stats.max_penetration},
-      {"max_constraint_error", result.stats.max_constraint_error},
-      {"max_constraint_rate_error", result.stats.max_constraint_rate_error},
-      {"integrator_steps", result.stats.integrator_steps},
-      {"rejected_steps", result.stats.rejected_steps},
-      {"force_evaluations", result.stats.evaluations},
-      {"events", result.stats.events},
-      {"joint_friction_unconverged_steps", result.stats.joint_friction_unconverged}};
+  j["run"] = stepStatsJson(result.stats);
+  j["run"]["simulated_seconds"] = result.simulated_seconds;
+  j["run"]["wall_seconds"] = result.wall_seconds;
+  j["run"]["simulated_seconds_per_wall_second"] =
+      number(result.simulated_seconds / result.wall_seconds);
   return j.dump(2);
 }
+
+std::string stepStatsJsonText(const StepStats& stats) { return stepStatsJson(stats).dump(); }
 
 void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
                       const RunResult& result) {

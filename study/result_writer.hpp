@@ -47,6 +47,9 @@ void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
                       const RunResult& result);
 // The text writeSummaryJson writes (without its final newline), e.g. for the Python module.
 std::string summaryJsonText(const io::Scene& scene, const RunResult& result);
+// The run statistics of summary.json's "run" block (steps, penetration, constraint drift,
+// evaluations, ...) as a JSON object's text: also the Python Simulator's stats dict.
+std::string stepStatsJsonText(const StepStats& stats);
 // Both files into `dir` (created if missing), from a recorder that keeps its rows.
 void writeResults(const std::filesystem::path& dir, const io::Scene& scene,
                   const RunResult& result);

@@ -248,19 +248,48 @@ const TradeoffRow* cheapestRow(const std::vector<TradeoffRow>& rows, double targ
   return best;
 }
 
+std::vector<TradeoffField> tradeoffFields(const std::string& scene_name, const TradeoffRow& o) {
+  using K = TradeoffField::Kind;
+  auto number = [](const char* name, double v, int digits) {
+    return TradeoffField{name, K::kNumber, v, 0, {}, digits};
+  };
+  auto counted = [](const char* name, long v) {
+    return TradeoffField{name, K::kCount, 0.0, v, {}, 0};
+  };
+  auto text = [](const char* name, std::string v) {
+    return TradeoffField{name, K::kText, 0.0, 0, std::move(v), 0};
+  };
+  return {text("scene", scene_name),
+          text("integrator", o.setting.label()),
+          text("setting", o.setting.valueName()),
+          number("value", o.setting.value(), 6),
+          text("status", o.status),
+          number("amplitude", o.amplitude, 9),
+          number("amplitude_error", o.amplitude_error, 4),
+          number("trajectory_error", o.trajectory_error, 4),
+          number("wall_seconds", o.wall, 6),
+          number("cpu_seconds", o.cpu, 6),
+          number("sim_seconds_per_cpu_second", o.simulated / o.cpu, 6),
+          counted("steps", o.steps),
+          counted("rejected_steps", o.rejected),
+          counted("force_evaluations", o.evaluations),
+          counted("events", o.events),
+          text("message", o.message)};
+}
+
 void writeTradeoffCsv(const std::filesystem::path& file, const std::string& scene_name,
                       const std::vector<TradeoffRow>& rows) {
-  std::string text =
-      "scene,integrator,setting,value,status,amplitude,amplitude_error,trajectory_error,"
-      "wall_seconds,cpu_seconds,sim_seconds_per_cpu_second,steps,rejected_steps,"
-      "force_evaluations,events,message\n";
-  for (const TradeoffRow& o : rows)
-    text += csvLine({scene_name, o.setting.label(), o.setting.valueName(),
-                     csvNumber(o.setting.value(), 6), o.status, csvNumber(o.amplitude, 9),
-                     csvNumber(o.amplitude_error, 4), csvNumber(o.trajectory_error, 4),
-                     csvNumber(o.wall, 6), csvNumber(o.cpu, 6), csvNumber(o.simulated / o.cpu, 6),
-                     count(o.steps), count(o.rejected), count(o.evaluations), count(o.events),
-                     o.message});
+  std::vector<std::string> header;
+  for (const TradeoffField& f : tradeoffFields(scene_name, TradeoffRow{})) header.push_back(f.name);
+  std::string text = csvLine(header);
+  for (const TradeoffRow& o : rows) {
+    std::vector<std::string> fields;
+    for (const TradeoffField& f : tradeoffFields(scene_name, o))
+      fields.push_back(f.kind == TradeoffField::Kind::kNumber  ? csvNumber(f.number, f.digits)
+                       : f.kind == TradeoffField::Kind::kCount ? count(f.count)
+                                                               : f.text);
+    text += csvLine(fields);
+  }
   writeFileWhole(file, text);
 }
 

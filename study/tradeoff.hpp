@@ -88,7 +88,23 @@ TradeoffResult measureTradeoff(const TradeoffSpec& spec,
 // error (and trajectory error, when `both`) is at most `target`; nullptr when none is.
 const TradeoffRow* cheapestRow(const std::vector<TradeoffRow>& rows, double target, bool both);
 
-// DIR/tradeoff.csv: one row per run (columns in the README), written whole or not at all
+// One field of a row as tradeoff.csv and the Python module's tradeoff() give it: a number
+// (the file keeps `digits` significant digits; non-finite is an empty field), a count or a
+// text. The one place the columns are named.
+struct TradeoffField {
+  enum class Kind { kNumber, kCount, kText };
+  const char* name;
+  Kind kind;
+  double number = 0.0;
+  long count = 0;
+  std::string text;
+  int digits = 6;
+};
+
+// The fields of one row, in column order (the header is their names).
+std::vector<TradeoffField> tradeoffFields(const std::string& scene_name, const TradeoffRow& row);
+
+// DIR/tradeoff.csv: one row per run (the fields above), written whole or not at all
 // (study/file_commit.hpp). Throws std::runtime_error naming the file on failure.
 void writeTradeoffCsv(const std::filesystem::path& file, const std::string& scene_name,
                       const std::vector<TradeoffRow>& rows);

@@ -32,8 +32,7 @@ nlohmann::json modeJson(const Mode& m, bool shape) {
 
 }  // namespace
 
-void writeModesJson(const std::filesystem::path& file, const io::Scene& scene,
-                    const ModesResult& r) {
+std::string modesJsonText(const io::Scene& scene, const ModesResult& r) {
   const Model& model = *scene.model;
   nlohmann::json j;
   j["scene"] = scene.path;
@@ -79,7 +78,12 @@ void writeModesJson(const std::filesystem::path& file, const io::Scene& scene,
   nlohmann::json modes = nlohmann::json::array();
   for (const Mode& m : r.modes) modes.push_back(modeJson(m, true));
   j["modes"] = modes;
-  writeFileWhole(file, j.dump(2) + "\n");
+  return j.dump(2);
+}
+
+void writeModesJson(const std::filesystem::path& file, const io::Scene& scene,
+                    const ModesResult& result) {
+  writeFileWhole(file, modesJsonText(scene, result) + "\n");
 }
 
 void writeModesCsv(const std::filesystem::path& file, const ModesResult& r) {

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "io/scene_loader.hpp"
 #include "study/modes/modes.hpp"
@@ -26,6 +27,9 @@ namespace tribo::study {
 // Throw std::runtime_error naming the path when a file cannot be written.
 void writeModesJson(const std::filesystem::path& file, const io::Scene& scene,
                     const ModesResult& result);
+// The text writeModesJson writes (without its final newline): also the Python module's
+// tribo.modes() dict, so the two spell every field once.
+std::string modesJsonText(const io::Scene& scene, const ModesResult& result);
 void writeModesCsv(const std::filesystem::path& file, const ModesResult& result);
 void writeBoundaryJson(const std::filesystem::path& file, const BoundarySpec& spec,
                        const BoundaryResult& result);

@@ -37,6 +37,12 @@ def test_steps_equal_the_run(belt):
         assert sim.step()
         xs.append(sim.state.positions[i, 0])
     assert np.array_equal(np.array(xs), result["box.x"])
+    # One source for the statistics: the Simulator's are summary.json's "run" block's.
+    stats, run = sim.stats, result.summary["run"]
+    assert stats["steps"] == 300 and stats["force_evaluations"] >= 300
+    assert set(stats) < set(run)
+    for key, value in stats.items():
+        assert value == run[key], key
 
 
 @pytest.mark.parametrize("law", ["roh_yoo", "lugre", "rate_state"])

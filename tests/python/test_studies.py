@@ -2,6 +2,7 @@
 tribo.modes the belt's unstable pair at the growth rate of the 1-DOF formula
 sigma = -(c + N mu'(v_b)) / (2 m) and the damped frequency, computed here from the law's slope."""
 import csv
+import json
 import math
 import subprocess
 
@@ -54,10 +55,27 @@ def test_modes_of_the_belt_follow_the_formula(belt, v_b, k):
     sigma = -(0.0 + m * g * law.slope(v_b)) / (2 * m)  # the belt spring has no damping
     freq = math.sqrt(k / m - sigma**2) / (2 * math.pi)
     lead = result["modes"][0]
-    assert lead["unstable"] and result["unstable"] >= 1
+    assert lead["unstable"] and result["unstable_count"] >= 1 and not result["stable"]
     assert lead["growth_rate"] == pytest.approx(sigma, rel=1e-4)
-    assert lead["frequency"] == pytest.approx(freq, rel=1e-4)
-    assert lead["shape"]["box.x"][0] == pytest.approx(1.0)
+    assert lead["frequency_hz"] == pytest.approx(freq, rel=1e-4)
+    assert lead["eigenvalue"] == pytest.approx([sigma, 2 * math.pi * freq], rel=1e-4)
+    shape = {e["coordinate"]: e["magnitude"] for e in lead["shape"]}
+    assert shape["box.x"] == pytest.approx(1.0)
+
+
+def test_modes_dict_is_the_cli_modes_json(cli, belt, tmp_path):
+    """One source: tribo.modes gives modes.json's document, field for field."""
+    result = tribo.modes(tribo.load_scene(belt, set={"v_b": 0.4}))
+    subprocess.run([cli, "modes", belt, "--out", str(tmp_path), "--set", "v_b=0.4"],
+                   capture_output=True)
+    with open(tmp_path / "modes.json") as f:
+        theirs = json.load(f)
+    assert set(result) == set(theirs)
+    timing = {"steady_state_s", "linearization_and_eigenvalues_s"}  # clock readings
+    assert {k: v for k, v in result["timing"].items() if k not in timing} == {
+        k: v for k, v in theirs["timing"].items() if k not in timing}
+    for key in set(theirs) - {"timing", "scene"}:
+        assert result[key] == theirs[key], key
 
 
 def test_modes_errors():
@@ -81,7 +99,10 @@ def test_tradeoff_rows_equal_the_cli(cli, belt, tmp_path):
     assert len(rows) == len(cli_rows) > 5
     assert rows[0]["status"] == "reference"
     for ours, theirs in zip(rows, cli_rows):
+        assert list(ours) == list(theirs)  # one source: the same columns in the same order
         assert ours["status"] == theirs["status"]
+        assert (ours["integrator"], ours["setting"]) == (theirs["integrator"], theirs["setting"])
+        assert ours["steps"] == int(theirs["steps"])
         for key in ("amplitude_error", "trajectory_error"):
             if theirs[key] == "":
                 assert math.isnan(ours[key])
@@ -89,5 +110,6 @@ def test_tradeoff_rows_equal_the_cli(cli, belt, tmp_path):
                 assert format(ours[key], ".4g") == theirs[key]
     # rk4 converges: the error of the finest complete step is below the coarsest's
     done = [r for r in rows[1:] if r["status"] == "complete"]
-    assert done[-1]["dt"] < done[0]["dt"]
+    assert all(r["setting"] == "dt" for r in done)
+    assert done[-1]["value"] < done[0]["value"]
     assert done[-1]["trajectory_error"] < done[0]["trajectory_error"]
