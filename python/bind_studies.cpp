@@ -15,6 +15,7 @@
 #include <fstream>
 
 #include "python/bindings.hpp"
+#include "python/python_law.hpp"
 #include "python/scene_handle.hpp"
 #include "study/modes/modes.hpp"
 #include "study/modes/modes_report.hpp"
@@ -141,10 +142,14 @@ py::object runModes(const SceneHandle& scene, bool settle, double settle_time) {
   spec.steady.settle = settle;
   spec.steady.settle_time = settle_time;
   study::ModesResult r;
-  {
+  try {
     py::gil_scoped_release release;
     r = study::analyzeModes(scene.scene, spec);
+  } catch (const std::exception&) {
+    raisePythonLawErrors(scene.user_laws);  // a Python law's error is the cause: say it
+    throw;
   }
+  raisePythonLawErrors(scene.user_laws);
   return jsonToPython(study::modesJsonText(scene.scene, r));
 }
 

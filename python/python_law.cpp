@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/number_text.hpp"
+
 namespace tribo::python {
 namespace {
 
@@ -73,8 +75,43 @@ double PythonCalls::number(const py::object& f, double v) const {
   return kNaN;
 }
 
+void PythonCalls::failValue(const std::string& what) const {
+  if (error_) return;
+  PyErr_SetString(PyExc_ValueError, ("law '" + name_ + "': " + what).c_str());
+  error_ = std::make_shared<py::error_already_set>();
+}
+
+namespace {
+
+bool finite(const double* v, int n) {
+  return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
+}
+
+std::string atSlip(double v) { return " at slip speed v = " + numberText(v) + " m/s"; }
+
+}  // namespace
+
+double PythonCalls::mu(double v) const {
+  const double m = number(mu_, v);
+  if (!std::isfinite(v)) return m;  // NaN in, NaN out: not the law's doing
+  // Odd in v (friction/friction_law.hpp): the sign of the slip, so that it opposes it.
+  if (std::isfinite(m) && (v > 0.0 ? m >= 0.0 : v < 0.0 ? m <= 0.0 : true)) return m;
+  py::gil_scoped_acquire hold;
+  failValue("mu(v) returned " + numberText(m) + atSlip(v) +
+            "; a friction coefficient is finite and has the sign of v (mu(-v) = -mu(v)), so "
+            "that friction opposes the slip");
+  return kNaN;
+}
+
 double PythonCalls::slope(double v) const {
-  if (!slope_.is_none()) return number(slope_, v);
+  if (!slope_.is_none()) {
+    const double s = number(slope_, v);
+    // Infinite is allowed: roh_yoo's slope with beta < 1 is unbounded at v = 0.
+    if (!std::isnan(s) || !std::isfinite(v)) return s;
+    py::gil_scoped_acquire hold;
+    failValue("slope(v) returned nan" + atSlip(v) + "; expected a number");
+    return kNaN;
+  }
   const double h = 1e-6 * std::max(std::abs(v), stick_speed_);
   return (mu(v + h) - mu(v - h)) / (2.0 * h);
 }
@@ -136,6 +173,17 @@ void PythonDynamicLaw::copyOut(const py::object& r, double* out, int n, const ch
   std::fill(out, out + n, kNaN);
 }
 
+void PythonDynamicLaw::checkFinite(const double* v, int n, const char* what,
+                                   const Eigen::Vector3d& slip, double fn) const {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(v[i])) {
+      calls_.failValue(std::string(what) + " gave " + numberText(v[i]) + " (entry " +
+                       std::to_string(i) + ")" + atSlip(slip.norm()) + ", fn = " + numberText(fn) +
+                       " N; expected finite numbers");
+      return;
+    }
+}
+
 void PythonDynamicLaw::initialState(double* z) const {
   std::copy(initial_.begin(), initial_.end(), z);
 }
@@ -146,6 +194,8 @@ void PythonDynamicLaw::rate(const double* z, const Eigen::Vector3d& slip, double
   const py::object r =
       calls_.call(calls_.method("rate"), arrayOf(z, size_), arrayOf(slip.data(), 3), fn);
   copyOut(r, zdot, size_, "rate(z, slip, fn)");
+  if (finite(z, size_) && slip.allFinite() && std::isfinite(fn))
+    checkFinite(zdot, size_, "rate(z, slip, fn)", slip, fn);
 }
 
 Eigen::Vector3d PythonDynamicLaw::force(const double* z, const double* zdot,
@@ -156,6 +206,8 @@ Eigen::Vector3d PythonDynamicLaw::force(const double* z, const double* zdot,
                                    arrayOf(slip.data(), 3), fn);
   Eigen::Vector3d f;
   copyOut(r, f.data(), 3, "force(z, zdot, slip, fn)");
+  if (finite(z, size_) && finite(zdot, size_) && slip.allFinite() && std::isfinite(fn))
+    checkFinite(f.data(), 3, "force(z, zdot, slip, fn)", slip, fn);
   if (mu_out != nullptr) *mu_out = fn > 0.0 ? f.norm() / fn : 0.0;
   return f;
 }

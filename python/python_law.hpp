@@ -39,8 +39,11 @@ class PythonCalls {
   template <class... A>
   py::object call(const py::object& f, A&&... args) const;
   double number(const py::object& f, double v) const;
-  // The steady curve: mu, slope, bound.
-  double mu(double v) const { return number(mu_, v); }
+  // The steady curve: mu, slope, bound. A coefficient that is not finite or whose sign is
+  // not v's (one that drives the slip), or a slope that is NaN, is recorded as a ValueError
+  // naming the law, the value and the slip speed, and comes back as NaN so that the step fails
+  // there.
+  double mu(double v) const;
   double slope(double v) const;
   double maxCoefficient(double v_max) const;
   double stickSpeed() const { return stick_speed_; }
@@ -51,6 +54,8 @@ class PythonCalls {
   // The first Python exception a call raised, if any (then cleared); needs the GIL.
   std::shared_ptr<py::error_already_set> takeError() const;
   void fail(const std::string& what) const;  // records a TypeError (GIL held)
+  // Records a ValueError "law 'NAME': <what>" (GIL held); the first error is kept.
+  void failValue(const std::string& what) const;
 
  private:
   std::string name_;
@@ -100,6 +105,10 @@ class PythonDynamicLaw final : public PythonCurveLaw<friction::DynamicFrictionLa
   // The Python result `r` copied into out[0..n) (NaN and a recorded error when it is not a
   // sequence of n numbers).
   void copyOut(const py::object& r, double* out, int n, const char* what) const;
+  // A ValueError naming the call, the entry and the slip when an output of finite inputs is
+  // not finite (GIL held).
+  void checkFinite(const double* v, int n, const char* what, const Eigen::Vector3d& slip,
+                   double fn) const;
 
   int size_ = 0, tangent_vectors_ = 0;
   Presliding presliding_;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/number_text.hpp"
+#include "study/output_stride.hpp"
 
 namespace tribo::study {
 
@@ -33,7 +34,7 @@ std::string what(const io::Scene& scene, const OutputEstimate& e) {
 OutputEstimate estimateOutput(const io::Scene& scene) {
   const SimulationOptions& o = scene.model->options;
   OutputEstimate e;
-  e.rows = o.duration / std::max(scene.output.interval, o.time_step) + 2;
+  e.rows = o.duration / outputInterval(scene.output.interval, o.time_step) + 2;
   e.columns = 1.0 + 8.0 * static_cast<double>(scene.model->bodies.size());
   e.csv_bytes = e.rows * (e.columns * kCsvBytesPerField + kSpillBytesPerRow);
   e.kept_bytes = e.rows * e.columns * 8.0;

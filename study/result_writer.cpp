@@ -12,6 +12,7 @@
 #include "study/early_growth.hpp"
 #include "study/file_commit.hpp"
 #include "study/orbit_shape.hpp"
+#include "study/output_stride.hpp"
 
 namespace tribo::study {
 
@@ -103,7 +104,7 @@ std::string summaryJsonText(const io::Scene& scene, const RunResult& result) {
                    {"duration", o.duration},
                    {"baumgarte_alpha", o.baumgarte_alpha},
                    {"baumgarte_beta", o.baumgarte_beta},
-                   {"output_interval", scene.output.interval}};
+                   {"output_interval", outputInterval(scene.output.interval, o.time_step)}};
   nlohmann::json materials = nlohmann::json::array();
   for (const auto& m : model.materials) {
     nlohmann::json material = {{"normal_law", contact::normalLawName(m.normal.type)},

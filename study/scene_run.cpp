@@ -12,6 +12,7 @@
 #include "core/constraint_rank.hpp"
 #include "core/number_text.hpp"
 #include "study/output_budget.hpp"
+#include "study/output_stride.hpp"
 #include "study/series_spill.hpp"
 
 namespace tribo::study {
@@ -97,7 +98,10 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   const Model& model = *scene.model;
   const double dt = model.options.time_step;
   const long steps = std::lround(model.options.duration / dt);
-  const double interval = std::max(scene.output.interval, dt);
+  // Rows fall on steps: every `every` steps, the whole multiple of the step nearest to the
+  // interval asked for, so that they are evenly spaced (an FFT of the CSV needs it).
+  const long every = outputStride(scene.output.interval, dt);
+  const double interval = outputInterval(scene.output.interval, dt);
   RunResult result{
       false,
       false,
@@ -129,6 +133,8 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
       << "); results may be wrong even if the run completes";
     result.warnings.push_back(w.str());
   }
+  if (const auto note = outputStrideNote(scene.output.interval, dt))
+    result.warnings.push_back(*note);
   for (const std::string& note : droppedEquationNotes(model)) result.warnings.push_back(note);
   Simulator sim(scene.model);
   sim.setStopRequest(options.stop);
@@ -140,7 +146,6 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   // The state of the last row: an interrupted run goes back to it, so the trajectory ends
   // at the state the result reports and its rows are those of an uninterrupted run.
   State row_state = sim.state();
-  double next_output = interval;
   double next_check = monitor.interval;
   result.complete = true;
   bool at_row = true;  // the last row recorded is the current state
@@ -169,10 +174,9 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
       break;
     }
     at_row = false;
-    if (sim.state().time >= next_output - 0.5 * dt) {
+    if ((i + 1) % every == 0) {
       result.trajectory.record(sim.state(), sim.current());
       row_state = sim.state();
-      next_output += interval;
       at_row = true;
     }
     if (monitor.stop && sim.state().time >= next_check - 0.5 * dt) {

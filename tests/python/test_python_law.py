@@ -74,6 +74,56 @@ def test_an_exception_in_mu_comes_back(belt):
     assert not sim.status["ok"]
 
 
+@pytest.mark.parametrize("name,law,found", [
+    ("pushing", lambda v: -roh_yoo(v), "returned -"),  # the sign of -v: drives the slip
+    ("negative_when_fast", lambda v: math.copysign(1.0, v) * (0.3 - 2.0 * abs(v)), "returned -"),
+    ("nan", lambda v: math.nan, "returned nan"),
+    ("nan_when_fast", lambda v: math.nan if abs(v) > 0.5 else roh_yoo(v), "returned nan"),
+    ("infinite", lambda v: math.copysign(math.inf, v), "inf"),
+])
+def test_a_coefficient_that_is_no_coefficient_stops_the_run_naming_the_law(belt, name, law, found):
+    """mu(v) is odd with the sign of v (it opposes the slip) and finite: anything else stops
+    the run there and says which law returned what at which slip speed, never a run that
+    completes. On a contact the engine asks for mu at the slip speed |v| >= 0."""
+    scene = tribo.load_scene(belt, set={"friction": name}, laws={name: law})
+    with pytest.raises(ValueError, match=f"law '{name}': mu\\(v\\) returned") as e:
+        scene.run(duration=5)
+    assert found in str(e.value) and "slip speed" in str(e.value)
+    sim = tribo.Simulator(scene)
+    with pytest.raises(ValueError, match=f"law '{name}'"):
+        sim.step(5000)
+    assert not sim.status["ok"]
+
+
+def test_a_slope_that_is_nan_stops_the_run_naming_the_law(belt):
+    class NanSlope:
+        def mu(self, v):
+            return roh_yoo(v)
+
+        def slope(self, v):
+            return math.nan
+
+    scene = tribo.load_scene(belt, set={"friction": "s"}, laws={"s": NanSlope()})
+    with pytest.raises(ValueError, match="law 's': slope\\(v\\) returned nan at slip speed"):
+        scene.run(duration=0.1)  # the stable-step estimate asks for the slope
+
+
+def test_a_state_law_giving_nan_stops_the_run_naming_the_law_and_the_call(belt):
+    class NanForce(PythonLuGre):
+        def force(self, z, zdot, slip, fn):
+            return [math.nan, 0.0, 0.0]
+
+    class NanRate(PythonLuGre):
+        def rate(self, z, slip, fn):
+            return [0.0, math.inf, 0.0]
+
+    for law, call in ((NanForce(), "force"), (NanRate(), "rate")):
+        scene = tribo.load_scene(belt, set={"friction": "z", "integrator": "rk4", "dt": 2e-4},
+                                 laws={"z": law})
+        with pytest.raises(ValueError, match=f"law 'z': {call}\\(.*slip speed.*fn = "):
+            scene.run(duration=0.1)
+
+
 def test_bad_python_laws(belt):
     with pytest.raises(tribo.SceneError, match="built-in"):
         tribo.load_scene(belt, set={"friction": "roh_yoo"}, laws={"roh_yoo": roh_yoo})
