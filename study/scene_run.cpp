@@ -42,42 +42,50 @@ OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& 
 
 namespace {
 
-// Columns of the observed coordinate, its slip and normal force; empty when the spec names
-// no body of the model (then there is no summary).
-std::optional<std::array<std::size_t, 3>> summaryColumns(const TrajectoryRecorder& trajectory,
-                                                         const Model& model,
-                                                         const io::SummarySpec& spec) {
-  if (spec.body.empty()) return std::nullopt;  // (a channel without a body: kept rows only)
-  const auto index = model.findBody(spec.body);
-  if (!index || index->isWorld()) return std::nullopt;
+// Columns of the observed coordinate or channel, and of its body's slip and normal force
+// when the spec names a body of the model (a channel alone has no stuck fraction, as in
+// summarize()); empty when the spec observes nothing.
+struct SummaryColumns {
+  std::size_t x;
+  std::optional<std::array<std::size_t, 2>> slip_and_normal;
+};
+
+std::optional<SummaryColumns> summaryColumns(const TrajectoryRecorder& trajectory,
+                                             const Model& model, const io::SummarySpec& spec) {
+  if (spec.body.empty() && spec.channel.empty()) return std::nullopt;
   static const char* kAxis[] = {".x", ".y", ".z"};
-  const std::string& name = model.bodies[index->value].name;
-  return std::array{
-      trajectory.columnIndex(spec.channel.empty() ? name + kAxis[spec.coordinate] : spec.channel),
-      trajectory.columnIndex(name + ".slip"), trajectory.columnIndex(name + ".normal_force")};
+  SummaryColumns c{trajectory.columnIndex(spec.channel.empty() ? spec.body + kAxis[spec.coordinate]
+                                                               : spec.channel),
+                   std::nullopt};
+  const auto index = model.findBody(spec.body);
+  if (!spec.body.empty() && index && !index->isWorld())
+    c.slip_and_normal = std::array{trajectory.columnIndex(spec.body + ".slip"),
+                                   trajectory.columnIndex(spec.body + ".normal_force")};
+  return c;
 }
 
-// The summary's three series (t, x, and the slip speed read as "not stuck" out of contact,
-// as summarize() masks it) spilled to scratch files as the rows go by.
+// The summary's series (t, x, and when there is a body the slip speed read as "not stuck"
+// out of contact, as summarize() masks it) spilled to scratch files as the rows go by.
 class SummarySpill : public RowSink {
  public:
-  SummarySpill(std::array<std::size_t, 3> columns, const std::filesystem::path& dir)
+  SummarySpill(SummaryColumns columns, const std::filesystem::path& dir)
       : columns_(columns), t_(dir), x_(dir), slip_(dir) {}
   void row(std::span<const double> v) override {
     t_.append(v[0]);
-    x_.append(v[columns_[0]]);
-    slip_.append(v[columns_[2]] > 0.0 ? v[columns_[1]] : std::numeric_limits<double>::max());
+    x_.append(v[columns_.x]);
+    if (const auto& sn = columns_.slip_and_normal)
+      slip_.append(v[(*sn)[1]] > 0.0 ? v[(*sn)[0]] : std::numeric_limits<double>::max());
   }
   OscillationSummary summarize(const io::SummarySpec& spec) const {
     if (t_.size() < 3) return {};
     OscillationOptions options;
     options.last_cycles = spec.last_cycles;
     options.stick_speed = spec.stick_speed;
-    return summarizeOscillation(t_, x_, &slip_, options);
+    return summarizeOscillation(t_, x_, columns_.slip_and_normal ? &slip_ : nullptr, options);
   }
 
  private:
-  std::array<std::size_t, 3> columns_;
+  SummaryColumns columns_;
   SpilledColumn t_, x_, slip_;
 };
 

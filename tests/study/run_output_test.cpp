@@ -125,6 +125,60 @@ TEST(StreamedRun, WritesTheRowsAKeptRunHoldsAndTheSameSummary) {
   fs::remove_all(dir);
 }
 
+// output.summary: {channel: ...} alone (no body) is analysed in a streamed run (tribo run)
+// as in a kept one (Python's Scene.run), and a coordinate observed as a channel gives the
+// figures it gives observed as {body, coordinate}, less the stuck fraction (no body, no
+// slip). Over a stick-slip box (position and velocity), a free pendulum and a double
+// pendulum's joint angles.
+struct ChannelCase {
+  const char* scene;
+  const char* channel;
+  const char* body;  // the same coordinate as {body, coordinate: x}, or nullptr
+  const char* duration;
+};
+
+class ChannelSummary : public ::testing::TestWithParam<ChannelCase> {};
+
+TEST_P(ChannelSummary, StreamedEqualsKeptAndTheBodysFigures) {
+  const ChannelCase c = GetParam();
+  io::Scene scene = io::loadScene(std::string(TRIBO_SOURCE_DIR) + "/scenes/" + c.scene,
+                                  {std::string("duration=") + c.duration});
+  const io::SummarySpec by_body = scene.output.summary;
+  if (!io::hasGroup(scene.output.channels, "joints")) scene.output.channels.push_back("joints");
+  scene.output.summary.body.clear();
+  scene.output.summary.channel = c.channel;
+  const RunResult kept = runScene(scene);
+  Rows rows;
+  RunOptions options;
+  options.sink = &rows;
+  const fs::path dir = freshDir("channel");
+  options.spill_dir = dir;
+  const RunResult streamed = runScene(scene, options);
+  ASSERT_TRUE(kept.complete && streamed.complete);
+  EXPECT_TRUE(kept.summary.oscillating) << c.channel;
+  EXPECT_GE(kept.summary.cycles.size(), 3u) << c.channel;
+  EXPECT_EQ(streamed.summary.cycles.size(), kept.summary.cycles.size());
+  EXPECT_EQ(streamed.summary.amplitude_pp, kept.summary.amplitude_pp);
+  EXPECT_EQ(streamed.summary.period, kept.summary.period);
+  EXPECT_EQ(streamed.summary.x_mean, kept.summary.x_mean);
+  EXPECT_EQ(streamed.summary.stuck_fraction, kept.summary.stuck_fraction);
+  if (c.body != nullptr) {
+    scene.output.summary = by_body;
+    const RunResult body = runScene(scene);
+    EXPECT_EQ(kept.summary.amplitude_pp, body.summary.amplitude_pp);
+    EXPECT_EQ(kept.summary.period, body.summary.period);
+    EXPECT_EQ(kept.summary.cycles.size(), body.summary.cycles.size());
+  }
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ChannelSummary,
+                         ::testing::Values(ChannelCase{"belt.yaml", "box.x", "box", "6"},
+                                           ChannelCase{"belt.yaml", "box.vx", nullptr, "6"},
+                                           ChannelCase{"pendulum.yaml", "pivot.q", nullptr, "20"},
+                                           ChannelCase{"double_pendulum.yaml", "elbow.q", nullptr,
+                                                       "20"}));
+
 TEST(StreamedRun, AStopRequestEndsTheRunBackAtTheLastOutputRow) {
   // Output every 10 steps; the stop comes at the first progress call (after 64 steps),
   // mid-interval: the run goes back to the row at 60 steps.
