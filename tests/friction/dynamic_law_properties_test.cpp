@@ -276,8 +276,9 @@ TEST_P(DynamicLawProperties, StableStepMatchesFineRk4AtFrozenSlip) {
         const double scale = std::max(scaleOf(start), scaleOf(reference));
         // Exact updates agree to rounding amplified by the exponentials (1e-9 relative). The
         // second-order elasto_plastic update moves at most 0.05 of alpha's transition width
-        // (< the state scale) per substep: error ~ 0.05^2 of it (measured: 1e-5 relative).
-        double tol = (GetParam().exact ? 1e-9 : 2.5e-3) * scale;
+        // (< the state scale) per substep: error ~ 0.05^2 of it; measured at most 2.8e-5
+        // relative over the five elasto_plastic cases, held to 1e-4.
+        double tol = (GetParam().exact ? 1e-9 : 1e-4) * scale;
         // Switching elements: one RK4 step of h / n across each switch, rate jump <= 2 |s|.
         if (GetParam().switching) tol += 2.0 * slip.norm() * h / std::ceil(kh * 1e4);
         for (int i = 0; i < law().stateSize(); ++i) {

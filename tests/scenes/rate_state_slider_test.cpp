@@ -19,7 +19,7 @@
 // (V / d_c) sqrt((b - a) / a). The test measures the growth rate sigma of the block's speed
 // oscillation (log of its successive peaks, least squares) at k = (1 -+ 5%) k_cr, checks the
 // signs, and takes the boundary as the zero of the straight line through the two (the
-// linear theory's own sigma(k) puts that zero within 3e-4 of k_cr): within 2% of k_cr. At
+// linear theory's own sigma(k) puts that zero within 3e-4 of k_cr): within 0.1% of k_cr. At
 // V = 1e-3 m/s the inertia term is 2: k_cr = 3 N (b - a) / d_c, and the quasi-static value,
 // by which k = 0.95 k_cr would be stable, is wrong by a factor 3.
 #include <gtest/gtest.h>
@@ -131,11 +131,12 @@ double measuredBoundary(double v, double period, const std::string& evolution) {
     // nonlinear terms' shift of sigma about (u / V)^2 w = 4e-6 w, 2e-4 of |sigma| = 0.018 w
     // at 5% from k_cr; the parabolic peaks on the step grid err by less than (w h)^2 = 8e-4
     // (w h = 0.028 at V = 1e-3 m/s); RK4's phase and amplitude errors at h w <= 0.03 are
-    // below 1e-8 per cycle. Sum 1e-3; 1% allows for the block's vertical contact
-    // dynamics, which the theory leaves out. The period: the same (w h)^2, 1%.
-    EXPECT_NEAR(g.sigma, s.real(), 0.01 * std::abs(s.real())) << evolution << " k " << k;
+    // below 1e-8 per cycle. Sum 1e-3, and the block's vertical contact dynamics, which the
+    // theory leaves out: measured at most 1.6e-3, held to 3e-3. The period: the same
+    // (w h)^2; measured to 2e-5 (docs/friction-laws.md: "5 digits"), held to 1e-4.
+    EXPECT_NEAR(g.sigma, s.real(), 3e-3 * std::abs(s.real())) << evolution << " k " << k;
     EXPECT_NEAR(g.period, 2 * std::numbers::pi / std::abs(s.imag()),
-                0.01 * 2 * std::numbers::pi / std::abs(s.imag()))
+                1e-4 * 2 * std::numbers::pi / std::abs(s.imag()))
         << evolution;
   }
   EXPECT_GT(g1.sigma, 0) << "unstable below k_cr";
@@ -150,8 +151,8 @@ TEST(RateStateSlider, QuasiStaticBoundaryIsCriticalStiffness) {
   const double k = measuredBoundary(v, 9.0, "aging");
   std::printf("quasi-static: measured boundary %.5g N/m, k_cr %.5g, (b - a) N / d_c %.5g\n", k,
               criticalStiffness(v), k_qs);
-  EXPECT_NEAR(k, criticalStiffness(v), 0.02 * criticalStiffness(v));
-  EXPECT_NEAR(k, k_qs, 0.02 * k_qs);
+  EXPECT_NEAR(k, criticalStiffness(v), 1e-3 * criticalStiffness(v));
+  EXPECT_NEAR(k, k_qs, 0.01 * k_qs);  // k_cr is 0.5% above the quasi-static value here
 }
 
 TEST(RateStateSlider, InertiaRaisesTheBoundaryAsRiceAndRuinaPredict) {
@@ -163,7 +164,7 @@ TEST(RateStateSlider, InertiaRaisesTheBoundaryAsRiceAndRuinaPredict) {
     const double k = measuredBoundary(v, 0.45, evolution);
     std::printf("%s with inertia: measured boundary %.5g N/m, k_cr %.5g, quasi-static %.5g\n",
                 evolution, k, criticalStiffness(v), k_qs);
-    EXPECT_NEAR(k, criticalStiffness(v), 0.02 * criticalStiffness(v)) << evolution;
+    EXPECT_NEAR(k, criticalStiffness(v), 1e-3 * criticalStiffness(v)) << evolution;
     EXPECT_GT(k, 2.5 * k_qs) << evolution;
   }
 }
