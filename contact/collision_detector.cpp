@@ -210,6 +210,7 @@ struct CollisionDetector::Impl {
     {
       const auto t = static_cast<std::size_t>(omp_get_thread_num());
       const auto n = static_cast<std::size_t>(omp_get_num_threads());
+      if (t == 0 && n > 1) countSplitLoop();
       Lane& lane = lanes[t];
       lane.points.clear();
       for (std::size_t i = list.size() * t / n; i < list.size() * (t + 1) / n; ++i)

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "contact/split_count.hpp"
+
 namespace tribo::contact {
 
 // The threads worth starting for `n` items when each thread should have at least
@@ -31,8 +33,12 @@ void parallelFor(std::size_t n, int threads, F&& f) {
     return;
   }
   const auto count = static_cast<long>(n);
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+#pragma omp parallel num_threads(threads)
+  {
+    if (omp_get_thread_num() == 0 && omp_get_num_threads() > 1) countSplitLoop();
+#pragma omp for schedule(static)
+    for (long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+  }
 }
 
 }  // namespace tribo::contact
