@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "friction/friction_law.hpp"
 #include "io/file_read.hpp"
+#include "io/scene_path_override.hpp"
 #include "io/scene_reader.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/utf8_check.hpp"
@@ -24,7 +26,7 @@ namespace {
 }  // namespace
 
 SceneDocument::SceneDocument(const std::string& yaml, const std::string& name_for_errors)
-    : name_(name_for_errors) {
+    : name_(name_for_errors), text_(std::make_shared<const std::string>(yaml)) {
   requireUtf8Scene(yaml, name_);
   try {
     root_ = std::make_shared<const YAML::Node>(YAML::Load(yaml));
@@ -45,10 +47,30 @@ Scene SceneDocument::load(const std::vector<std::string>& overrides,
                          "' takes a built-in law's name; give it another");
     if (!law) throw SceneError(name_ + ": user friction law '" + name + "' is empty");
   }
+  // Overrides of a value by its path change a copy of the document; the parameters' go to
+  // the reader.
+  std::vector<std::string> parameter_overrides;
+  std::optional<YAML::Node> changed;
+  std::vector<std::pair<std::string, std::string>> applied;  // path, override
+  for (const std::string& item : overrides) {
+    if (!isPathOverride(item)) {
+      parameter_overrides.push_back(item);
+      continue;
+    }
+    if (!changed) changed = YAML::Load(*text_);  // a tree of its own, with the file's lines
+    applied.emplace_back(applyPathOverride(*changed, item, name_), item);
+  }
   try {
-    return scene_detail::Loader(name_, *root_, package_paths, user_laws).load(overrides, settings);
+    return scene_detail::Loader(name_, changed ? *changed : *root_, package_paths, user_laws)
+        .load(parameter_overrides, settings);
   } catch (const YAML::Exception& e) {  // any the reader did not foresee
     yamlError(e, name_);
+  } catch (const SceneError& e) {
+    for (const auto& [path, item] : applied) {
+      SceneError said = attributedToOverride(e, path, item);
+      if (said.detail() != e.detail()) throw said;
+    }
+    throw;
   }
 }
 

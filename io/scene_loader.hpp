@@ -113,6 +113,7 @@ class SceneDocument {
  private:
   std::string name_;
   std::shared_ptr<const YAML::Node> root_;
+  std::shared_ptr<const std::string> text_;  // read again for overrides of values by path
 };
 
 }  // namespace tribo::io
