@@ -10,7 +10,8 @@
 //     out-of-plane equations of a planar loop of revolute joints) are an error naming them,
 //     or, with kRemove, are dropped from the solve (and listed in the run summary).
 //   solver: the multiplier system J M^-1 J^T is factorized dense (Cholesky) or sparse
-//     (simplicial LDL^T in an approximate-minimum-degree order); kAuto picks sparse from
+//     (block-sparse Cholesky in an approximate-minimum-degree order, core/block_cholesky.hpp);
+//     kAuto picks sparse from
 //     `sparse_threshold` equations on (the crossover measured by bench/core/chain_bench.cpp).
 // Not here: the Baumgarte gains (SimulationOptions), the solve itself.
 #pragma once
