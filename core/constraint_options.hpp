@@ -11,8 +11,8 @@
 //     or, with kRemove, are dropped from the solve (and listed in the run summary).
 //   solver: the multiplier system J M^-1 J^T is factorized dense (Cholesky) or sparse
 //     (block-sparse Cholesky in an approximate-minimum-degree order, core/block_cholesky.hpp);
-//     kAuto picks sparse from
-//     `sparse_threshold` equations on (the crossover measured by bench/core/chain_bench.cpp).
+//     kAuto picks sparse from `sparse_threshold` equations on (the crossover measured by
+//     bench/core/chain_bench.cpp).
 // Not here: the Baumgarte gains (SimulationOptions), the solve itself.
 #pragma once
 
