@@ -84,18 +84,36 @@ std::shared_ptr<const friction::FrictionLaw> Loader::tabulatedLaw(const LawEntry
 // only the laws a material selects (readMaterial), so that values out of range for a law
 // that is not used are no error: e.g. `--set a=0.5` while the materials use recurdyn.
 // Key names are checked by makeFrictionLaw, and so also only for the laws in use.
+// An entry is a law by its own name (`coulomb: {mu: 0.3}`), or an instance of the law its
+// `law:` key names (`steel: {law: coulomb, mu: 0.3}`), so two materials can use two
+// parameter sets of one law.
 void Loader::readFrictionLaws(const Value& v) {
   Keys known = friction::knownFrictionLaws();
   for (const auto& name : friction::knownStatefulFrictionLaws()) known.push_back(name);
   for (const auto& name : friction::knownDynamicFrictionLaws()) known.push_back(name);
   known.push_back("tabulated");  // built here from its file (tabulatedLaw)
+  const auto isLaw = [&](const std::string& name) {
+    return std::find(known.begin(), known.end(), name) != known.end();
+  };
   const Map laws(v, {});
-  for (const auto& [law, entry] : laws.entries()) {
-    if (std::find(known.begin(), known.end(), law) == known.end())
-      entry.fail("unknown friction law '" + law + "' (known laws: " + joined(known) + ")");
-    LawEntry e{entry, {law, {}, {}}, nullptr};
+  for (const auto& [name, entry] : laws.entries()) {
     const Map keys(entry, {});
+    const std::optional<Value> law_key = keys.get("law");
+    const std::string law = law_key ? law_key->text() : name;
+    if (law_key && !isLaw(law))
+      law_key->fail("unknown friction law '" + law + "' (known laws: " + joined(known) + ")");
+    if (!law_key && !isLaw(name))
+      entry.fail("unknown friction law '" + name + "' (known laws: " + joined(known) +
+                 "; to name an instance of a law, give it: " + name + ": {law: coulomb, mu: 0.3})");
+    if (law_key && isLaw(name) && name != law)
+      law_key->fail("the entry '" + name + "' is named after a law but is a " + law +
+                    ": give this instance another name");
+    if (user_laws_.count(name))
+      entry.fail("friction law '" + name +
+                 "' is defined both here and by the caller (a law given in Python): rename one");
+    LawEntry e{entry, {law, {}, {}}, nullptr};
     for (const auto& [key, value] : keys.entries()) {
+      if (key == "law") continue;
       if (!value.node().IsScalar())
         value.fail("expected a number or a string, found " + value.found());
       const std::string text = value.text();
@@ -107,8 +125,8 @@ void Loader::readFrictionLaws(const Value& v) {
         e.spec.options[key] = text;  // a word: an option, or a file name
       }
     }
-    law_names_.push_back(law);
-    laws_.emplace(law, std::move(e));
+    law_names_.push_back(name);
+    laws_.emplace(name, std::move(e));
   }
 }
 
