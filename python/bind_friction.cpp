@@ -6,9 +6,15 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "friction/friction_law.hpp"
+#include "friction/tabulated_law.hpp"
+#include "io/friction_curve.hpp"
+#include "io/scene_parameters.hpp"
 #include "python/bindings.hpp"
 
 namespace tribo::python {
@@ -34,19 +40,49 @@ py::object elementwise(const Law& law, const py::object& v, F f) {
   return out;
 }
 
+// The tabulated law: file=CSV (speed, coefficient; io/friction_curve.hpp) or speeds=[...],
+// coefficients=[...]; the curve's own checks apply.
+std::shared_ptr<const Law> tabulatedLaw(const py::kwargs& parameters) {
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : parameters) keys.push_back(key.cast<std::string>());
+  std::sort(keys.begin(), keys.end());
+  if (keys == std::vector<std::string>{"file"}) {
+    const std::string path =
+        py::module_::import("os").attr("fspath")(parameters["file"]).cast<std::string>();
+    const io::FrictionCurve curve = io::readFrictionCurve(path);
+    return std::make_shared<friction::TabulatedLaw>(curve.speeds, curve.coefficients);
+  }
+  if (keys == std::vector<std::string>{"coefficients", "speeds"})
+    return std::make_shared<friction::TabulatedLaw>(
+        parameters["speeds"].cast<std::vector<double>>(),
+        parameters["coefficients"].cast<std::vector<double>>());
+  throw py::type_error(
+      "tabulated: give file=CSV (speed, coefficient) or speeds=[...] and coefficients=[...]");
+}
+
 std::shared_ptr<Law> makeLaw(const std::string& name, const py::kwargs& parameters) {
+  if (name == "tabulated")  // pybind11 holds laws by shared_ptr to non-const; none mutates one
+    return std::const_pointer_cast<Law>(tabulatedLaw(parameters));
   friction::LawSpec spec;
   spec.name = name;
   for (const auto& [key, value] : parameters) {
     const std::string k = key.cast<std::string>();
-    if (py::isinstance<py::str>(value))
-      spec.options[k] = value.cast<std::string>();
-    else if (py::isinstance<py::bool_>(value))
+    if (py::isinstance<py::bool_>(value))
       throw py::type_error(name + ": " + k + " must be a number or a string, not a bool");
-    else
+    if (py::isinstance<py::str>(value)) {
+      const std::string text = value.cast<std::string>();
+      // A number's text is the number, as in a scene file ("0.3"); other text an option.
+      if (const auto number = io::parseNumber(text))
+        spec.values[k] = *number;
+      else
+        spec.options[k] = text;
+    } else if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) {
       spec.values[k] = value.cast<double>();
+    } else {
+      throw py::type_error(name + ": " + k + " must be a number or a string, not " +
+                           std::string(py::str(value.get_type().attr("__name__"))));
+    }
   }
-  // pybind11 holds laws by shared_ptr to non-const; no binding mutates one.
   return std::const_pointer_cast<Law>(std::shared_ptr<const Law>(friction::makeFrictionLaw(spec)));
 }
 
@@ -83,7 +119,9 @@ void bindFriction(py::module_& m) {
 
   m.def("friction_law", &makeLaw, py::arg("name"),
         "friction_law(name, **parameters): a law as a scene's friction_laws entry builds it "
-        "(numbers by key, strings as options). Raises FrictionParameterError.");
+        "(numbers by key, a number's text as the number, other strings as options); "
+        "friction_law('tabulated', file=CSV) or (speeds=[...], coefficients=[...]). Raises "
+        "FrictionParameterError.");
   m.def(
       "friction_laws",
       [] {
@@ -91,6 +129,7 @@ void bindFriction(py::module_& m) {
         d["memoryless"] = friction::knownFrictionLaws();
         d["stateful"] = friction::knownStatefulFrictionLaws();
         d["dynamic"] = friction::knownDynamicFrictionLaws();
+        d["tabulated"] = std::vector<std::string>{"tabulated"};
         return d;
       },
       "The law names friction_law accepts, by kind.");

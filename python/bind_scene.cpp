@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "io/output_channels.hpp"
+#include "io/scene_parameters.hpp"
 #include "python/bindings.hpp"
 #include "python/python_law.hpp"
 #include "python/scene_handle.hpp"
@@ -40,12 +41,23 @@ py::array columnArray(const py::object& owner, const PyResult& r, std::size_t c)
   return a;
 }
 
+// A run setting given in Python: a number (int or float, not bool), else a TypeError naming
+// the argument and what was found.
+double settingNumber(const py::object& value, const char* name, const char* unit) {
+  if ((py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) &&
+      !py::isinstance<py::bool_>(value))
+    return value.cast<double>();
+  throw py::type_error(std::string("run: ") + name + " must be a number [" + unit + "], got " +
+                       std::string(py::str(value.get_type().attr("__name__"))) + " " +
+                       std::string(py::repr(value)));
+}
+
 io::RunSettings settingsFrom(const py::object& duration, const py::object& time_step,
                              const py::object& integrator, const py::object& rtol,
                              const py::object& atol, const py::object& output_interval) {
   io::RunSettings s;
-  if (!duration.is_none()) s.duration = duration.cast<double>();
-  if (!time_step.is_none()) s.time_step = time_step.cast<double>();
+  if (!duration.is_none()) s.duration = settingNumber(duration, "duration", "s");
+  if (!time_step.is_none()) s.time_step = settingNumber(time_step, "time_step", "s");
   if (!integrator.is_none()) {
     try {
       s.integrator = integratorFromName(integrator.cast<std::string>());
@@ -53,9 +65,10 @@ io::RunSettings settingsFrom(const py::object& duration, const py::object& time_
       throw py::value_error(e.what());
     }
   }
-  if (!rtol.is_none()) s.relative_tolerance = rtol.cast<double>();
-  if (!atol.is_none()) s.absolute_tolerance = atol.cast<double>();
-  if (!output_interval.is_none()) s.output_interval = output_interval.cast<double>();
+  if (!rtol.is_none()) s.relative_tolerance = settingNumber(rtol, "relative_tolerance", "-");
+  if (!atol.is_none()) s.absolute_tolerance = settingNumber(atol, "absolute_tolerance", "-");
+  if (!output_interval.is_none())
+    s.output_interval = settingNumber(output_interval, "output_interval", "s");
   return s;
 }
 
@@ -217,10 +230,16 @@ void bindScene(py::module_& m) {
           "parameters",
           [](const SceneHandle& h) {
             py::dict d;
-            for (const auto& [name, value] : h.scene.parameters) d[py::str(name)] = value;
+            for (const auto& [name, value] : h.scene.parameters) {
+              if (const auto number = io::parseNumber(value))
+                d[py::str(name)] = *number;  // a number as a float
+              else
+                d[py::str(name)] = value;  // a word or an expression, as written
+            }
             return d;
           },
-          "Parameter name -> value text, after overrides, in file order.")
+          "Parameter name -> value after overrides, in file order: a float for a number, "
+          "else the text (a word, or an expression as written).")
       .def_property_readonly("bodies",
                              [](const SceneHandle& h) { return bodiesOf(*h.scene.model); })
       .def_property_readonly("joints",

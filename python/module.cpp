@@ -7,6 +7,7 @@ PYBIND11_MODULE(tribo, m) {
       "load_scene/load_urdf -> Scene; Scene.run -> Result (trajectory as NumPy arrays, summary "
       "as a dict); Simulator for step-by-step control; friction_law for the laws' mu(v); sweep "
       "and modes for studies.";
+  m.attr("__version__") = TRIBO_VERSION;  // the CMake project's version (python/CMakeLists.txt)
   tribo::python::bindErrors(m);
   tribo::python::bindFriction(m);
   tribo::python::bindScene(m);

@@ -61,3 +61,25 @@ def test_urdf_robot_runs(source_dir):
     result = scene.run()
     assert result.status == "complete"
     assert len(result["t"]) > 1
+
+
+def test_parameters_come_back_as_numbers(belt):
+    scene = tribo.load_scene(belt, set={"v_b": 0.7})
+    p = scene.parameters
+    assert p["v_b"] == 0.7 and isinstance(p["v_b"], float)
+    assert p["m"] == 10.0
+    assert p["friction"] == "roh_yoo"  # a word stays text
+    assert isinstance(p["z0"], str) and "$m" in p["z0"]  # an expression, as written
+
+
+@pytest.mark.parametrize("setting,value", [("duration", "10"), ("time_step", None.__class__),
+                                           ("output_interval", [0.1]), ("duration", True),
+                                           ("relative_tolerance", "1e-6")])
+def test_run_settings_of_the_wrong_type_name_the_argument(belt, setting, value):
+    with pytest.raises(TypeError, match=f"run: {setting} must be a number"):
+        tribo.load_scene(belt).run(**{setting: value})
+
+
+def test_version():
+    major, minor, patch = (int(x) for x in tribo.__version__.split("."))
+    assert (major, minor, patch) >= (0, 1, 0)

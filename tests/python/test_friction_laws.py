@@ -77,3 +77,31 @@ def test_bad_laws_raise_with_the_message():
         law.mu("fast")
     names = tribo.friction_laws()
     assert "roh_yoo" in names["memoryless"] and "lugre" in names["dynamic"]
+
+
+def test_a_numbers_text_is_the_number():
+    assert tribo.friction_law("coulomb", mu="0.3").mu(1.0) == tribo.friction_law(
+        "coulomb", mu=0.3).mu(1.0)
+    law = tribo.friction_law("coulomb", mu="0.3", regularization="tanh", v_eps="1e-3")
+    assert law.mu(1.0) == pytest.approx(0.3 * math.tanh(1.0 / 1e-3), rel=1e-12)
+    with pytest.raises(TypeError, match="mu must be a number or a string, not list"):
+        tribo.friction_law("coulomb", mu=[0.3])
+
+
+def test_tabulated_law_from_points_and_from_a_file(tmp_path):
+    speeds, mus = [0.0, 0.01, 0.1, 1.0], [0.0, 0.5, 0.4, 0.3]
+    law = tribo.friction_law("tabulated", speeds=speeds, coefficients=mus)
+    # Between points the curve is the table's (interpolation exact at the points).
+    for v, mu in zip(speeds, mus):
+        assert law.mu(v) == pytest.approx(mu, abs=1e-12)
+        assert law.mu(-v) == pytest.approx(-mu, abs=1e-12)  # odd
+    csv = tmp_path / "curve.csv"
+    csv.write_text("speed,mu\n" + "".join(f"{v},{m}\n" for v, m in zip(speeds, mus)))
+    from_file = tribo.friction_law("tabulated", file=csv)
+    vs = np.linspace(-2, 2, 101)
+    assert np.array_equal(from_file.mu(vs), law.mu(vs))
+    assert "tabulated" in tribo.friction_laws()["tabulated"]
+    with pytest.raises(TypeError, match="tabulated: give file"):
+        tribo.friction_law("tabulated", mu=0.3)
+    with pytest.raises(tribo.FrictionParameterError):
+        tribo.friction_law("tabulated", speeds=[0.0, 0.1], coefficients=[0.5])  # lengths
