@@ -58,17 +58,33 @@ SweepViewInfo writeSweepView(const std::filesystem::path& dir, const ViewOptions
   nlohmann::json rows = nlohmann::json::array();
   nlohmann::json linked = nlohmann::json::object();
   SweepViewInfo info;
+  // The points' folders by index: named by the sweep with its zero padding ("07" of 12),
+  // listed in results.csv's point column without it ("7").
+  std::map<unsigned long, std::string> folders;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "points", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.empty() && name.size() <= 9 &&
+        name.find_first_not_of("0123456789") == std::string::npos)
+      folders.emplace(std::stoul(name), name);
+  }
   std::size_t kept = 0;
   while (io::getLineBounded(in, line, io::kMaxCsvLineBytes, results)) {
     if (line.empty()) continue;
     const std::vector<std::string> fields = csvFieldsOf(line);
     rows.push_back(fields);
-    const std::filesystem::path point = dir / "points" / fields.front();
+    const std::string& index = fields.front();
+    if (index.empty() || index.size() > 9 ||
+        index.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    const auto folder = folders.find(std::stoul(index));
+    if (folder == folders.end()) continue;
+    const std::filesystem::path point = dir / "points" / folder->second;
     if (!std::filesystem::exists(point / "summary.json")) continue;
     if (++kept > kSweepPointViewCap) continue;
     try {
       writeRunView(point, options);
-      linked[fields.front()] = "points/" + fields.front() + "/view.html";
+      linked[index] = "points/" + folder->second + "/view.html";
       ++info.linked;
     } catch (const std::exception&) {
       // not linked; the page says which points kept a trajectory without a page

@@ -268,19 +268,21 @@ def case_sweep(tribo, source, work):
     if os.path.exists(out):
         shutil.rmtree(out)
     result = subprocess.run([tribo, "sweep", os.path.join(source, "scenes", "belt.yaml"), "--out", out,
-                             "--grid", "mu_k=0.2:0.3:3", "--grid", "v_b=1:2:2", "--set", "duration=3",
+                             "--grid", "mu_k=0.2:0.3:3", "--grid", "v_b=1:2:4", "--set", "duration=3",
                              "--keep-trajectories", "--jobs", "1"], capture_output=True, text=True,
                             timeout=120)
-    check(result.returncode == 0, "a 3 x 2 sweep keeping its trajectories")
+    check(result.returncode == 0, "a 3 x 4 sweep keeping its trajectories")
     result = subprocess.run([tribo, "view", out], capture_output=True, text=True, timeout=120)
-    check(result.returncode == 0 and "6 points, 6 with a replay page" in result.stdout,
+    # 12 points: folders 00..11 (zero-padded), results.csv's point column 0..11.
+    check(result.returncode == 0 and "12 points, 12 with a replay page" in result.stdout,
           "tribo view SWEEP_DIR: " + result.stdout.strip() + result.stderr.strip())
-    for p in range(6):
-        check(os.path.exists(os.path.join(out, "points", str(p), "view.html")), "point %d has its page" % p)
+    for p in range(12):
+        check(os.path.exists(os.path.join(out, "points", "%02d" % p, "view.html")),
+              "point %d has its page" % p)
     url = "file://" + out + "/view.html#metric=amplitude_pp"
     status = browse(work, url, "dom", width=1000, height=800, budget=500)
-    check(status["errors"] == [] and status["points"] == 6 and status["linked"] == 6,
-          "the sweep page loads with 6 points, all linked")
+    check(status["errors"] == [] and status["points"] == 12 and status["linked"] == 12,
+          "the sweep page loads with 12 points, all linked")
     with open(os.path.join(out, "results.csv")) as f:
         rows = list(csv.DictReader(f))
     expected = {r["point"]: float(r["amplitude_pp"]) for r in rows}
