@@ -3,7 +3,8 @@
 #   scripts/plot_stability.sh map OUT.png RESULTS.csv
 #     the stability map of a two-parameter `tribo sweep --analysis modes` (--grid X --grid Y):
 #     the largest growth rate [1/s] over the two swept parameters, the first grid the
-#     horizontal axis, its zero contour (the stability boundary) drawn where it crosses.
+#     horizontal axis, its zero contour (the stability boundary) drawn in black where the
+#     rate changes sign (the title says when it does not), the colours symmetric about 0.
 #   scripts/plot_stability.sh locus OUT.png SCENE NAME V1,V2,... [--set NAME=VALUE ...]
 #     a root locus: every eigenvalue (growth rate, angular frequency) of `tribo modes SCENE`
 #     as parameter NAME takes the listed values, coloured by the value (the upper half plane:
@@ -15,7 +16,7 @@
 # Needs gnuplot (Debian gnuplot-nox; scripts/setup.sh installs it) and build/apps/tribo.
 set -euo pipefail
 usage() {
-  sed -n '2,14p' "$0" >&2
+  sed -n '2,15p' "$0" >&2
   exit 1
 }
 [ $# -ge 3 ] || usage
@@ -37,19 +38,37 @@ map)
   awk -F, -v g="$g" 'NR > 1 && $4 == "complete" { print $2, $3, $g }' "$csv" |
     sort -g -k1,1 -k2,2 | awk 'NR > 1 && $1 != last { print "" } { print; last = $1 }' \
       > "$work/map.dat"
+  # A colour scale symmetric about zero (blue stable, red unstable), and whether the rate
+  # changes sign at all (else there is no boundary to draw, and the title says so).
+  lo=$(awk 'NF == 3 { if (!n++ || $3 < v) v = $3 } END { print v + 0 }' "$work/map.dat")
+  hi=$(awk 'NF == 3 { if (!n++ || $3 > v) v = $3 } END { print v + 0 }' "$work/map.dat")
+  m=$(awk -v a="$lo" -v b="$hi" 'BEGIN { a = a < 0 ? -a : a; b = b < 0 ? -b : b; m = a > b ? a : b; print (m > 0 ? m : 1) }')
+  if awk -v a="$lo" -v b="$hi" 'BEGIN { exit !(a < 0 && b > 0) }'; then
+    boundary=", '' using 1:2:3 with lines nosurface lw 2.5 lc rgb 'black' title 'growth rate 0: the stability boundary'"
+    note=""
+  else
+    boundary=""
+    note=$(awk -v a="$lo" 'BEGIN { print (a >= 0 ? " - unstable everywhere here: no boundary in range" : " - stable everywhere here: no boundary in range") }')
+  fi
   gnuplot <<GP
-set terminal pngcairo size 900,700 font 'Helvetica,11'
+set terminal pngcairo noenhanced size 900,700 font 'Helvetica,11'
 set output '$out'
-set xlabel '$x'
-set ylabel '$y'
+set xlabel "$x (swept parameter, in the scene's units)"
+set ylabel "$y (swept parameter, in the scene's units)"
 set cblabel 'largest growth rate [1/s]'
 set view map
 set pm3d map interpolate 0,0
 set palette defined (0 '#2c7bb6', 0.5 '#ffffbf', 1 '#d7191c')
+set cbrange [-$m:$m]
 set contour base
 set cntrparam levels discrete 0
-set title 'Stability map: largest growth rate (> 0: steady sliding unstable)'
-splot '$work/map.dat' using 1:2:3 with pm3d notitle
+unset clabel
+set autoscale xfix
+set autoscale yfix
+set bmargin 6
+set key at screen 0.5, 0.04 center horizontal
+set title 'Stability map: largest growth rate of steady sliding (> 0: unstable)$note'
+splot '$work/map.dat' using 1:2:3 with pm3d notitle$boundary
 GP
   ;;
 locus)
