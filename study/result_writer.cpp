@@ -164,7 +164,11 @@ std::string summaryJsonText(const io::Scene& scene, const RunResult& result) {
                          {"first_cycle", g.first_cycle + 1},
                          {"cycles", g.cycles},
                          {"t_start", g.t_start},
-                         {"t_end", g.t_end}};
+                         {"t_end", g.t_end},
+                         {"scatter", g.scatter},
+                         {"period_spread", g.period_spread},
+                         {"trustworthy", g.trustworthy},
+                         {"doubt", g.doubt}};
   const OrbitShape orbit = classifyOrbit(s.cycles);
   j["orbit"] = {{"kind", orbitKindName(orbit.kind)},
                 {"cycles_examined", orbit.examined},

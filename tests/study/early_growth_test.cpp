@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace tribo::study {
@@ -43,6 +45,48 @@ TEST(EarlyGrowth, StopsBeforeTheGrowthSaturates) {
   ASSERT_TRUE(g.measured);
   EXPECT_NEAR(g.rate, 2.0, 2e-3);
   EXPECT_LT(g.t_end, 2.0);
+}
+
+// Cycles of a signal sampled every 1 ms.
+std::vector<Cycle> cyclesOfSignal(double duration, const auto& x_of_t) {
+  std::vector<double> t, x;
+  for (double s = 0; s <= duration; s += 1e-3) {
+    t.push_back(s);
+    x.push_back(x_of_t(s));
+  }
+  return summarizeOscillation(t, x, {}).cycles;
+}
+
+TEST(EarlyGrowth, OneModeIsTrustedAndItsFitIsClean) {
+  for (const auto& [sigma, freq] : {std::pair{0.054, 0.87}, {-0.5, 10.0}, {2.0, 25.0}}) {
+    const EarlyGrowth g = earlyGrowth(cyclesOf(sigma, freq, 0.1, 30.0));
+    ASSERT_TRUE(g.measured);
+    EXPECT_TRUE(g.trustworthy) << freq << ": " << g.doubt;
+    EXPECT_LT(g.scatter, 1e-3) << freq;
+    EXPECT_LT(g.period_spread, 1e-3) << freq;
+    EXPECT_TRUE(g.doubt.empty());
+  }
+}
+
+TEST(EarlyGrowth, TwoModesOrAnEnvelopeJumpAreNotTrusted) {
+  const double w1 = 2 * std::numbers::pi * 1.0, w2 = 2 * std::numbers::pi * 1.37;
+  // A generic start: two modes of comparable size, one decaying faster (the fit mixes them).
+  const auto beating = [&](double t) {
+    return 1e-3 * std::exp(-0.1 * t) * std::cos(w1 * t) +
+           6e-4 * std::exp(-0.4 * t) * std::cos(w2 * t);
+  };
+  // One mode whose amplitude jumps by 40% at t = 8 s (a contact opening in the window).
+  const auto jump = [&](double t) {
+    return 1e-3 * std::exp(0.05 * t) * (t < 8 ? 1.0 : 1.4) * std::cos(w1 * t);
+  };
+  for (const auto& [name, cycles] : {std::pair{"beating", cyclesOfSignal(25.0, beating)},
+                                     {"jump", cyclesOfSignal(25.0, jump)}}) {
+    const EarlyGrowth g = earlyGrowth(cycles);
+    ASSERT_TRUE(g.measured) << name;
+    EXPECT_FALSE(g.trustworthy) << name << " scatter " << g.scatter << " spread "
+                                << g.period_spread;
+    EXPECT_NE(g.doubt.find("not the linear growth rate"), std::string::npos) << g.doubt;
+  }
 }
 
 TEST(EarlyGrowth, TooFewCyclesAreNotMeasured) {

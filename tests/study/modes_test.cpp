@@ -209,6 +209,9 @@ TEST(BeltModes, RunsEarlyGrowthAgreesWithTheModes) {
     std::printf("belt c=%g v_b=%g m=%g: tribo modes %.7g, tribo run's early growth %.7g 1/s\n", c,
                 v_b, m, predicted, g.rate);
     EXPECT_NEAR(g.rate, predicted, 0.01 * std::abs(predicted));
+    // A small single-mode start: the run says its figure can be trusted.
+    EXPECT_TRUE(g.trustworthy) << g.doubt << " (scatter " << g.scatter << ", period spread "
+                               << g.period_spread << ")";
   }
 }
 
