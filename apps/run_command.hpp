@@ -7,6 +7,8 @@
 // A run streams trajectory.csv as it goes; a first SIGINT/SIGTERM stops it at once (back at
 // the last output row, study/scene_run.hpp), a second one ends the process at once (the files
 // stay under their .partial names).
+// Not here: the run loop and the figures of the summary (study/), the shared options
+// (apps/common_options.hpp).
 #pragma once
 
 #include "apps/command.hpp"

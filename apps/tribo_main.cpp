@@ -2,6 +2,7 @@
 // help, apps/*_command.hpp) and hands over to the command named. Exit status: the command's
 // (each header says which), 1 for a usage error, 0 for --help.
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <vector>
 
 #include "apps/command.hpp"
