@@ -1,12 +1,15 @@
 #include "apps/info_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "apps/common_options.hpp"
 #include "core/stability.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
@@ -104,34 +107,20 @@ void printGrouped(std::FILE* out, const char* label, const std::vector<std::stri
   }
 }
 
-int runInfo(const std::vector<std::string>& args) {
+namespace {
+
+struct InfoArguments {
   std::string file;
   std::vector<std::string> package_paths;
   io::UrdfReadOptions read;
   bool verbose = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--strict") {
-      read.strict = true;
-    } else if (args[i] == "--verbose") {
-      verbose = true;
-    } else if (args[i] == "--package-path") {
-      if (i + 1 >= args.size()) {
-        std::fprintf(stderr, "tribo: --package-path needs a folder\n");
-        return 1;
-      }
-      package_paths.push_back(args[++i]);
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      std::fprintf(stderr, "tribo: info takes one URDF file\n");
-      return 1;
-    }
-  }
-  if (file.empty()) {
-    std::fprintf(stderr,
-                 "usage: tribo info FILE.urdf [--package-path DIR ...] [--strict] [--verbose]\n");
-    return 1;
-  }
+};
+
+int runInfo(const InfoArguments& a) {
+  const std::string& file = a.file;
+  const std::vector<std::string>& package_paths = a.package_paths;
+  const io::UrdfReadOptions& read = a.read;
+  const bool verbose = a.verbose;
   io::UrdfRobot robot;
   try {
     robot = io::readUrdf(file, io::PackagePaths::withEnvironment(package_paths), read);
@@ -183,6 +172,21 @@ int runInfo(const std::vector<std::string>& args) {
   printGrouped(stdout, "note", scene.notes, verbose);
   printGrouped(stdout, "note", stability.notes, verbose);
   return 0;
+}
+
+}  // namespace
+
+Command addInfoCommand(CLI::App& tribo) {
+  auto a = std::make_shared<InfoArguments>();
+  CLI::App* info = tribo.add_subcommand(
+      "info", "print a URDF robot's tree, masses, joint types, model checks and what run would do");
+  addPathArgument(*info, "FILE", a->file, "the URDF file (FILE.urdf)");
+  addPackagePathOption(*info, a->package_paths);
+  addUrdfOptions(*info, a->read, a->verbose);
+  info->footer(
+      "A file that passes info does not fail tribo run at load.\n"
+      "exit status: 0 the robot can be simulated, 1 usage, 2 the file or a check is an error");
+  return {info, [a] { return runInfo(*a); }};
 }
 
 }  // namespace tribo::app

@@ -14,9 +14,12 @@
 #include <string>
 #include <vector>
 
+#include "apps/command.hpp"
+
 namespace tribo::app {
 
-int runInfo(const std::vector<std::string>& args);
+// Adds `info` and its options to `tribo`.
+Command addInfoCommand(CLI::App& tribo);
 
 // Prints `lines` to `out` as "tribo: LABEL: line": notes of one kind (the same text once the
 // quoted names and the numbers are set aside) on one line with "(and N more like it)",

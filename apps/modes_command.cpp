@@ -1,40 +1,23 @@
 #include "apps/modes_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
+#include "apps/common_options.hpp"
 #include "io/scene_parameters.hpp"
 #include "study/modes/modes_report.hpp"
 #include "study/modes/stability_boundary.hpp"
 
 namespace tribo::app {
 namespace {
-
-constexpr const char* kUsage =
-    "usage: tribo modes SCENE.yaml --out DIR [--set NAME=VALUE ...] [--settle]\n"
-    "                   [--boundary NAME=LO:HI] [--growth-tolerance X] [--steady-tolerance X]\n"
-    "                   [--solver auto|dense|sparse] [--modes N]\n"
-    "  linear stability of steady sliding: finds the steady state (dynamic bodies at rest,\n"
-    "  belts moving), linearizes about it and prints each mode's frequency, growth rate,\n"
-    "  damping ratio and what moves; writes DIR/modes.json and DIR/modes.csv\n"
-    "  --settle    a damped settling run before the steady-state search\n"
-    "  --boundary  bisect NAME over [LO, HI] for where the largest growth rate crosses zero;\n"
-    "              writes DIR/boundary.json\n"
-    "  --growth-tolerance  growth rate above which a mode counts as unstable (1e-6 1/s)\n"
-    "  --steady-tolerance  largest acceleration accepted at the steady state (1e-8 m/s^2);\n"
-    "              stiff springs anchored far away round above the default\n"
-    "  --solver    dense: every mode (Eigen, cubic in the states); sparse: the N modes of\n"
-    "              largest growth rate among those near the imaginary axis (shift-and-invert\n"
-    "              Arnoldi at shifts i w scanning the frequency band, Spectra), residual-\n"
-    "              checked; modes far left of the axis are not searched;\n"
-    "              auto (default): dense up to 200 states, sparse above, dense again with a\n"
-    "              warning if the sparse one fails\n"
-    "  --modes N   modes the sparse solver returns, a complex pair once (12)\n"
-    "exit status: 0 stable, 1 usage, 2 bad scene, 4 output error, 8 unstable,\n"
-    "             9 no steady state, 10 linearization or eigenproblem failed\n";
 
 constexpr std::size_t kRowsShown = 12;
 
@@ -76,42 +59,6 @@ int modeCount(const std::string& text) {
     throw std::invalid_argument("--modes: expected a whole number of modes >= 1, found '" + text +
                                 "'");
   return static_cast<int>(*v);
-}
-
-Arguments parse(const std::vector<std::string>& args) {
-  Arguments a;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& s = args[i];
-    const bool takes_value = s == "--set" || s == "--out" || s == "--boundary" ||
-                             s == "--growth-tolerance" || s == "--steady-tolerance" ||
-                             s == "--solver" || s == "--modes";
-    if (takes_value && i + 1 >= args.size()) throw std::invalid_argument(s + " needs a value");
-    if (s == "--set")
-      a.overrides.push_back(args[++i]);
-    else if (s == "--out")
-      a.out_dir = args[++i];
-    else if (s == "--boundary")
-      a.boundary = parseBoundary(args[++i]);
-    else if (s == "--growth-tolerance")
-      a.spec.growth_tolerance = number(s, args[++i]);
-    else if (s == "--steady-tolerance")
-      a.spec.steady.tolerance = number(s, args[++i]);
-    else if (s == "--solver")
-      a.spec.solver = solverChoice(args[++i]);
-    else if (s == "--modes")
-      a.spec.sparse_modes = modeCount(args[++i]);
-    else if (s == "--settle")
-      a.spec.steady.settle = true;
-    else if (s.rfind("--", 0) == 0)
-      throw std::invalid_argument("unknown option '" + s + "'");
-    else if (a.scene_path.empty())
-      a.scene_path = s;
-    else
-      throw std::invalid_argument("more than one scene given");
-  }
-  if (a.scene_path.empty()) throw std::invalid_argument("no scene file given");
-  if (a.out_dir.empty()) throw std::invalid_argument("no output folder given (--out DIR)");
-  return a;
 }
 
 void printTable(const io::Scene& scene, const study::ModesResult& r) {
@@ -161,21 +108,7 @@ void printTable(const io::Scene& scene, const study::ModesResult& r) {
       1e3 * r.steady_seconds, 1e3 * r.linearize_seconds, r.evaluations);
 }
 
-}  // namespace
-
-int modesCommand(const std::vector<std::string>& args) {
-  for (const auto& s : args)
-    if (s == "--help" || s == "-h") {
-      std::printf("%s", kUsage);
-      return 0;
-    }
-  Arguments a;
-  try {
-    a = parse(args);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "tribo modes: %s\n\n%s", e.what(), kUsage);
-    return 1;
-  }
+int runModes(Arguments& a) {
   io::Scene scene;
   study::ModesResult result;
   try {
@@ -232,6 +165,49 @@ int modesCommand(const std::vector<std::string>& args) {
   }
   std::printf("results          %s\n", out.string().c_str());
   return result.unstable_count > 0 ? kExitUnstable : 0;
+}
+
+}  // namespace
+
+Command addModesCommand(CLI::App& tribo) {
+  auto a = std::make_shared<Arguments>();
+  CLI::App* modes =
+      tribo.add_subcommand("modes", "linear stability of steady sliding: will it squeal?");
+  addPathArgument(*modes, "SCENE", a->scene_path, "the YAML scene");
+  addOutOption(*modes, a->out_dir, "output folder: DIR/modes.json and DIR/modes.csv")->required();
+  addSetOption(*modes, a->overrides);
+  modes->add_flag("--settle", a->spec.steady.settle,
+                  "a damped settling run before the steady-state search");
+  addCheckedOption(*modes, "--boundary", "NAME=LO:HI",
+                   "bisect NAME over [LO, HI] for where the largest growth rate crosses zero;\n"
+                   "writes DIR/boundary.json",
+                   [a](const std::string& v) { a->boundary = parseBoundary(v); });
+  addCheckedOption(
+      *modes, "--growth-tolerance", "X",
+      "growth rate above which a mode counts as unstable (1e-6 1/s)",
+      [a](const std::string& v) { a->spec.growth_tolerance = number("--growth-tolerance", v); });
+  addCheckedOption(
+      *modes, "--steady-tolerance", "X",
+      "largest acceleration accepted at the steady state (1e-8 m/s^2); stiff\n"
+      "springs anchored far away round above the default",
+      [a](const std::string& v) { a->spec.steady.tolerance = number("--steady-tolerance", v); });
+  addCheckedOption(*modes, "--solver", "auto|dense|sparse",
+                   "dense: every mode; sparse: the N modes of largest growth rate near the\n"
+                   "imaginary axis; auto (default): dense up to 200 states, sparse above",
+                   [a](const std::string& v) { a->spec.solver = solverChoice(v); });
+  addCheckedOption(*modes, "--modes", "N",
+                   "modes the sparse solver returns, a complex pair once (12)",
+                   [a](const std::string& v) { a->spec.sparse_modes = modeCount(v); });
+  modes->footer(
+      "Finds the steady state (dynamic bodies at rest, belts moving), linearizes about it and\n"
+      "prints each mode's frequency, growth rate, damping ratio and what moves.\n"
+      "The dense solver (Eigen) is cubic in the states. The sparse one (Spectra) runs\n"
+      "shift-and-invert Arnoldi at shifts i w scanning the frequency band, checks residuals,\n"
+      "and does not search modes far left of the axis; auto falls back to dense with a warning\n"
+      "if it fails.\n"
+      "exit status: 0 stable, 1 usage, 2 bad scene, 4 output error, 8 unstable,\n"
+      "9 no steady state, 10 linearization or eigenproblem failed");
+  return {modes, [a] { return runModes(*a); }};
 }
 
 }  // namespace tribo::app

@@ -11,8 +11,7 @@
 // grows), 9 no steady state found, 10 the linearization or the eigenproblem failed.
 #pragma once
 
-#include <string>
-#include <vector>
+#include "apps/command.hpp"
 
 namespace tribo::app {
 
@@ -20,6 +19,7 @@ inline constexpr int kExitUnstable = 8;
 inline constexpr int kExitNoSteadyState = 9;
 inline constexpr int kExitEigenFailure = 10;
 
-int modesCommand(const std::vector<std::string>& args);
+// Adds `modes` and its options to `tribo`.
+Command addModesCommand(CLI::App& tribo);
 
 }  // namespace tribo::app

@@ -1,12 +1,17 @@
 #include "apps/sweep_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
-#include <optional>
+#include <memory>
+#include <stdexcept>
+#include <string>
 
+#include "apps/common_options.hpp"
+#include "apps/usage_error.hpp"
 #include "io/scene_parameters.hpp"
 #include "study/sweep/sweep_results.hpp"
 #include "study/sweep/sweep_runner.hpp"
@@ -16,36 +21,9 @@
 
 namespace tribo::app {
 
-const char* const kSweepUsage =
-    "usage: tribo sweep SCENE.yaml --out DIR (--grid NAME=START:STOP:COUNT | --list "
-    "NAME=V1,V2,...)...\n"
-    "                   [--set NAME=VALUE ...] [--settle TOL] [--settle-every SECONDS]\n"
-    "                   [--jobs N] [--keep-trajectories] [--quiet] [--analysis run|modes]\n"
-    "\n"
-    "  sweep   run the scene at every combination of the swept values; one row per point\n"
-    "          in DIR/results.csv, written as each point finishes; run again with the same\n"
-    "          arguments to resume an interrupted sweep. Under mpirun the points are spread\n"
-    "          over the ranks.\n"
-    "  --grid  COUNT values from START to STOP, both included (repeatable)\n"
-    "  --list  the values given (repeatable)\n"
-    "  --set   fix a parameter for every point (repeatable)\n"
-    "  --settle TOL  stop each point once the amplitude of its last cycles changes by less\n"
-    "          than TOL (relative, e.g. 1e-3); the scene's duration is then the cap\n"
-    "  --settle-every SECONDS  simulated time between settle checks (default 5)\n"
-    "  --jobs  threads per process (default: every core, shared among the ranks of a node)\n"
-    "  --keep-trajectories  also write DIR/points/<point>/trajectory.csv and summary.json\n"
-    "  --quiet no progress line\n"
-    "  --analysis modes  per point the linear stability of the steady state instead of a run\n"
-    "          (tribo modes): columns max_growth_rate, frequency, unstable_modes\n";
-
 namespace {
 
 namespace fs = std::filesystem;
-
-int usage(const std::string& problem) {
-  std::fprintf(stderr, "tribo sweep: %s\n\n%s", problem.c_str(), kSweepUsage);
-  return 1;
-}
 
 // Number of processes of the MPI job this process was started in, 0 when none.
 int launcherWorldSize() {
@@ -84,75 +62,31 @@ int failure(const std::exception& e, bool print) {
   return 4;
 }
 
-std::optional<double> positive(const std::string& text) {
+// The value of `option`: a number > 0.
+double positive(const std::string& option, const std::string& text) {
   const auto v = io::parseNumber(text);
-  if (!v || !(*v > 0)) return std::nullopt;
-  return v;
+  if (!v || !(*v > 0))
+    throw std::invalid_argument(option + ": expected a positive number, found '" + text + "'");
+  return *v;
 }
 
-}  // namespace
-
-int sweepCommand(const std::vector<std::string>& args) {
+struct SweepArguments {
   study::SweepSpec spec;
   std::string out;
   unsigned jobs = 0;
   bool quiet = false;
   study::SettleRule settle;
   bool want_settle = false, have_every = false;
-  for (const auto& a : args)
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", kSweepUsage);
-      return 0;
-    }
-  try {
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      const bool takes_value = a == "--out" || a == "--set" || a == "--grid" || a == "--list" ||
-                               a == "--settle" || a == "--settle-every" || a == "--jobs" ||
-                               a == "--analysis";
-      if (takes_value && i + 1 >= args.size()) return usage(a + " needs a value");
-      if (a == "--out") {
-        out = args[++i];
-      } else if (a == "--set") {
-        spec.fixed_overrides.push_back(args[++i]);
-      } else if (a == "--grid") {
-        spec.axes.push_back(study::parseGridAxis(args[++i]));
-      } else if (a == "--list") {
-        spec.axes.push_back(study::parseListAxis(args[++i]));
-      } else if (a == "--settle" || a == "--settle-every") {
-        const auto v = positive(args[++i]);
-        if (!v) return usage(a + ": expected a positive number, found '" + args[i] + "'");
-        (a == "--settle" ? settle.tolerance : settle.check_interval) = *v;
-        (a == "--settle" ? want_settle : have_every) = true;
-      } else if (a == "--jobs") {
-        const auto v = io::parseNumber(args[++i]);
-        if (!v || *v < 1 || *v > 4096 || *v != static_cast<unsigned>(*v))
-          return usage("--jobs: expected a whole number from 1 to 4096, found '" + args[i] + "'");
-        jobs = static_cast<unsigned>(*v);
-      } else if (a == "--analysis") {
-        const auto v = study::kSweepAnalysisNames.find(args[++i]);
-        if (!v) return usage("--analysis: expected run or modes, found '" + args[i] + "'");
-        spec.analysis = *v;
-      } else if (a == "--keep-trajectories") {
-        spec.keep_trajectories = true;
-      } else if (a == "--quiet") {
-        quiet = true;
-      } else if (a.rfind("--", 0) == 0) {
-        return usage("unknown option '" + a + "'");
-      } else if (spec.scene_path.empty()) {
-        spec.scene_path = a;
-      } else {
-        return usage("more than one scene given ('" + spec.scene_path + "', '" + a + "')");
-      }
-    }
-  } catch (const study::SweepSpecError& e) {
-    return usage(e.what());
-  }
-  if (spec.scene_path.empty()) return usage("no scene file given");
-  if (out.empty()) return usage("no output folder given (--out DIR)");
-  if (spec.axes.empty()) return usage("nothing to sweep (give --grid or --list)");
-  if (have_every && !want_settle) return usage("--settle-every needs --settle");
-  if (want_settle) spec.settle = settle;
+};
+
+int runSweep(const CLI::App& command, SweepArguments a) {
+  study::SweepSpec& spec = a.spec;
+  const std::string& out = a.out;
+  const unsigned jobs = a.jobs;
+  const bool quiet = a.quiet;
+  if (spec.axes.empty()) return usageError(command, "nothing to sweep (give --grid or --list)");
+  if (a.have_every && !a.want_settle) return usageError(command, "--settle-every needs --settle");
+  if (a.want_settle) spec.settle = a.settle;
 
   const int world = launcherWorldSize();
 #ifdef TRIBO_WITH_MPI
@@ -175,8 +109,9 @@ int sweepCommand(const std::vector<std::string>& args) {
   }
 #else
   if (world > 1)
-    return usage("started by an MPI launcher with " + std::to_string(world) +
-                 " ranks, but this tribo was built without MPI (TRIBO_WITH_MPI=OFF)");
+    return usageError(command,
+                      "started by an MPI launcher with " + std::to_string(world) +
+                          " ranks, but this tribo was built without MPI (TRIBO_WITH_MPI=OFF)");
 #endif
   try {
     const study::SweepPlan plan = study::planSweep(spec);
@@ -188,6 +123,66 @@ int sweepCommand(const std::vector<std::string>& args) {
   } catch (const std::exception& e) {
     return failure(e, true);
   }
+}
+
+}  // namespace
+
+Command addSweepCommand(CLI::App& tribo) {
+  auto a = std::make_shared<SweepArguments>();
+  CLI::App* sweep = tribo.add_subcommand(
+      "sweep", "run a scene at every combination of swept values; one row per point");
+  addPathArgument(*sweep, "SCENE", a->spec.scene_path, "the YAML scene");
+  addOutOption(*sweep, a->out, "output folder: DIR/results.csv and DIR/sweep.json")->required();
+  // --grid and --list add to one list of axes, in the order given.
+  addCheckedOption(*sweep, "--grid", "NAME=START:STOP:COUNT",
+                   "COUNT values from START to STOP, both included (repeatable)",
+                   [a](const std::string& v) { a->spec.axes.push_back(study::parseGridAxis(v)); });
+  addCheckedOption(*sweep, "--list", "NAME=V1,V2,...", "the values given (repeatable)",
+                   [a](const std::string& v) { a->spec.axes.push_back(study::parseListAxis(v)); });
+  addSetOption(*sweep, a->spec.fixed_overrides, "fix a parameter for every point (repeatable)");
+  addCheckedOption(*sweep, "--settle", "TOL",
+                   "stop each point once the amplitude of its last cycles changes by less than\n"
+                   "TOL (relative, e.g. 1e-3); the scene's duration is then the cap",
+                   [a](const std::string& v) {
+                     a->settle.tolerance = positive("--settle", v);
+                     a->want_settle = true;
+                   });
+  addCheckedOption(*sweep, "--settle-every", "SECONDS",
+                   "simulated time between settle checks (default 5; needs --settle)",
+                   [a](const std::string& v) {
+                     a->settle.check_interval = positive("--settle-every", v);
+                     a->have_every = true;
+                   });
+  addCheckedOption(*sweep, "--jobs", "N",
+                   "threads per process, 1 to 4096 (default: every core, shared among the ranks\n"
+                   "of a node)",
+                   [a](const std::string& v) {
+                     const auto n = io::parseNumber(v);
+                     if (!n || *n < 1 || *n > 4096 || *n != static_cast<unsigned>(*n))
+                       throw std::invalid_argument(
+                           "--jobs: expected a whole number from 1 to 4096, found '" + v + "'");
+                     a->jobs = static_cast<unsigned>(*n);
+                   });
+  sweep->add_flag("--keep-trajectories", a->spec.keep_trajectories,
+                  "also write DIR/points/<point>/trajectory.csv and summary.json");
+  addQuietOption(*sweep, a->quiet);
+  addCheckedOption(
+      *sweep, "--analysis", "run|modes",
+      "modes: per point the linear stability of the steady state instead of a run\n"
+      "(tribo modes): columns max_growth_rate, frequency, unstable_modes",
+      [a](const std::string& v) {
+        const auto analysis = study::kSweepAnalysisNames.find(v);
+        if (!analysis)
+          throw std::invalid_argument("--analysis: expected run or modes, found '" + v + "'");
+        a->spec.analysis = *analysis;
+      });
+  sweep->footer(
+      "Rows are written to DIR/results.csv as each point finishes; run again with the same\n"
+      "arguments to resume an interrupted sweep. Under mpirun the points are spread over the\n"
+      "ranks.\n"
+      "exit status: 0 every point recorded (failed points are rows with their error), 1 usage\n"
+      "or DIR holds another sweep or is in use, 2 bad scene or swept parameter, 4 write error");
+  return {sweep, [sweep, a] { return runSweep(*sweep, *a); }};
 }
 
 }  // namespace tribo::app

@@ -7,14 +7,11 @@
 // written.
 #pragma once
 
-#include <string>
-#include <vector>
+#include "apps/command.hpp"
 
 namespace tribo::app {
 
-extern const char* const kSweepUsage;
-
-// `args` are the words after "sweep".
-int sweepCommand(const std::vector<std::string>& args);
+// Adds `sweep` and its options to `tribo`.
+Command addSweepCommand(CLI::App& tribo);
 
 }  // namespace tribo::app

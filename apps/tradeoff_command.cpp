@@ -1,5 +1,6 @@
 #include "apps/tradeoff_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,18 +11,15 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
+#include "apps/common_options.hpp"
 #include "io/scene_parameters.hpp"
 #include "study/tradeoff.hpp"
 
 namespace tribo::app {
 namespace {
-
-constexpr const char* kUsage =
-    "usage: tribo tradeoff SCENE.yaml [--set NAME=VALUE ...] [--out DIR] [--window S]\n"
-    "                      [--repeat N] [--integrators A,B,...]\n"
-    "  runs every integrator over a ladder of steps or tolerances against a converged\n"
-    "  reference; writes DIR/tradeoff.csv (default DIR: out/tradeoff) and prints a table\n";
 
 // The cheapest complete, unwarned run per target: by amplitude error alone, and by both
 // errors (an amplitude that lands close while the trajectory is off is a fluke).
@@ -62,53 +60,24 @@ double positiveNumber(const std::string& option, const std::string& text, bool w
   return *v;
 }
 
-}  // namespace
-
-int tradeoffCommand(const std::vector<std::string>& args) {
+struct TradeoffArguments {
   std::string scene_path, out_dir = "out/tradeoff";
   std::vector<std::string> overrides;
   double window = 10.0;
   int repeat = 1;
   std::vector<IntegratorType> wanted = {IntegratorType::kSemiImplicitEuler, IntegratorType::kRk4,
                                         IntegratorType::kDopri5, IntegratorType::kBdf};
-  try {
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      if (a == "--help" || a == "-h") {
-        std::printf("%s", kUsage);
-        return 0;
-      }
-      const bool takes_value = a == "--set" || a == "--out" || a == "--window" || a == "--repeat" ||
-                               a == "--integrators";
-      if (takes_value && i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-      if (a == "--set")
-        overrides.push_back(args[++i]);
-      else if (a == "--out")
-        out_dir = args[++i];
-      else if (a == "--window")
-        window = positiveNumber(a, args[++i], false);
-      else if (a == "--repeat")
-        repeat = static_cast<int>(positiveNumber(a, args[++i], true));
-      else if (a == "--integrators")
-        wanted = parseIntegrators(args[++i]);
-      else if (a.rfind("--", 0) == 0)
-        throw std::invalid_argument("unknown option '" + a + "'");
-      else if (scene_path.empty())
-        scene_path = a;
-      else
-        throw std::invalid_argument("more than one scene given");
-    }
-    if (scene_path.empty()) throw std::invalid_argument("no scene file given");
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "tribo tradeoff: %s\n\n%s", e.what(), kUsage);
-    return 1;
-  }
+};
+
+int runTradeoff(const TradeoffArguments& a) {
+  const std::string& scene_path = a.scene_path;
+  const std::string& out_dir = a.out_dir;
   study::TradeoffSpec spec;
   spec.scene_path = scene_path;
-  spec.overrides = overrides;
-  spec.integrators = wanted;
-  spec.window = window;
-  spec.repeat = repeat;
+  spec.overrides = a.overrides;
+  spec.integrators = a.wanted;
+  spec.window = a.window;
+  spec.repeat = a.repeat;
   study::TradeoffResult result;
   bool header = false;
   try {
@@ -154,6 +123,34 @@ int tradeoffCommand(const std::vector<std::string>& args) {
   }
   std::printf("results          %s\n", file.string().c_str());
   return 0;
+}
+
+}  // namespace
+
+Command addTradeoffCommand(CLI::App& tribo) {
+  auto a = std::make_shared<TradeoffArguments>();
+  CLI::App* tradeoff = tribo.add_subcommand(
+      "tradeoff", "measure each integrator's speed and accuracy against a converged reference");
+  addPathArgument(*tradeoff, "SCENE", a->scene_path, "the YAML scene");
+  addSetOption(*tradeoff, a->overrides);
+  addOutOption(*tradeoff, a->out_dir, "output folder of tradeoff.csv")->capture_default_str();
+  addCheckedOption(*tradeoff, "--window", "S",
+                   "simulated seconds over which the trajectory error is taken (10)",
+                   [a](const std::string& v) { a->window = positiveNumber("--window", v, false); });
+  addCheckedOption(*tradeoff, "--repeat", "N",
+                   "runs per setting, the least time counts; 1 to 1e6 (1)",
+                   [a](const std::string& v) {
+                     a->repeat = static_cast<int>(positiveNumber("--repeat", v, true));
+                   });
+  addCheckedOption(*tradeoff, "--integrators", "A,B,...",
+                   "the integrators to measure (semi_implicit_euler,rk4,dopri5,bdf)",
+                   [a](const std::string& v) { a->wanted = parseIntegrators(v); });
+  tradeoff->footer(
+      "Runs every integrator over a ladder of steps or tolerances against a converged reference;\n"
+      "writes DIR/tradeoff.csv and prints a table, then the cheapest run reaching each error.\n"
+      "exit status: 0 done, 1 usage, 2 bad scene, 3 the reference did not complete, 4 output "
+      "error");
+  return {tradeoff, [a] { return runTradeoff(*a); }};
 }
 
 }  // namespace tribo::app

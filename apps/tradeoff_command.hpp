@@ -8,11 +8,11 @@
 // 4 output error.
 #pragma once
 
-#include <string>
-#include <vector>
+#include "apps/command.hpp"
 
 namespace tribo::app {
 
-int tradeoffCommand(const std::vector<std::string>& args);
+// Adds `tradeoff` and its options to `tribo`.
+Command addTradeoffCommand(CLI::App& tribo);
 
 }  // namespace tribo::app

@@ -1,332 +1,43 @@
-// The `tribo` command: parse arguments, load the scene (io), run it (study), write
-// results, print a short summary. Exit status: 0 success, 1 usage error, 2 bad scene or
-// parameters (also an output that would not fit the disk), 3 the run diverged (partial
-// results written and marked so), 4 output error, 5 interrupted by SIGINT or SIGTERM
-// (results up to there written, marked so), 6 the output folder is in use by another run.
-// A run streams trajectory.csv as it goes; a first SIGINT/SIGTERM stops it at once (back at
-// the last output row, study/scene_run.hpp), a second one ends the process at once (the files stay
-// under their .partial names).
-#include <signal.h>
-#include <unistd.h>
-
-#include <atomic>
-#include <cmath>
+// The `tribo` command: reads the command line with CLI11 (each command adds its options and
+// help, apps/*_command.hpp) and hands over to the command named. Exit status: the command's
+// (each header says which), 1 for a usage error, 0 for --help.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <exception>
-#include <filesystem>
-#include <optional>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
+#include "apps/command.hpp"
 #include "apps/info_command.hpp"
 #include "apps/modes_command.hpp"
+#include "apps/run_command.hpp"
 #include "apps/sweep_command.hpp"
 #include "apps/tradeoff_command.hpp"
+#include "apps/usage_error.hpp"
 #include "apps/view_command.hpp"
-#include "io/scene_loader.hpp"
-#include "io/scene_source.hpp"
-#include "io/urdf_reader.hpp"
-#include "study/dir_lock.hpp"
-#include "study/early_growth.hpp"
-#include "study/orbit_shape.hpp"
-#include "study/output_budget.hpp"
-#include "study/result_writer.hpp"
-#include "study/run_progress.hpp"
-#include "study/scene_run.hpp"
-#include "study/view/view_page.hpp"
-
-namespace {
-
-constexpr const char* kUsage =
-    "usage: tribo run SCENE.yaml --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
-    "                [--quiet | --progress] [--profile] [--view] [--threads N|auto]\n"
-    "       tribo run ROBOT.urdf --out DIR [--package-path DIR ...] [--set NAME=VALUE ...]\n"
-    "                [--strict] [--verbose]\n"
-    "       tribo info FILE.urdf [--package-path DIR ...] [--strict] [--verbose]\n"
-    "       tribo sweep SCENE.yaml --out DIR --grid NAME=START:STOP:COUNT | --list NAME=V1,... "
-    "(see tribo sweep --help)\n"
-    "       tribo tradeoff SCENE.yaml [--out DIR] (integrators vs a converged reference; "
-    "see tribo tradeoff --help)\n"
-    "       tribo modes SCENE.yaml --out DIR (stability of steady sliding; see tribo modes "
-    "--help)\n"
-    "       tribo view RUN_DIR (RUN_DIR/view.html: replay the run in a browser; see tribo view "
-    "--help)\n"
-    "\n"
-    "  run     simulate the scene; write DIR/trajectory.csv and DIR/summary.json\n"
-    "  --out   output folder (created if missing)\n"
-    "  --set   override a value of the scene's parameters: section (repeatable)\n"
-    "  --progress  show the progress line of a long run even when stderr is not a terminal\n"
-    "  --quiet     never show it\n"
-    "  --profile   time each stage of the step and print the share of each\n"
-    "  --view      also record orientations and write DIR/view.html (tribo view)\n"
-    "  --threads   threads of one force evaluation (replaces the scene's simulation.threads;\n"
-    "              auto: one per core where the scene is large enough; results do not depend\n"
-    "              on it)\n"
-    "  info    print a URDF robot's tree, masses, joint types, model checks and what run "
-    "would do\n"
-    "  --strict   refuse URDF that urdfdom refuses (a joint without <limit>, an undeclared "
-    "world)\n"
-    "  --verbose  list every note (default: one line per kind, with a count)\n";
-
-// Set by the first SIGINT or SIGTERM; the run stops at once, back at its last output row.
-std::atomic<bool> g_stop{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void onStopSignal(int) {
-  g_stop.store(true);
-  // A second signal ends the process at once.
-  ::signal(SIGINT, SIG_DFL);
-  ::signal(SIGTERM, SIG_DFL);
-}
-
-void catchStopSignals() {
-  struct sigaction sa {};
-  sa.sa_handler = onStopSignal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-}
-
-int usage(const std::string& problem) {
-  std::fprintf(stderr, "tribo: %s\n\n%s", problem.c_str(), kUsage);
-  return 1;
-}
-
-void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& r,
-                  const std::filesystem::path& out) {
-  const auto& s = r.summary;
-  const auto& o = scene.model->options;
-  std::printf("scene            %s\n", scene.path.c_str());
-  std::printf("integrator       %s, step %g s, %ld steps\n",
-              tribo::integratorName(o.integrator).c_str(), o.time_step, r.stats.steps);
-  std::printf("status           %s\n", r.complete      ? "complete"
-                                       : r.interrupted ? r.message.c_str()
-                                                       : ("DIVERGED: " + r.message).c_str());
-  static const char* kAxis[] = {"x", "y", "z"};
-  const auto& spec = scene.output.summary;
-  if (spec.body.empty() && spec.channel.empty()) {
-    std::printf("observed         nothing (the scene's output.summary names no body)\n");
-  } else {
-    const std::string observed =
-        spec.channel.empty() ? spec.body + "." + kAxis[spec.coordinate] : spec.channel;
-    std::printf("observed         %s\n", observed.c_str());
-    std::printf("oscillating      %s (%zu cycles)\n", s.oscillating ? "yes" : "no",
-                s.cycles.size());
-    std::printf("amplitude (p-p)  %.6g m\n", s.amplitude_pp);
-    std::printf("period           %.6g s\n", s.period);
-    std::printf("time to 98%%      %.6g s\n", s.time_to_98);
-    std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
-    const tribo::study::OrbitShape orbit = tribo::study::classifyOrbit(s.cycles);
-    if (orbit.kind == tribo::study::OrbitKind::kPeriod2)
-      std::printf("orbit            period 2: cycles alternate p-p %.6g / %.6g m, %.6g / %.6g s\n",
-                  orbit.peak_to_peak_a, orbit.peak_to_peak_b, orbit.duration_a, orbit.duration_b);
-    else
-      std::printf("orbit            %s (last %d cycles)\n",
-                  orbit.kind == tribo::study::OrbitKind::kPeriod1     ? "period 1"
-                  : orbit.kind == tribo::study::OrbitKind::kIrregular ? "irregular"
-                                                                      : "none",
-                  orbit.examined);
-    const tribo::study::EarlyGrowth g = tribo::study::earlyGrowth(s.cycles);
-    if (g.measured)
-      std::printf("early growth     %.7g 1/s (cycles %d-%d, %.4g-%.4g s)\n", g.rate,
-                  g.first_cycle + 1, g.first_cycle + g.cycles, g.t_start, g.t_end);
-    else
-      std::printf("early growth     not measured (fewer than 3 cycles after the first)\n");
-  }
-  std::printf("max penetration  %.3g m\n", r.stats.max_penetration);
-  const auto& limit = r.stability.limit;
-  const std::string method = tribo::integratorName(o.integrator);
-  if (o.integrator == tribo::IntegratorType::kBdf)
-    std::printf("stable step      n/a (%s is implicit: no explicit step limit)\n", method.c_str());
-  else if (std::isinf(limit.max_step))
-    std::printf(
-        "stable step      not estimated (no contact, spring or friction slope bounds it)\n");
-  else
-    std::printf("stable step     < %.4g s (%s%s)\n", limit.max_step, limit.element.c_str(),
-                tribo::isAdaptive(o.integrator) ? "; bounds the internal steps" : "");
-  // Joint drift of the Baumgarte-stabilized constraints: position level |Phi| [m or -],
-  // velocity level |J v| [m/s or rad/s], the largest over the run.
-  if (scene.model->constraint_equations > 0)
-    std::printf("constraint drift max |Phi| %.2g, max |J v| %.2g\n", r.stats.max_constraint_error,
-                r.stats.max_constraint_rate_error);
-  std::printf("speed            %.4g simulated s per wall s (%.3g s wall)\n",
-              r.simulated_seconds / r.wall_seconds, r.wall_seconds);
-  std::printf("results          %s\n", out.string().c_str());
-}
-
-// The stage profile of a run (--profile): per stage, microseconds per step and share of the
-// step; the rest of the step is the integrator's own work, the checks and the energy guard.
-void printProfile(const tribo::StepStats& stats) {
-  const tribo::StageProfile& p = stats.profile;
-  if (stats.steps == 0 || !(p.step > 0.0)) return;
-  const double per_step = 1e6 / static_cast<double>(stats.steps);
-  std::printf("stage profile    %.3g us a step, %.3g evaluations a step\n", p.step * per_step,
-              static_cast<double>(p.evaluations) / static_cast<double>(stats.steps));
-  for (std::size_t s = 0; s < tribo::kStageCount; ++s) {
-    const auto stage = static_cast<tribo::Stage>(s);
-    std::printf("  %-20s %9.3f us %5.1f%%\n", std::string(tribo::stageName(stage)).c_str(),
-                p[stage] * per_step, 100.0 * p[stage] / p.step);
-  }
-  const double rest = p.step - p.total();
-  std::printf("  %-20s %9.3f us %5.1f%%\n", "integrator, checks", rest * per_step,
-              100.0 * rest / p.step);
-  std::printf("  (fcl inside detect: %.3f us)\n", p.fcl * per_step);
-}
-
-int run(const std::vector<std::string>& args) {
-  std::string scene_path;
-  std::string out_dir;
-  std::vector<std::string> overrides;
-  std::vector<std::string> package_paths;
-  bool quiet = false, progress = false, profile = false, view = false;
-  std::optional<int> threads;
-  tribo::io::UrdfReadOptions read;
-  bool verbose = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--strict" || a == "--verbose") {
-      (a == "--strict" ? read.strict : verbose) = true;
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (a == "--progress") {
-      progress = true;
-    } else if (a == "--profile") {
-      profile = true;
-    } else if (a == "--view") {
-      view = true;
-    } else if (a == "--threads") {
-      if (i + 1 >= args.size()) return usage(a + " needs a value");
-      const std::string& v = args[++i];
-      const auto n = tribo::io::parseNumber(v);
-      if (v == "auto")
-        threads = tribo::kAutoThreads;
-      else if (n && *n >= 1 && *n <= 4096 && *n == std::floor(*n))
-        threads = static_cast<int>(*n);
-      else
-        return usage("--threads: expected auto or a whole number from 1 to 4096, found '" + v +
-                     "'");
-    } else if (a == "--out" || a == "--set" || a == "--package-path") {
-      if (i + 1 >= args.size()) return usage(a + " needs a value");
-      if (a == "--out")
-        out_dir = args[++i];
-      else if (a == "--set")
-        overrides.push_back(args[++i]);
-      else
-        package_paths.push_back(args[++i]);
-    } else if (a.rfind("--", 0) == 0) {
-      return usage("unknown option '" + a + "'");
-    } else if (scene_path.empty()) {
-      scene_path = a;
-    } else {
-      return usage("more than one scene given ('" + scene_path + "', '" + a + "')");
-    }
-  }
-  if (scene_path.empty()) return usage("no scene file given");
-  if (out_dir.empty()) return usage("no output folder given (--out DIR)");
-  if (quiet && progress) return usage("--quiet and --progress contradict each other");
-
-  tribo::io::Scene scene;
-  try {
-    tribo::io::SceneRequest request;
-    request.overrides = overrides;
-    request.package_paths = package_paths;
-    request.settings.threads = threads;
-    request.urdf = read;
-    scene = tribo::io::loadAnyScene(scene_path, request);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "tribo: %s\n", e.what());
-    return 2;
-  }
-  tribo::app::printGrouped(stderr, "note", scene.notes, verbose);  // before the run: why
-  // The replay page needs orientations to turn the bodies.
-  if (view && !tribo::io::hasGroup(scene.output.channels, "orientation"))
-    scene.output.channels.push_back("orientation");
-  namespace study = tribo::study;
-  const std::filesystem::path out(out_dir);
-  try {
-    study::checkOutputFitsDisk(scene, out);
-  } catch (const study::OutputTooLarge& e) {
-    std::fprintf(stderr, "tribo: %s: %s\n", scene.path.c_str(), e.what());
-    return 2;
-  }
-  std::optional<study::DirLock> lock;
-  std::optional<study::TrajectoryCsvFile> csv;
-  try {
-    std::error_code ec;
-    std::filesystem::create_directories(out, ec);
-    if (ec)
-      throw std::runtime_error("cannot create output folder '" + out_dir + "': " + ec.message());
-    lock.emplace(out);
-    csv.emplace(out / "trajectory.csv",
-                study::TrajectoryRecorder(*scene.model, 0, false, scene.output.channels).columns());
-  } catch (const study::DirLockedError& e) {
-    std::fprintf(stderr, "tribo: %s\n", e.what());
-    return 6;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "tribo: %s\n", e.what());
-    return 4;
-  }
-  const bool show_progress = !quiet && (progress || ::isatty(STDERR_FILENO));
-  study::RunProgress progress_line(show_progress ? stderr : nullptr, scene.model->options.duration);
-  study::RunOptions options;
-  options.sink = &*csv;
-  options.spill_dir = out;
-  options.stop = &g_stop;
-  options.profile = profile;
-  options.progress = [&](double simulated) { progress_line.update(simulated); };
-  catchStopSignals();
-  std::optional<study::RunResult> run_result;
-  try {
-    run_result.emplace(study::runScene(scene, options));
-  } catch (const std::exception& e) {
-    progress_line.finish();
-    std::fprintf(stderr, "tribo: %s\n", e.what());
-    return 4;
-  }
-  progress_line.finish();
-  const study::RunResult& result = *run_result;
-  tribo::app::printGrouped(stderr, "warning", result.warnings, verbose);
-  try {
-    csv->commit();
-    study::writeSummaryJson(out / "summary.json", scene, result);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "tribo: %s\n", e.what());
-    return 4;
-  }
-  if (profile) printProfile(result.stats);
-  printSummary(scene, result, out_dir);
-  if (view) {
-    lock.reset();
-    const int status =
-        tribo::app::writeView(out, tribo::study::ViewOptions{}.frame_cap, "", package_paths);
-    if (status != 0 && result.complete) return status;
-  }
-  if (result.interrupted) {
-    std::fprintf(stderr, "tribo: %s; results up to there written\n", result.message.c_str());
-    return 5;
-  }
-  if (!result.complete) {
-    std::fprintf(stderr, "tribo: run stopped early: %s\n", result.message.c_str());
-    return 3;
-  }
-  return 0;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty()) return usage("no command given");
-  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::printf("%s", kUsage);
+  namespace app = tribo::app;
+  CLI::App tribo("Tribo: rigid multibody dynamics with swappable friction laws", "tribo");
+  // An option given twice: the last one counts (lists such as --set take every one).
+  tribo.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  tribo.require_subcommand(1);
+  tribo.footer("Run 'tribo COMMAND --help' for a command's options.");
+  const std::vector<app::Command> commands = {
+      app::addRunCommand(tribo),      app::addInfoCommand(tribo),  app::addSweepCommand(tribo),
+      app::addTradeoffCommand(tribo), app::addModesCommand(tribo), app::addViewCommand(tribo)};
+  // `tribo help`: the same as `tribo --help` (not listed).
+  CLI::App* help = tribo.add_subcommand("help", "")->group("");
+  try {
+    tribo.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app::reportParseError(tribo, e);
+  }
+  for (const app::Command& c : commands)
+    if (c.app->parsed()) return c.run();
+  if (help->parsed()) {
+    std::printf(
+        "%s",
+        tribo.get_formatter()->make_help(&tribo, "tribo", CLI::AppFormatMode::Normal).c_str());
     return 0;
   }
-  if (args[0] == "run") return run({args.begin() + 1, args.end()});
-  if (args[0] == "info") return tribo::app::runInfo({args.begin() + 1, args.end()});
-  if (args[0] == "sweep") return tribo::app::sweepCommand({args.begin() + 1, args.end()});
-  if (args[0] == "tradeoff") return tribo::app::tradeoffCommand({args.begin() + 1, args.end()});
-  if (args[0] == "modes") return tribo::app::modesCommand({args.begin() + 1, args.end()});
-  if (args[0] == "view") return tribo::app::viewCommand({args.begin() + 1, args.end()});
-  return usage("unknown command '" + args[0] + "'");
+  return app::usageError(tribo, "no command given");
 }

@@ -1,42 +1,18 @@
 #include "apps/view_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
+#include <stdexcept>
 
+#include "apps/common_options.hpp"
 #include "io/scene_parameters.hpp"
 #include "study/view/view_page.hpp"
 #include "study/view/view_sweep.hpp"
 
 namespace tribo::app {
-namespace {
-
-constexpr const char* kUsage =
-    "usage: tribo view RUN_DIR [--frames N] [--three PATH] [--package-path DIR ...]\n"
-    "       tribo view SWEEP_DIR (a folder of tribo sweep: sweep.json, results.csv)\n"
-    "  writes RUN_DIR/view.html: the run replayed in a browser (one file, no server, no\n"
-    "  network): the scene's bodies and geometry, the recorded motion, play/pause/speed/\n"
-    "  scrub/frame steps, orbit camera (drag: turn, right drag: pan, wheel: zoom), follow a\n"
-    "  body, trails, force arrows and stick/slip colours (when recorded), a plot of chosen\n"
-    "  channels; docs/view.md. Run it from the folder the run was started in (the scene is\n"
-    "  reloaded from summary.json's path with the run's parameters).\n"
-    "  --frames  frames the page holds at most (20000; long runs are decimated)\n"
-    "  --three   three.js to inline (default $TRIBO_THREE_JS, else Debian's libjs-three:\n"
-    "            /usr/share/javascript/three/three.min.js)\n"
-    "  --package-path  a folder holding ROS packages, as the run was given (robot meshes)\n"
-    "  tribo run SCENE --out DIR --view  does the same after the run and records\n"
-    "  orientations for it\n"
-    "  A sweep's folder gets a heat map of a chosen result over two swept parameters\n"
-    "  (a line over one); points kept with --keep-trajectories link to their replay.\n"
-    "exit status: 0 written, 1 usage, 2 run, scene or three.js unreadable, 4 write error\n";
-
-int usage(const std::string& problem) {
-  std::fprintf(stderr, "tribo view: %s\n\n%s", problem.c_str(), kUsage);
-  return 1;
-}
-
-}  // namespace
-
 int writeView(const std::filesystem::path& run_dir, std::size_t frame_cap,
               const std::string& three_js, const std::vector<std::string>& package_paths) {
   study::ViewOptions options;
@@ -56,40 +32,18 @@ int writeView(const std::filesystem::path& run_dir, std::size_t frame_cap,
   return 0;
 }
 
-int viewCommand(const std::vector<std::string>& args) {
+namespace {
+
+struct ViewArguments {
   std::string run_dir, three_js;
   std::vector<std::string> package_paths;
   std::size_t frames = study::ViewOptions{}.frame_cap;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", kUsage);
-      return 0;
-    }
-    if (a == "--frames" || a == "--three" || a == "--package-path") {
-      if (i + 1 >= args.size()) return usage(a + " needs a value");
-      const std::string& v = args[++i];
-      if (a == "--three") {
-        three_js = v;
-        continue;
-      }
-      if (a == "--package-path") {
-        package_paths.push_back(v);
-        continue;
-      }
-      const auto n = io::parseNumber(v);
-      if (!n || !(*n >= 2) || *n > 1e8 || *n != static_cast<double>(static_cast<long>(*n)))
-        return usage("--frames needs a whole number from 2 to 1e8, not '" + v + "'");
-      frames = static_cast<std::size_t>(*n);
-    } else if (a.rfind("--", 0) == 0) {
-      return usage("unknown option '" + a + "'");
-    } else if (run_dir.empty()) {
-      run_dir = a;
-    } else {
-      return usage("more than one folder given ('" + run_dir + "', '" + a + "')");
-    }
-  }
-  if (run_dir.empty()) return usage("no run folder given");
+};
+
+int runView(const ViewArguments& a) {
+  const std::string& run_dir = a.run_dir;
+  const std::string& three_js = a.three_js;
+  const std::size_t frames = a.frames;
   if (study::isSweepDir(run_dir)) {
     study::ViewOptions options;
     options.frame_cap = frames;
@@ -105,7 +59,43 @@ int viewCommand(const std::vector<std::string>& args) {
     }
     return 0;
   }
-  return writeView(run_dir, frames, three_js, package_paths);
+  return writeView(run_dir, frames, three_js, a.package_paths);
+}
+
+}  // namespace
+
+Command addViewCommand(CLI::App& tribo) {
+  auto a = std::make_shared<ViewArguments>();
+  CLI::App* view = tribo.add_subcommand(
+      "view", "write RUN_DIR/view.html: replay a run (or map a sweep) in a browser");
+  addPathArgument(*view, "RUN_DIR", a->run_dir,
+                  "a folder of tribo run, or of tribo sweep (sweep.json, results.csv)");
+  addCheckedOption(
+      *view, "--frames", "N",
+      "frames the page holds at most, 2 to 1e8 (20000; long runs are decimated)",
+      [a](const std::string& v) {
+        const auto n = io::parseNumber(v);
+        if (!n || !(*n >= 2) || *n > 1e8 || *n != static_cast<double>(static_cast<long>(*n)))
+          throw std::invalid_argument("--frames needs a whole number from 2 to 1e8, not '" + v +
+                                      "'");
+        a->frames = static_cast<std::size_t>(*n);
+      });
+  view->add_option("--three", a->three_js,
+                   "three.js to inline (default $TRIBO_THREE_JS, else Debian's libjs-three:\n"
+                   "/usr/share/javascript/three/three.min.js)")
+      ->type_name("PATH");
+  addPackagePathOption(*view, a->package_paths);
+  view->footer(
+      "The page is one file, no server, no network: the scene's bodies and geometry, the\n"
+      "recorded motion, play/pause/speed/scrub/frame steps, orbit camera (drag: turn, right\n"
+      "drag: pan, wheel: zoom), follow a body, trails, force arrows and stick/slip colours (when\n"
+      "recorded), a plot of chosen channels; docs/view.md. Run it from the folder the run was\n"
+      "started in (the scene is reloaded from summary.json's path with the run's parameters).\n"
+      "tribo run SCENE --out DIR --view does the same after the run and records orientations.\n"
+      "A sweep's folder gets a heat map of a chosen result over two swept parameters (a line\n"
+      "over one); points kept with --keep-trajectories link to their replay.\n"
+      "exit status: 0 written, 1 usage, 2 run, scene or three.js unreadable, 4 write error");
+  return {view, [a] { return runView(*a); }};
 }
 
 }  // namespace tribo::app

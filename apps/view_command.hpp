@@ -8,9 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "apps/command.hpp"
+
 namespace tribo::app {
 
-int viewCommand(const std::vector<std::string>& args);
+// Adds `view` and its options to `tribo`.
+Command addViewCommand(CLI::App& tribo);
 
 // Writes the page of a finished run and prints where; returns the exit status above.
 int writeView(const std::filesystem::path& run_dir, std::size_t frame_cap,

@@ -11,6 +11,7 @@ PACKAGES=(build-essential cmake pkg-config clang-format
           libeigen3-dev libfcl-dev libccd-dev liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
           libsundials-dev libmuparser-dev libspectra-dev gnuplot-nox
+          libcli11-dev  # the tribo command's argument parser (apps/)
           openmpi-bin libopenmpi-dev
           pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/)
           python3-matplotlib  # examples/fig4_belt.py

@@ -254,14 +254,14 @@ TEST_F(TradeoffCli, BadInputGivesAClearMessageAndNonZeroExitAndWritesNothing) {
   const std::string out = " --out " + dir_.string();
   const Result help = runTribo("tradeoff --help");
   EXPECT_EQ(help.status, 0);
-  EXPECT_NE(help.output.find("usage: tribo tradeoff"), std::string::npos) << help.output;
+  EXPECT_NE(help.output.find("Usage: tribo tradeoff"), std::string::npos) << help.output;
   struct Case {
     std::string args;
     int status;
     std::string expected;
   };
   for (const Case& c : {
-           Case{"tradeoff" + out, 1, "no scene file given"},
+           Case{"tradeoff" + out, 1, "SCENE is required"},
            Case{"tradeoff " + kBelt + out + " --integrators rk5", 1, "unknown integrator 'rk5'"},
            Case{"tradeoff " + kBelt + out + " --integrators ''", 1, "--integrators"},
            Case{"tradeoff " + kBelt + out + " --window abc", 1,
