@@ -19,6 +19,7 @@
 #include "apps/info_command.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/view_command.hpp"
+#include "io/output_channels.hpp"
 #include "io/scene_loader.hpp"
 #include "io/scene_source.hpp"
 #include "io/urdf_reader.hpp"
@@ -82,14 +83,28 @@ void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& 
     std::printf("observed         %s\n", observed.c_str());
     std::printf("oscillating      %s (%zu cycles)\n", s.oscillating ? "yes" : "no",
                 s.cycles.size());
-    std::printf("amplitude (p-p)  %.6g m\n", s.amplitude_pp);
-    std::printf("period           %.6g s\n", s.period);
-    std::printf("time to 98%%      %.6g s\n", s.time_to_98);
-    std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
+    // Units of the observed column (m, rad, m/s, N, ...); none said when it has none.
+    const std::string unit = tribo::io::channelUnit(*scene.model, observed);
+    const std::string in_unit = unit.empty() ? "" : " " + unit;
+    if (s.oscillating) {
+      std::printf("amplitude (p-p)  %.6g%s\n", s.amplitude_pp, in_unit.c_str());
+      std::printf("period           %.6g s\n", s.period);
+      std::printf("time to 98%%      %.6g s\n", s.time_to_98);
+    } else {
+      std::printf("range            %.6g%s (no cycle: max - min over the record's last half)\n",
+                  s.amplitude_pp, in_unit.c_str());
+      std::printf("period           none (no cycle)\n");
+      std::printf("time to 98%%      none (no cycle)\n");
+    }
+    if (spec.body.empty())
+      std::printf("stuck fraction   n/a (output.summary names no body, so no contact to stick)\n");
+    else
+      std::printf("stuck fraction   %.4g\n", s.stuck_fraction);
     const tribo::study::OrbitShape orbit = tribo::study::classifyOrbit(s.cycles);
     if (orbit.kind == tribo::study::OrbitKind::kPeriod2)
-      std::printf("orbit            period 2: cycles alternate p-p %.6g / %.6g m, %.6g / %.6g s\n",
-                  orbit.peak_to_peak_a, orbit.peak_to_peak_b, orbit.duration_a, orbit.duration_b);
+      std::printf("orbit            period 2: cycles alternate p-p %.6g / %.6g%s, %.6g / %.6g s\n",
+                  orbit.peak_to_peak_a, orbit.peak_to_peak_b, in_unit.c_str(), orbit.duration_a,
+                  orbit.duration_b);
     else
       std::printf("orbit            %s (last %d cycles)\n",
                   orbit.kind == tribo::study::OrbitKind::kPeriod1     ? "period 1"
@@ -97,9 +112,12 @@ void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& 
                                                                       : "none",
                   orbit.examined);
     const tribo::study::EarlyGrowth g = tribo::study::earlyGrowth(s.cycles);
-    if (g.measured)
+    if (g.measured && g.trustworthy)
       std::printf("early growth     %.7g 1/s (cycles %d-%d, %.4g-%.4g s)\n", g.rate,
                   g.first_cycle + 1, g.first_cycle + g.cycles, g.t_start, g.t_end);
+    else if (g.measured)
+      std::printf("early growth     %.7g 1/s, NOT the linear growth rate: %s (cycles %d-%d)\n",
+                  g.rate, g.doubt.c_str(), g.first_cycle + 1, g.first_cycle + g.cycles);
     else
       std::printf("early growth     not measured (fewer than 3 cycles after the first)\n");
   }
@@ -181,7 +199,8 @@ int runScene(const CLI::App& command, const RunArguments& a) {
       throw std::runtime_error("cannot create output folder '" + out_dir + "': " + ec.message());
     lock.emplace(out);
     csv.emplace(out / "trajectory.csv",
-                study::TrajectoryRecorder(*scene.model, 0, false, scene.output.channels).columns());
+                study::TrajectoryRecorder(*scene.model, 0, false, scene.output.channels).columns(),
+                scene.output.digits);
   } catch (const study::DirLockedError& e) {
     std::fprintf(stderr, "tribo: %s\n", e.what());
     return 6;

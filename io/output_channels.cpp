@@ -91,4 +91,41 @@ std::vector<std::string> channelColumns(const Model& model,
   return names;
 }
 
+std::string channelUnit(const Model& model, std::string_view column) {
+  if (column == "t") return "s";
+  const std::size_t dot = column.rfind('.');
+  if (dot == std::string_view::npos) return "";
+  const std::string_view owner = column.substr(0, dot), part = column.substr(dot + 1);
+  if (owner == "energy") return part == "input_power" ? "W" : "J";
+  for (const Joint& j : model.joints) {
+    if (j.name != owner || (j.type != JointType::kRevolute && j.type != JointType::kPrismatic))
+      continue;
+    const bool turns = j.type == JointType::kRevolute;
+    if (part == "q") return turns ? "rad" : "m";
+    if (part == "rate") return turns ? "rad/s" : "m/s";
+    if (part == "friction") return turns ? "N m" : "N";
+    return "";  // a friction state
+  }
+  static const std::pair<std::string_view, const char*> kParts[] = {{"x", "m"},
+                                                                    {"y", "m"},
+                                                                    {"z", "m"},
+                                                                    {"roll", "rad"},
+                                                                    {"pitch", "rad"},
+                                                                    {"yaw", "rad"},
+                                                                    {"vx", "m/s"},
+                                                                    {"vy", "m/s"},
+                                                                    {"vz", "m/s"},
+                                                                    {"wx", "rad/s"},
+                                                                    {"wy", "rad/s"},
+                                                                    {"wz", "rad/s"},
+                                                                    {"slip", "m/s"},
+                                                                    {"normal_force", "N"},
+                                                                    {"friction_force", "N"}};
+  // A pair's state names (A/B.z.x) hold a dot of their own: only body and pair columns here.
+  if (owner.find('.') != std::string_view::npos) return "";
+  for (const auto& [name, unit] : kParts)
+    if (part == name) return unit;
+  return "";
+}
+
 }  // namespace tribo::io

@@ -55,6 +55,11 @@ std::vector<std::string> channelColumns(const Model& model, const std::vector<st
 // "A/B": the name of contact pair `pair` in column names.
 std::string pairName(const Model& model, const ContactPair& pair);
 
+// The unit of column `column` of `model`'s recording ("m", "rad/s", "N m", ...), from the
+// table above; "" for a unitless column (quaternion parts, t is "s") and for a friction
+// state (each law's own) or a name no group makes.
+std::string channelUnit(const Model& model, std::string_view column);
+
 // True when `groups` holds `group`.
 bool hasGroup(const std::vector<std::string>& groups, std::string_view group);
 

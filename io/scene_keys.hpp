@@ -64,7 +64,7 @@ inline const List kMaterial{"name", "normal", "friction", "surfaces", "default"}
 inline const List kNormal{"law",       "stiffness",   "damping",     "exponent",
                           "max_depth", "restitution", "impact_speed"};
 inline const List kContact{"a", "b", "material"};
-inline const List kOutput{"interval", "channels", "summary"};
+inline const List kOutput{"interval", "digits", "channels", "summary"};
 inline const List kSummary{"body", "coordinate", "channel", "stick_speed", "last_cycles"};
 inline const List kTabulatedLaw{"file"};
 

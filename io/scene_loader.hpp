@@ -42,7 +42,8 @@ struct SummarySpec {
 };
 
 struct OutputSpec {
-  double interval = 1e-3;                                      // [s] sampling of trajectory.csv
+  double interval = 1e-3;  // [s] sampling of trajectory.csv
+  int digits = 10;  // significant digits of trajectory.csv's numbers (17: every double exactly)
   std::vector<std::string> channels = defaultChannelGroups();  // io/output_channels.hpp
   SummarySpec summary;
 };

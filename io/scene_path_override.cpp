@@ -43,15 +43,6 @@ std::vector<Step> stepsOf(std::string_view path, const auto& fail) {
   return steps;
 }
 
-std::string keysOf(const YAML::Node& map) {
-  std::string out;
-  for (const auto& kv : map) {
-    if (!out.empty()) out += ", ";
-    out += kv.first.Scalar();
-  }
-  return out.empty() ? "none" : out;
-}
-
 bool allDigits(const std::string& s) {
   for (const char c : s)
     if (!std::isdigit(static_cast<unsigned char>(c))) return false;
@@ -155,9 +146,9 @@ std::string applyPathOverride(YAML::Node& root, const std::string& item, const s
       at[step.key] = value;
       return walked;
     }
-    if (!present)
-      throw SceneError(where, key_path,
-                       here + " has no key '" + step.key + "' (keys: " + keysOf(at) + ")");
+    // A missing mapping on the way is made (`--set output.digits=17` in a scene without
+    // output:); the reader then checks every key, so a misspelt one is still refused.
+    if (!present) at[step.key] = YAML::Node(YAML::NodeType::Map);
     YAML::Node next = at[step.key];
     at.reset(next);
   }

@@ -7,8 +7,8 @@
 //   --set 'output.summary={channel: box.vx, last_cycles: 5}'
 // The value is read as YAML (a number, a word, a flow list or map) and replaces the value
 // at the path before the scene is read, so it is checked as the file's own value is and
-// may use parameters ($name) and expressions. Every step of the path but the last must
-// exist; the last may add a key to an existing map (the reader refuses unknown keys).
+// may use parameters ($name) and expressions. A list element must exist; a missing map key
+// on the path is added (as an empty map on the way), and the reader refuses unknown keys.
 // Not here: parameters (io/scene_parameters.hpp), reading the scene (io/scene_reader.hpp).
 #pragma once
 

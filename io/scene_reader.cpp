@@ -189,6 +189,10 @@ OutputSpec Loader::readOutput(const Value& v) {
   const Map m(v, scene_keys::kOutput);
   OutputSpec out;
   if (auto x = m.get("interval")) out.interval = x->positive();
+  if (auto x = m.get("digits")) {
+    out.digits = x->integer(1);
+    if (out.digits > 17) x->fail("expected a whole number from 1 to 17, found " + x->text());
+  }
   if (auto x = m.get("channels")) {
     out.channels.clear();
     for (const Value& g : x->items("channels")) {

@@ -36,8 +36,8 @@ nlohmann::json stepStatsJson(const StepStats& stats) {
 }  // namespace
 
 TrajectoryCsvFile::TrajectoryCsvFile(const std::filesystem::path& file,
-                                     const std::vector<std::string>& columns)
-    : file_(file) {
+                                     const std::vector<std::string>& columns, int digits)
+    : file_(file), digits_(digits) {
   const auto tmp = partialPath(file);
   f_ = std::fopen(tmp.c_str(), "w");
   if (!f_) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
@@ -55,7 +55,7 @@ void TrajectoryCsvFile::row(std::span<const double> values) {
   char buf[64];
   for (std::size_t c = 0; c < values.size(); ++c) {
     if (c) std::fputc(',', f_);
-    const char* end = csvNumberTo(buf, buf + sizeof buf, values[c]);
+    const char* end = csvNumberTo(buf, buf + sizeof buf, values[c], digits_);
     std::fwrite(buf, 1, static_cast<std::size_t>(end - buf), f_);
   }
   std::fputc('\n', f_);
@@ -70,10 +70,11 @@ void TrajectoryCsvFile::commit() {
   commitFile(file_);
 }
 
-void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory) {
+void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory,
+                        int digits) {
   if (!trajectory.keepsRows())
     throw std::logic_error("writeTrajectoryCsv: the recorder kept no rows (they were streamed)");
-  TrajectoryCsvFile csv(file, trajectory.columns());
+  TrajectoryCsvFile csv(file, trajectory.columns(), digits);
   std::vector<double> row(trajectory.columns().size());
   for (std::size_t r = 0; r < trajectory.rows(); ++r) {
     for (std::size_t c = 0; c < row.size(); ++c) row[c] = trajectory.column(c)[r];
@@ -217,7 +218,7 @@ void writeResults(const std::filesystem::path& dir, const io::Scene& scene,
   std::filesystem::create_directories(dir, ec);
   if (ec)
     throw std::runtime_error("cannot create output folder '" + dir.string() + "': " + ec.message());
-  writeTrajectoryCsv(dir / "trajectory.csv", result.trajectory);
+  writeTrajectoryCsv(dir / "trajectory.csv", result.trajectory, scene.output.digits);
   writeSummaryJson(dir / "summary.json", scene, result);
 }
 

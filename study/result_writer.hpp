@@ -24,8 +24,10 @@ namespace tribo::study {
 // leaves the .partial file behind and the final name untouched.
 class TrajectoryCsvFile : public RowSink {
  public:
-  // Throws std::runtime_error naming the path when it cannot be opened.
-  TrajectoryCsvFile(const std::filesystem::path& file, const std::vector<std::string>& columns);
+  // Numbers to `digits` significant digits (17: every double exactly). Throws
+  // std::runtime_error naming the path when it cannot be opened.
+  TrajectoryCsvFile(const std::filesystem::path& file, const std::vector<std::string>& columns,
+                    int digits = 10);
   ~TrajectoryCsvFile() override;
   TrajectoryCsvFile(const TrajectoryCsvFile&) = delete;
   TrajectoryCsvFile& operator=(const TrajectoryCsvFile&) = delete;
@@ -38,11 +40,13 @@ class TrajectoryCsvFile : public RowSink {
  private:
   std::filesystem::path file_;
   std::FILE* f_ = nullptr;
+  int digits_ = 10;
 };
 
 // Throws std::runtime_error naming the path when a file cannot be written. The recorder must
 // keep its rows.
-void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory);
+void writeTrajectoryCsv(const std::filesystem::path& file, const TrajectoryRecorder& trajectory,
+                        int digits = 10);
 void writeSummaryJson(const std::filesystem::path& file, const io::Scene& scene,
                       const RunResult& result);
 // The text writeSummaryJson writes (without its final newline), e.g. for the Python module.

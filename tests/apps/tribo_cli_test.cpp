@@ -315,4 +315,43 @@ TEST_F(TriboCli, UrdfByContentWithGroupedNotesAndInfoSayingWhatRunDoes) {
       << refused.output;
 }
 
+// The printed summary says what it measured, in the observed quantity's units, and says
+// "none" rather than 0 where there is no cycle.
+TEST_F(TriboCli, SummaryNamesUnitsAndSaysWhenThereIsNoCycle) {
+  const std::string source = TRIBO_SOURCE_DIR;
+  struct Case {
+    std::string args, amplitude_line;
+  };
+  const std::vector<Case> cases = {
+      {kBelt + " --set duration=6", "amplitude (p-p)  "},  // box.x
+      {kBelt + " --set duration=6 --set 'output.summary={channel: box.vx}'", " m/s\n"},
+      {source + "/scenes/pendulum.yaml --set 'output.channels=[position, velocity, joints]' "
+                "--set 'output.summary={channel: pivot.q}'",
+       " rad\n"},
+  };
+  for (const Case& c : cases) {
+    const Result r = runTribo("run " + c.args + " --out " + (dir_ / "units").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string amplitude = lineAfter(r.output, "amplitude (p-p)  ");
+    EXPECT_NE(("amplitude (p-p)  " + amplitude + "\n").find(c.amplitude_line), std::string::npos)
+        << r.output;
+  }
+  // A box that slides to a stop: no cycle, so no period and no time to 98%.
+  const Result still =
+      runTribo("run " + std::string(TRIBO_SOURCE_DIR) +
+               "/scenes/sliding_box.yaml --set 'output.summary={body: box, coordinate: x}' --out " +
+               (dir_ / "still").string());
+  ASSERT_EQ(still.status, 0) << still.output;
+  EXPECT_NE(still.output.find("period           none (no cycle)"), std::string::npos)
+      << still.output;
+  EXPECT_NE(still.output.find("time to 98%      none (no cycle)"), std::string::npos)
+      << still.output;
+  EXPECT_EQ(still.output.find("period           0 s"), std::string::npos) << still.output;
+  // A channel without a body: no stuck fraction to give.
+  const Result channel = runTribo(
+      "run " + kBelt + " --set duration=3 --set 'output.summary={channel: box.vx}' --out " +
+      (dir_ / "channel").string());
+  EXPECT_NE(channel.output.find("stuck fraction   n/a"), std::string::npos) << channel.output;
+}
+
 }  // namespace

@@ -143,16 +143,17 @@ TEST_F(TriboRun, PeakMemoryDoesNotGrowWithTheDuration) {
 
 namespace {
 
-// --threads: the same trajectory.csv, byte for byte, on 1 and 2 threads (400 boxes, 1600
-// contact points: the stages split); a value that is not a whole number >= 1 or auto is a
-// usage error naming the option.
+// --threads: the same trajectory.csv, byte for byte at 17 digits (every double exactly: the
+// same bits), on 1 and 2 threads (400 boxes, 1600 contact points: the stages split); a
+// value that is not a whole number >= 1 or auto is a usage error naming the option.
 TEST_F(TriboRun, ThreadsGiveTheSameTrajectoryAndBadValuesAreRefused) {
   const std::string grid = std::string(TRIBO_SOURCE_DIR) + "/scenes/box_grid20.yaml";
   std::string csv[2];
   for (const std::string threads : {"1", "2"}) {
     const fs::path out = dir_ / threads;
-    const Result r = runTribo("run " + grid + " --out " + out.string() +
-                              " --quiet --set duration=0.05 --threads " + threads);
+    const Result r =
+        runTribo("run " + grid + " --out " + out.string() +
+                 " --quiet --set duration=0.05 --set output.digits=17 --threads " + threads);
     ASSERT_EQ(r.status, 0) << r.output;
     csv[threads == "1" ? 0 : 1] = slurp(out / "trajectory.csv");
   }

@@ -81,7 +81,8 @@ TEST(ScenePathOverride, EveryMistakeNamesTheOverrideAndWhatIsThere) {
   const std::vector<Case> cases = {
       {"bodies[boxx].mass=2", {"--set bodies[boxx].mass=2", "no element [boxx]", "belt, box"}},
       {"bodies[7].mass=2", {"no element [7]", "2 elements"}},
-      {"output.sumary.channel=x", {"'output' has no key 'sumary'", "keys: interval, summary"}},
+      {"output.sumary.channel=x", {"unknown key 'sumary'", "(with --set output.sumary.channel=x)"}},
+      {"outptu.interval=1", {"unknown key 'outptu'", "(with --set outptu.interval=1)"}},
       {"output.interval.x=1", {"'output.interval' is not a map"}},
       {"simulation[0]=1", {"'simulation' is not a list"}},
       {"output..x=1", {"an empty key"}},

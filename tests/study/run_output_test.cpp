@@ -8,9 +8,12 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -19,6 +22,7 @@
 #include "study/dir_lock.hpp"
 #include "study/oscillation_summary.hpp"
 #include "study/output_budget.hpp"
+#include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
 #include "study/series_spill.hpp"
 
@@ -178,6 +182,45 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ChannelSummary,
                                            ChannelCase{"pendulum.yaml", "pivot.q", nullptr, "20"},
                                            ChannelCase{"double_pendulum.yaml", "elbow.q", nullptr,
                                                        "20"}));
+
+// output.digits: 17 significant digits write every double exactly (strtod gives back the
+// same bits); the default 10 do not. Over the belt's positions, speeds and forces.
+TEST(TrajectoryCsv, SeventeenDigitsGiveBackEveryBit) {
+  const io::Scene scene = io::loadScene(kBelt, {"duration=0.5", "output.digits=17"});
+  EXPECT_EQ(scene.output.digits, 17);
+  const RunResult kept = runScene(scene);
+  ASSERT_TRUE(kept.complete);
+  const fs::path dir = freshDir("digits");
+  for (const int digits : {17, 10}) {
+    const fs::path file = dir / ("t" + std::to_string(digits) + ".csv");
+    writeTrajectoryCsv(file, kept.trajectory, digits);
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);  // header
+    std::size_t row = 0, differ = 0;
+    while (std::getline(in, line)) {
+      std::istringstream fields(line);
+      std::string field;
+      for (std::size_t c = 0; std::getline(fields, field, ','); ++c)
+        differ += std::strtod(field.c_str(), nullptr) != kept.trajectory.column(c)[row];
+      ++row;
+    }
+    EXPECT_EQ(row, kept.trajectory.rows());
+    if (digits == 17)
+      EXPECT_EQ(differ, 0u);
+    else
+      EXPECT_GT(differ, 0u);  // 10 digits round
+  }
+  fs::remove_all(dir);
+  for (const char* bad : {"output.digits=18", "output.digits=0", "output.digits=2.5"}) {
+    try {
+      (void)io::loadScene(kBelt, {bad});
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const io::SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("output.digits"), std::string::npos) << e.what();
+    }
+  }
+}
 
 TEST(StreamedRun, AStopRequestEndsTheRunBackAtTheLastOutputRow) {
   // Output every 10 steps; the stop comes at the first progress call (after 64 steps),
