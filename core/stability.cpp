@@ -245,7 +245,8 @@ std::optional<RestingFace> restingFace(const Model& model, const ContactPair& pa
 // held still, without breaking a joint equation at the initial pose: every row touching the
 // body is unchanged to first order by that rotation. A free body can about any axis; one on
 // planar_translation, prismatic or fixed about none; one on a revolute joint through its
-// centre of mass about that joint's axis only.
+// centre of mass about that joint's axis only. Likewise whether a body can slide across a
+// contact's plane (free, planar about its normal), for friction across the slip.
 class TurnCheck {
  public:
   explicit TurnCheck(const Model& model) : rows_(model.bodies.size()) {
@@ -266,15 +267,27 @@ class TurnCheck {
   }
 
   bool canTurn(const Model& model, BodyIndex b, const Vec3& axis) const {
+    return canMove(model, b, Vec3::Zero(), axis);
+  }
+  // Whether it can slide along every direction normal to `normal` (a free or planar body on
+  // the plane), without turning.
+  bool canSlideAcross(const Model& model, BodyIndex b, const Vec3& normal) const {
+    const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u).normalized();
+    return canMove(model, b, u, Vec3::Zero()) && canMove(model, b, w, Vec3::Zero());
+  }
+
+ private:
+  // Whether translating along `linear` and turning about `angular` (through the centre of
+  // mass) leaves every joint row of body b unchanged to first order.
+  bool canMove(const Model& model, BodyIndex b, const Vec3& linear, const Vec3& angular) const {
     if (b.isWorld() || model.bodies[b.value].kind != BodyKind::kDynamic) return false;
     for (const Row6& j : rows_[b.value]) {
-      const Vec3 angular = j.tail<3>().transpose();
-      if (std::abs(angular.dot(axis)) > 1e-9 * (j.head<3>().norm() + angular.norm())) return false;
+      const Vec3 jl = j.head<3>().transpose(), ja = j.tail<3>().transpose();
+      if (std::abs(jl.dot(linear) + ja.dot(angular)) > 1e-9 * (jl.norm() + ja.norm())) return false;
     }
     return true;
   }
 
- private:
   std::vector<std::vector<Row6>> rows_;  // per body: its blocks of the joint rows
 };
 
@@ -562,6 +575,25 @@ StabilityReport estimateStableStep(const Model& model) {
       }
       if (direct > 0.0 && first_of_material)
         report.notes.push_back(directEffectNote(who(), *dynamic, v_ref));
+      // Across the slip, a law without bristles turns its force with the slip's direction at
+      // once: damping mu(v) / v per unit load (rate_state: mu0 / a = 20 times its direct
+      // effect). A memoryless law's mu(v) / v is a secant of its curve, within its slope.
+      // Only for a body free to slide across (not one on a slide or planar_translation joint)
+      // and, in yaw, for one free to turn.
+      const double across = friction_law.coefficient(v_ref) / v_ref;
+      if (!turns) turns.emplace(model);
+      const Vec3 normal = face ? face->normal : Vec3(model.options.gravity.normalized());
+      const bool slides = g > 0.0 && (turns->canSlideAcross(model, ga.body, normal) ||
+                                      turns->canSlideAcross(model, gb.body, normal));
+      if (total > 0.0 && p.stiffness == 0.0 && across > 0.0 && std::isfinite(across) && slides)
+        consider(0.0, across * total / m, [&] {
+          std::ostringstream e;
+          e << who() << " friction (" << friction_law.name() << " across the slip at " << v_ref
+            << " m/s)";
+          return e.str();
+        });
+      if (total > 0.0 && p.stiffness == 0.0 && across > 0.0 && std::isfinite(across))
+        consider_yaw(0.0, std::max(across, direct) * load, " across the slip");
     }
     if (friction_law.stateful()) {
       const Tangent stick = stickTangent(friction_law);

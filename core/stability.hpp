@@ -56,8 +56,14 @@
 //                  laws) at the reference slip speed v_ref = max(v_drive, the law's stick
 //                  speed), with a note: it grows without bound as the slip slows, so below
 //                  v_ref explicit steps chatter, within about the speed where the limit meets
-//                  the step; and, except for semi-implicit Euler (whose state update is exact
-//                  at frozen slip), the internal state's decay rate as a first-order mode
+//                  the step; for a law without bristles (presliding stiffness 0: rate_state)
+//                  the damping across the slip, whose direction the force follows at once,
+//                  c = mu(v_ref) / v_ref W (mu0 / a = 20 times the direct effect for the
+//                  defaults), for a body free to slide across the contact plane (not on a
+//                  slide or planar_translation joint), and in yaw (with the larger of the two,
+//                  for a body free to turn); and, except for semi-implicit Euler (whose state
+//                  update is exact at frozen slip), the internal state's decay rate as a
+//                  first-order mode
 //                  (k = 0, c/m = lambda, DynamicFrictionLaw::stateStiffness) at slip speed
 //                  4 v_ref, v_drive the fastest kinematic body, moving surface or slider's
 //                  drive (prismatic): a driven stick-slip slips at up to 3.5 times its drive;
