@@ -515,7 +515,11 @@ StabilityReport estimateStableStep(const Model& model) {
     double yaw = 0.0;  // per unit tangential stiffness of each point
     if (face) {
       if (!turns) turns.emplace(model);
-      yaw = yawPerPointStiffness(model, *turns, ga.body, gb.body, *face);
+      // Only a face that carries the weight (its normal within 60 degrees of gravity): two
+      // boxes side by side (a grid's neighbours, taken to touch) press on each other with no
+      // load for friction.
+      if (g > 0.0 && std::abs(face->normal.dot(model.options.gravity)) > 0.5 * g)
+        yaw = yawPerPointStiffness(model, *turns, ga.body, gb.body, *face);
       for (int i = 0; i < 2; ++i) {
         const double per_point =
             rockingPerPointStiffness(model, *turns, ga.body, gb.body, *face, face->axes[i]);

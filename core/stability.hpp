@@ -36,7 +36,8 @@
 //                  centre of mass, and what friction adds through the corners' depth below
 //                  the centre of mass in rocking (10-25% lower limits on the belt boxes);
 //   contact pair, yaw: the same body turning about the contact normal through its centre of
-//                  mass (when it can, as for rocking) on the same n points, each friction
+//                  mass (when it can, as for rocking; on a face carrying the weight, its
+//                  normal within 60 degrees of gravity) on the same n points, each friction
 //                  element below per point (k_p, c_p: its k, c over n) with the tangential
 //                  lever arms g_i = normal x (p_i - x_cm): k = k_p sum |g_i|^2,
 //                  c = c_p sum |g_i|^2, m = the inertia about the normal (both bodies turning:
