@@ -21,12 +21,12 @@ namespace {
 
 using Mat2 = Eigen::Matrix2d;
 
-constexpr int kSlopeSamples = 16;
+constexpr int kSlopeSamples = 16;  // per piece of the curve between its breakpoints
 // Slip speeds a driven stick-slip reaches, in units of the fastest driven speed: 3.5 in
 // the LuGre block of scenes/lugre_stick_slip.yaml (0.35 m/s peak slip at a 0.1 m/s pull).
-constexpr double kSlipSpeedFactor = 4.0;  // slope samples over (0, stick speed]
-constexpr double kPoints = 4.0;           // points sharing a pair's load (a box on a face)
-constexpr double kUnloadedDepth = 1e-4;   // [m] nonlinear laws without gravity
+constexpr double kSlipSpeedFactor = 4.0;
+constexpr double kPoints = 4.0;          // points sharing a pair's load (a box on a face)
+constexpr double kUnloadedDepth = 1e-4;  // [m] nonlinear laws without gravity
 
 // One-step matrix of the integrator on (x, v) for the system matrix a.
 Mat2 stepMatrix(IntegratorType integrator, const Mat2& a, double h) {
@@ -245,7 +245,8 @@ std::optional<RestingFace> restingFace(const Model& model, const ContactPair& pa
 // held still, without breaking a joint equation at the initial pose: every row touching the
 // body is unchanged to first order by that rotation. A free body can about any axis; one on
 // planar_translation, prismatic or fixed about none; one on a revolute joint through its
-// centre of mass about that joint's axis only.
+// centre of mass about that joint's axis only. Likewise whether a body can slide across a
+// contact's plane (free, planar about its normal), for friction across the slip.
 class TurnCheck {
  public:
   explicit TurnCheck(const Model& model) : rows_(model.bodies.size()) {
@@ -266,15 +267,27 @@ class TurnCheck {
   }
 
   bool canTurn(const Model& model, BodyIndex b, const Vec3& axis) const {
+    return canMove(model, b, Vec3::Zero(), axis);
+  }
+  // Whether it can slide along every direction normal to `normal` (a free or planar body on
+  // the plane), without turning.
+  bool canSlideAcross(const Model& model, BodyIndex b, const Vec3& normal) const {
+    const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u).normalized();
+    return canMove(model, b, u, Vec3::Zero()) && canMove(model, b, w, Vec3::Zero());
+  }
+
+ private:
+  // Whether translating along `linear` and turning about `angular` (through the centre of
+  // mass) leaves every joint row of body b unchanged to first order.
+  bool canMove(const Model& model, BodyIndex b, const Vec3& linear, const Vec3& angular) const {
     if (b.isWorld() || model.bodies[b.value].kind != BodyKind::kDynamic) return false;
     for (const Row6& j : rows_[b.value]) {
-      const Vec3 angular = j.tail<3>().transpose();
-      if (std::abs(angular.dot(axis)) > 1e-9 * (j.head<3>().norm() + angular.norm())) return false;
+      const Vec3 jl = j.head<3>().transpose(), ja = j.tail<3>().transpose();
+      if (std::abs(jl.dot(linear) + ja.dot(angular)) > 1e-9 * (jl.norm() + ja.norm())) return false;
     }
     return true;
   }
 
- private:
   std::vector<std::vector<Row6>> rows_;  // per body: its blocks of the joint rows
 };
 
@@ -320,6 +333,112 @@ double rockingPerPointStiffness(const Model& model, const TurnCheck& turns, Body
   return mean + std::sqrt(half * half + cross * cross);
 }
 
+// Yaw about the contact normal of the bodies on either side that can turn about it, per unit
+// tangential stiffness (or damping) of each point: the largest eigenvalue of
+// sum_i g_i g_i^T against the inertias about the normal through each centre of mass, g_i the
+// points' tangential displacement per unit turn of each body, n x (p_i - x_cm). A box on a
+// square face: 3 times the translation's 4 / m (sum r_i^2 = (a^2 + b^2) against
+// I_n = m (a^2 + b^2) / 12). Zero when neither can turn.
+double yawPerPointStiffness(const Model& model, const TurnCheck& turns, BodyIndex a, BodyIndex b,
+                            const RestingFace& face) {
+  const BodyIndex sides[2] = {a, b};
+  std::array<Vec3, 4> lever[2] = {};
+  double inertia[2] = {0.0, 0.0}, diag[2] = {0.0, 0.0}, cross = 0.0;
+  bool turning[2] = {false, false};
+  for (int s = 0; s < 2; ++s) {
+    if (!turns.canTurn(model, sides[s], face.normal)) continue;
+    const Body& body = model.bodies[sides[s].value];
+    const Mat3 r = body.orientation.normalized().toRotationMatrix();
+    inertia[s] = face.normal.dot(r * body.inertia * r.transpose() * face.normal);
+    if (!(inertia[s] > 0.0)) continue;
+    turning[s] = true;
+    for (int i = 0; i < 4; ++i) {
+      lever[s][i] = face.normal.cross(face.corners[i] - body.position);
+      diag[s] += lever[s][i].squaredNorm() / inertia[s];
+    }
+  }
+  if (turning[0] && turning[1]) {
+    for (int i = 0; i < 4; ++i) cross += lever[0][i].dot(lever[1][i]);
+    cross /= std::sqrt(inertia[0] * inertia[1]);
+  }
+  const double mean = 0.5 * (diag[0] + diag[1]), half = 0.5 * (diag[0] - diag[1]);
+  return mean + std::sqrt(half * half + cross * cross);
+}
+
+// The speeds where a law's sticking slope matters: up to where mu first reaches the largest
+// value a load can ask of it before breakaway. The stick speed, extended over the
+// breakpoints to which the curve still rises (a table rising to its last point has its stick
+// speed at its first point, yet a block creeps wherever mu(v) meets its load ratio).
+double risingSpeed(const friction::FrictionLaw& law) {
+  double top = law.stickSpeed();
+  std::vector<double> breaks = law.breakpoints();
+  std::sort(breaks.begin(), breaks.end());
+  for (const double b : breaks)
+    if (b > top && law.coefficient(b) > law.coefficient(top)) top = b;
+  return top;
+}
+
+// Largest of f over [lo, hi] near the sample `at` (golden-section search on the bracket of
+// its neighbours, for a unimodal f there: a table's slope is quadratic on each piece).
+template <class F>
+double refinedMax(const F& f, double lo, double hi, double at) {
+  constexpr double kGolden = 0.6180339887498949;
+  double a = lo, b = hi;
+  for (int i = 0; i < 60 && b - a > 1e-12 * hi; ++i) {
+    const double c = b - kGolden * (b - a), d = a + kGolden * (b - a);
+    (f(c) < f(d) ? a : b) = (f(c) < f(d) ? c : d);
+  }
+  return std::max(f(at), f(0.5 * (a + b)));
+}
+
+// Steepest rise d mu / dv of a law over [0, v_max]: kSlopeSamples samples on each piece
+// between its breakpoints (a table's points), the steepest refined between its neighbours.
+// 16 samples over [0, v_max] alone miss a table's short steep segment (see stability.hpp).
+double steepestSlope(const friction::FrictionLaw& law, double v_max) {
+  auto slope = [&](double v) { return law.slope(v); };
+  std::vector<double> edges{0.0, v_max};
+  for (const double b : law.breakpoints())
+    if (b > 0.0 && b < v_max) edges.push_back(b);
+  std::sort(edges.begin(), edges.end());
+  double best = slope(0.0);
+  for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
+    const double lo = edges[k], step = (edges[k + 1] - lo) / kSlopeSamples;
+    int arg = 0;
+    double piece = slope(lo);
+    for (int i = 1; i <= kSlopeSamples; ++i) {
+      const double value = slope(lo + i * step);
+      if (value > piece) {
+        piece = value;
+        arg = i;
+      }
+    }
+    const double at = lo + arg * step;
+    best = std::max(
+        best, refinedMax(slope, std::max(lo, at - step), std::min(edges[k + 1], at + step), at));
+  }
+  return best;
+}
+
+// " friction (rate_state direct effect at slip speed 1e-05 m/s)".
+std::string directEffect(const friction::DynamicFrictionLaw& law, double v_ref) {
+  std::ostringstream e;
+  e << " friction (" << law.name() << " direct effect at slip speed " << v_ref << " m/s)";
+  return e.str();
+}
+
+// The direct effect grows without bound as the slip slows (rate-and-state's a / v): below
+// v_ref explicit steps chatter, within about the speed where the limit equals the step.
+std::string directEffectNote(const std::string& who, const friction::DynamicFrictionLaw& law,
+                             double v_ref) {
+  std::ostringstream note;
+  note << who << ": friction law " << law.name()
+       << " damps the slip at frozen state by its direct effect, " << law.directSlope(v_ref)
+       << " s/m per unit load at the reference slip speed " << v_ref
+       << " m/s (the fastest drive, or the law's stick speed) and more at slower slip; its "
+          "limit uses that speed, so at that step explicit chatter stays below it";
+  return note.str();
+}
+
 }  // namespace
 
 double stableStep(IntegratorType integrator, double k_over_m, double c_over_m) {
@@ -361,6 +480,9 @@ StabilityReport estimateStableStep(const Model& model) {
     drive_speed = std::max(drive_speed, b.surface_velocity.norm());
     if (b.kind != BodyKind::kDynamic) drive_speed = std::max(drive_speed, b.velocity.norm());
   }
+  for (const Joint& joint : model.joints)  // a slider driven along its axis
+    if (joint.type == JointType::kPrismatic && joint.elements.drive)
+      drive_speed = std::max(drive_speed, std::abs(joint.elements.drive->velocity(0.0)));
   std::optional<TurnCheck> turns;  // built at the first box pair
   for (const ContactPair& pair : contactPairsToCheck(model)) {
     const Geometry& ga = model.geometries[pair.geometry_a];
@@ -387,9 +509,17 @@ StabilityReport estimateStableStep(const Model& model) {
     consider(kPoints * normal.stiffness / m, kPoints * normal.damping / m,
              [&] { return who() + " normal" + tangent_at(); });
 
-    // Rocking of a box on its face, about the face's two edges, on the same corners.
-    if (const std::optional<RestingFace> face = restingFace(model, pair)) {
+    // Rocking of a box on its face, about the face's two edges, on the same corners; its yaw
+    // about the normal (friction's share, below).
+    const std::optional<RestingFace> face = restingFace(model, pair);
+    double yaw = 0.0;  // per unit tangential stiffness of each point
+    if (face) {
       if (!turns) turns.emplace(model);
+      // Only a face that carries the weight (its normal within 60 degrees of gravity): two
+      // boxes side by side (a grid's neighbours, taken to touch) press on each other with no
+      // load for friction.
+      if (g > 0.0 && std::abs(face->normal.dot(model.options.gravity)) > 0.5 * g)
+        yaw = yawPerPointStiffness(model, *turns, ga.body, gb.body, *face);
       for (int i = 0; i < 2; ++i) {
         const double per_point =
             rockingPerPointStiffness(model, *turns, ga.body, gb.body, *face, face->axes[i]);
@@ -412,16 +542,25 @@ StabilityReport estimateStableStep(const Model& model) {
 
     // Friction: a stateful law's stick spring-damper on the same points, tangentially.
     const friction::FrictionLaw& friction_law = *mat.friction;
+    // The same per-point tangential stiffness and damping turning the body about the normal.
+    auto consider_yaw = [&](double k_point, double c_point, const char* what) {
+      if (yaw > 0.0)
+        consider(k_point * yaw, c_point * yaw, [&] {
+          return who() + " friction (" + std::string(friction_law.name()) + what + ", yaw)";
+        });
+    };
+    const double total = load * kPoints;
     if (const friction::DynamicFrictionLaw* dynamic = friction_law.dynamic()) {
       // The bristles' presliding spring-damper under the resting load, and the decay rate
       // of the internal state at the expected slip speeds (not for semi-implicit Euler,
       // whose update of the state is exact at frozen slip).
       const friction::DynamicFrictionLaw::Presliding p = dynamic->presliding();
-      const double total = load * kPoints;
-      if (total > 0.0 && p.stiffness > 0.0)
+      if (total > 0.0 && p.stiffness > 0.0) {
         consider(p.stiffness * total / m, p.damping * total / m, [&] {
           return who() + " friction (" + std::string(friction_law.name()) + " presliding)";
         });
+        consider_yaw(p.stiffness * load, p.damping * load, " presliding");
+      }
       if (integrator != IntegratorType::kSemiImplicitEuler) {
         const double v = kSlipSpeedFactor * std::max(drive_speed, friction_law.stickSpeed());
         consider(0.0, dynamic->stateStiffness(v), [&] {
@@ -431,20 +570,48 @@ StabilityReport estimateStableStep(const Model& model) {
           return e.str();
         });
       }
+      // The direct effect: the slip's damping at frozen state, at the reference slip speed.
+      const double v_ref = std::max(drive_speed, friction_law.stickSpeed());
+      const double direct = dynamic->directSlope(v_ref);
+      if (total > 0.0 && direct > 0.0 && std::isfinite(direct)) {
+        consider(0.0, direct * total / m, [&] { return who() + directEffect(*dynamic, v_ref); });
+        consider_yaw(0.0, direct * load, " direct effect");
+      }
+      if (direct > 0.0 && first_of_material)
+        report.notes.push_back(directEffectNote(who(), *dynamic, v_ref));
+      // Across the slip, a law without bristles turns its force with the slip's direction at
+      // once: damping mu(v) / v per unit load (rate_state: mu0 / a = 20 times its direct
+      // effect). A memoryless law's mu(v) / v is a secant of its curve, within its slope.
+      // Only for a body free to slide across (not one on a slide or planar_translation joint)
+      // and, in yaw, for one free to turn.
+      const double across = friction_law.coefficient(v_ref) / v_ref;
+      if (!turns) turns.emplace(model);
+      const Vec3 normal = face ? face->normal : Vec3(model.options.gravity.normalized());
+      const bool slides = g > 0.0 && (turns->canSlideAcross(model, ga.body, normal) ||
+                                      turns->canSlideAcross(model, gb.body, normal));
+      if (total > 0.0 && p.stiffness == 0.0 && across > 0.0 && std::isfinite(across) && slides)
+        consider(0.0, across * total / m, [&] {
+          std::ostringstream e;
+          e << who() << " friction (" << friction_law.name() << " across the slip at " << v_ref
+            << " m/s)";
+          return e.str();
+        });
+      if (total > 0.0 && p.stiffness == 0.0 && across > 0.0 && std::isfinite(across))
+        consider_yaw(0.0, std::max(across, direct) * load, " across the slip");
     }
     if (friction_law.stateful()) {
       const Tangent stick = stickTangent(friction_law);
       consider(kPoints * stick.stiffness / m, kPoints * stick.damping / m, [&] {
         return who() + " friction (" + std::string(friction_law.name()) + " stick spring)";
       });
+      consider_yaw(stick.stiffness, stick.damping, " stick spring");
     }
     // ... and the sticking slope of its mu(v) curve (a memoryless law's only stiffness).
     const double stick_speed = friction_law.stickSpeed();
     double slope = friction_law.slope(0.0);
     if (std::isfinite(slope)) {
-      // Steepest rise on [0, stick speed] (a haversine step is steepest mid-way).
-      for (int i = 1; i <= kSlopeSamples; ++i)
-        slope = std::max(slope, friction_law.slope(stick_speed * i / kSlopeSamples));
+      // Steepest rise where mu still rises (a haversine step is steepest mid-way).
+      slope = steepestSlope(friction_law, risingSpeed(friction_law));
     } else {
       slope = friction_law.slope(stick_speed);
       if (first_of_material) {
@@ -456,9 +623,11 @@ StabilityReport estimateStableStep(const Model& model) {
         report.notes.push_back(note.str());
       }
     }
-    if (std::isfinite(slope) && slope > 0.0)
+    if (std::isfinite(slope) && slope > 0.0) {
       consider(0.0, slope * g,
                [&] { return who() + " friction (" + std::string(friction_law.name()) + ")"; });
+      consider_yaw(0.0, slope * load, "");
+    }
   }
   for (const SpringDamper& s : model.springs) {
     const double m = reducedMass(model, s.body_a, s.body_b);
@@ -499,6 +668,36 @@ StabilityReport estimateStableStep(const Model& model) {
       integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
   const double h = model.options.time_step;
   const std::vector<int> joint_of_child = jointOfChild(model);
+  // A dynamic law on a joint (not capped: core/joint_forces.hpp) as on a contact, on the
+  // coordinate: slip r q', force N times the law's, torque r times the force, so its
+  // stiffness and damping per unit load act with N r^2 on I_q (`per_inertia` = N r^2 / I_q).
+  auto considerDynamicJointFriction = [&](const friction::DynamicFrictionLaw& law,
+                                          double per_inertia, const auto& who) {
+    if (!(per_inertia > 0.0)) return;
+    const friction::DynamicFrictionLaw::Presliding p = law.presliding();
+    if (p.stiffness > 0.0)
+      consider(p.stiffness * per_inertia, p.damping * per_inertia,
+               [&] { return who("presliding"); });
+    // The state's decay also for semi-implicit Euler: its exact update at frozen slip did not
+    // keep a disc of 0.01 kg m^2 on a lugre pin (I_q / (N r^2) = 10 s^2/m) stable up to the
+    // presliding limit (measured: off at 0.14 of it, near this mode's limit).
+    const double v_ref = std::max(drive_speed, law.stickSpeed());
+    const double v = kSlipSpeedFactor * v_ref;
+    consider(0.0, law.stateStiffness(v), [&] {
+      std::ostringstream e;
+      e << "internal state at slip speed " << v << " m/s";
+      return who(e.str().c_str());
+    });
+    const double direct = law.directSlope(v_ref);
+    if (direct > 0.0 && std::isfinite(direct)) {
+      consider(0.0, direct * per_inertia, [&] {
+        std::ostringstream e;
+        e << "direct effect at slip speed " << v_ref << " m/s";
+        return who(e.str().c_str());
+      });
+      report.notes.push_back(directEffectNote(who("direct effect"), law, v_ref));
+    }
+  };
   for (int ji = 0; ji < static_cast<int>(model.joints.size()); ++ji) {
     const Joint& joint = model.joints[ji];
     const JointElements& el = joint.elements;
@@ -516,11 +715,18 @@ StabilityReport estimateStableStep(const Model& model) {
         // The reaction carries at least the child's weight.
         load = model.bodies[joint.child.value].mass * g;
       }
-      double mu_slope = f.law->slope(0.0);
-      const double stick = f.law->stickSpeed();
-      for (int i = 1; i <= kSlopeSamples; ++i)
-        mu_slope = std::max(mu_slope, f.law->slope(r * stick * i / kSlopeSamples));
+      const double mu_slope = std::isfinite(f.law->slope(0.0))
+                                  ? steepestSlope(*f.law, risingSpeed(*f.law))
+                                  : f.law->slope(0.0);
       if (std::isfinite(mu_slope)) slope = mu_slope * load * r * r;
+      if (const friction::DynamicFrictionLaw* dynamic = f.law->dynamic())
+        considerDynamicJointFriction(*dynamic, load * r * r / inertia, [&](const char* what) {
+          std::ostringstream e;
+          e << "joint '" << joint.name << "' friction (" << f.law->name() << " " << what
+            << ") on body '" << model.bodies[joint.child.value].name << "' (coordinate inertia "
+            << inertia << ", load " << load << " N)";
+          return e.str();
+        });
     }
     const double damping = std::min(el.damping + slope, cap);
     auto who = [&](const char* what) {

@@ -33,19 +33,41 @@
 //                  prismatic, fixed). Left out: the coupling of rocking with translation
 //                  (zero for a box centred on its body), rounded shapes (sphere, cylinder,
 //                  capsule, cone) and meshes, a body turning about a joint away from its
-//                  centre of mass, and what friction adds: the stick springs' and the
-//                  friction slope's share in yaw and, through the corners' depth below the
-//                  centre of mass, in rocking (10-25% lower limits on the belt boxes);
+//                  centre of mass, and what friction adds through the corners' depth below
+//                  the centre of mass in rocking (10-25% lower limits on the belt boxes);
+//   contact pair, yaw: the same body turning about the contact normal through its centre of
+//                  mass (when it can, as for rocking; on a face carrying the weight, its
+//                  normal within 60 degrees of gravity) on the same n points, each friction
+//                  element below per point (k_p, c_p: its k, c over n) with the tangential
+//                  lever arms g_i = normal x (p_i - x_cm): k = k_p sum |g_i|^2,
+//                  c = c_p sum |g_i|^2, m = the inertia about the normal (both bodies turning:
+//                  the larger eigenvalue, as for rocking). A box of edges (a, b) on its face:
+//                  3 times the translation's k/m and c/m, for any a, b (sum |g_i|^2 = a^2 + b^2
+//                  against m (a^2 + b^2) / 12), so friction's damping limits yaw at a third
+//                  of the step (measured: a free box creeping on an incline under a
+//                  tabulated law at 0.9 of the translational limit crept 29% too fast; held
+//                  against turning, exact at 1.8 times it);
 //   contact pair, stateful friction (elastic_stick): its stick spring-damper, k = n k_t,
 //                  c = n c_t (read off the law's stuck force), tangential;
 //   contact pair, dynamic friction (friction/dynamic_law.hpp): the bristles' presliding
 //                  spring-damper under the resting load W, k = sigma0 W, c = sigma_d W
-//                  (DynamicFrictionLaw::presliding, per unit normal force); and, except for
-//                  semi-implicit Euler (whose state update is exact at frozen slip), the
-//                  internal state's decay rate as a first-order mode (k = 0, c/m = lambda,
-//                  DynamicFrictionLaw::stateStiffness) at slip speed 4 v_drive, v_drive the
-//                  fastest kinematic body or moving surface (or the law's stick speed): a
-//                  driven stick-slip slips at up to 3.5 times its drive;
+//                  (DynamicFrictionLaw::presliding, per unit normal force); the direct
+//                  effect, the slip's damping with the state held, k = 0, c = mu_d(v_ref) W
+//                  (DynamicFrictionLaw::directSlope: rate_state's a / v, 0 for the bristle
+//                  laws) at the reference slip speed v_ref = max(v_drive, the law's stick
+//                  speed), with a note: it grows without bound as the slip slows, so below
+//                  v_ref explicit steps chatter, within about the speed where the limit meets
+//                  the step; for a law without bristles (presliding stiffness 0: rate_state)
+//                  the damping across the slip, whose direction the force follows at once,
+//                  c = mu(v_ref) / v_ref W (mu0 / a = 20 times the direct effect for the
+//                  defaults), for a body free to slide across the contact plane (not on a
+//                  slide or planar_translation joint), and in yaw (with the larger of the two,
+//                  for a body free to turn); and, except for semi-implicit Euler (whose state
+//                  update is exact at frozen slip), the internal state's decay rate as a
+//                  first-order mode (k = 0, c/m = lambda, DynamicFrictionLaw::stateStiffness)
+//                  at slip speed 4 v_ref, v_drive the fastest kinematic body, moving surface
+//                  or slider's drive (prismatic): a driven stick-slip slips at up to 3.5
+//                  times its drive;
 //   spring-damper: k, c as given, m as above;
 //   bushing:       per axis of frame A at the initial pose, k, c as given; translation on m
 //                  as above, rotation on the bodies' reduced moment of inertia about that
@@ -54,21 +76,38 @@
 //                  left out;
 //   torsional spring: k, c on the reduced moment of inertia about its axis, likewise;
 //   friction:      c/m = g mu'(v) (the sticking slope of the law under the body's weight), at
-//                  the steepest of 16 samples over [0, stick speed]; for a law whose slope is
+//                  the steepest rise over the speeds where mu still rises: [0, stick speed]
+//                  extended over the breakpoints to which mu rises (a table rising to its last
+//                  point creeps beyond its stick speed, its first point); 16 samples on each
+//                  piece between breakpoints (a table's points: 16 samples over the whole
+//                  range missed a short steep segment, 0.05 to 0.40 over 0.1 mm/s), the
+//                  steepest refined by golden section between its neighbours (a table's slope
+//                  is quadratic on a piece); for a law whose slope is
 //                  unbounded at zero slip (roh_yoo with beta < 1) the slope at the stick speed,
 //                  so that at the limit the numerical chatter stays below the stick speed;
 //   joint elements (revolute, prismatic): m = the coordinate's inertia (coordinateInertia in
 //                  core/joint_forces.hpp, a light link's few 1e-6 kg m^2 included), k = the
 //                  spring's and the limit's stiffness, c = damping plus the friction's
-//                  sticking slope mu'(v) N r^2 (N: the constant load, or the child's weight
-//                  for a reaction load), c held to m / (2 h) at a fixed step as the joint forces
-//                  hold it (so it never bounds the step there; for dopri5 it does).
+//                  sticking slope mu'(v) N r^2 (as for contacts; N: the constant load, or the
+//                  child's weight for a reaction load), c held to m / (2 h) at a fixed step as
+//                  the joint forces hold it (so it never bounds the step there; for dopri5 it
+//                  does); a dynamic law's friction (not held: its force is not capped) as on a
+//                  contact with N r^2 for the load W, on the same m: presliding k = sigma0 N r^2,
+//                  c = sigma_d N r^2; direct effect c = mu_d(v_ref) N r^2; the state's decay
+//                  c/m = lambda at 4 v_ref, here for semi-implicit Euler too (measured: on
+//                  a heavy disc, I_q / (N r^2) = 10 s^2/m, lugre and elasto_plastic went off
+//                  at 0.14-0.18 of the presliding limit, near this mode's).
+// A user law (Python) is bounded by what it states: its curve's sampled slope, its presliding
+// and state_stiffness (0 when left out); it has no direct effect here. Measured in the class
+// (tests/core/stability_laws_test.cpp, docs/speed-accuracy.md): at 0.9 of the estimate each
+// law agrees with a tenth of the step, and it stops agreeing within 0.86-4 times it; dahl,
+// whose undamped presliding ratchets a body along by the method's numerical damping, has no
+// converged reference there.
 // The limit is the largest h for which the integrator's one-step matrix for that system has
 // spectral radius <= 1 (undamped: RK4 h w < 2 sqrt(2), semi-implicit Euler h w < 2; real
 // axis: RK4 2.785, Dormand-Prince 5(4) 3.307). For dopri5 it bounds the internal steps the
 // error control will settle on (a cost estimate, not a warning); bdf has no explicit limit.
-// Not here: yaw (a flat box's yaw on its stick springs has up to sqrt(3) times the frequency
-// of its translation) and rocking other than a box's on its face, shapes resting on more
+// Not here: yaw and rocking other than a box's on its face, shapes resting on more
 // or fewer than 4 points (linear law: a disc on 8 rim points has sqrt(2) times the
 // frequency, a sphere on one point half), nonlinear instability, contact chatter, accuracy
 // (see the README's measurements).

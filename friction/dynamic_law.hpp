@@ -63,6 +63,12 @@ class DynamicFrictionLaw : public FrictionLaw {
     double damping = 0.0;
   };
   virtual Presliding presliding() const = 0;
+  // d|F_t|/d|s| per unit normal force [s/m] in steady sliding at slip speed v > 0 with the
+  // state held, where it is stiffer than the steady curve's slope: the damping the slip
+  // meets before the state responds (rate-and-state's direct effect, about a / v), for the
+  // a-priori stable step. 0 by default: a bristle law's damping is in presliding() (in
+  // steady sliding its sigma1 dz/dt term has no slope, leaving sigma2, the steady slope's).
+  virtual double directSlope(double /*v*/) const { return 0.0; }
   // Largest |d(dz/dt)/dz| over the states a slip speed up to v_max can reach [1/s]: the
   // state equation's stiffness, for the a-priori stable step (0: not stiff).
   virtual double stateStiffness(double v_max) const = 0;

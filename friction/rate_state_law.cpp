@@ -77,6 +77,22 @@ double RateStateLaw::slope(double v) const {
   return (a - b) / (speed * std::sqrt(1.0 + std::exp(-2.0 * log_y)));
 }
 
+double RateStateLaw::directSlope(double v) const {
+  const double speed = std::abs(v);
+  const double a = params_.a;
+  const double b = params_.b;
+  if (std::isnan(v)) return v;
+  if (speed == 0.0) {
+    return b > 0.0 ? std::numeric_limits<double>::infinity()
+                   : a * std::exp(params_.mu0 / a) / (2.0 * params_.v0);
+  }
+  // At psi = ln(v0 / v) the arcsinh's argument has the log L of slope(); d asinh(e^L) / dv at
+  // frozen psi is (1 / v) / sqrt(1 + e^(-2 L)).
+  const double log_y =
+      params_.mu0 / a - std::log(2.0) + (1.0 - b / a) * std::log(speed / params_.v0);
+  return a / (speed * std::sqrt(1.0 + std::exp(-2.0 * log_y)));
+}
+
 double RateStateLaw::maxCoefficient(double v_max) const {
   const double psi_max = logAddExp(psi0_, std::log(params_.v0 * kBoundAge / params_.d_c));
   return mu(std::abs(v_max), psi_max);

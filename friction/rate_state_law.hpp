@@ -87,6 +87,9 @@ class RateStateLaw final : public DynamicFrictionLaw {
   Presliding presliding() const override { return {}; }
   // max(v0 exp(-psi0), v_max) / d_c (aging) or v_max / d_c (slip).
   double stateStiffness(double v_max) const override;
+  // The direct effect at the steady state of speed v: a / (v sqrt(1 + exp(-2 L))) (L as in
+  // slope()), about a / v; unbounded as v -> 0 (+infinity at 0 when b > 0).
+  double directSlope(double v) const override;
 
   const RateStateParams& params() const { return params_; }
   // mu at slip speed v >= 0 and state psi.
