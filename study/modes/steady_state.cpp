@@ -104,9 +104,12 @@ SteadyState findSteadyState(Dynamics& dynamics, const SteadyStateOptions& option
     const Linearization lin = linearize(dynamics, coords, x, chooseSteps(dynamics, x), false, 0.0);
     out.evaluations += lin.evaluations + 1;
     const Eigen::MatrixXd& k = lin.stiffness;
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(k);
-    cod.setThreshold(1e-9);
-    const Eigen::VectorXd dq = cod.solve(-g);
+    // The least-squares step of least norm (directions nothing stiffens are left alone), by
+    // SVD: Eigen 3.4's complete orthogonal decomposition read uninitialised Householder
+    // coefficients here (valgrind), which made the step, and the verdict, vary from run to run.
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(k, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    svd.setThreshold(1e-9);
+    const Eigen::VectorXd dq = svd.solve(-g);
     if (maxAbs(k * dq + g) > 1e-6 * res + options.tolerance)
       throw NoSteadyState("no steady state: nothing holds " + freeDirection(coords, k) +
                           format(" against a steady force (acceleration %.3g while the "
