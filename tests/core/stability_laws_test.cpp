@@ -30,7 +30,6 @@ using Law = std::shared_ptr<const friction::FrictionLaw>;
 constexpr double kG = 9.81;
 const double kTheta = std::atan(0.364);  // incline: load ratio 0.364 (20 degrees)
 constexpr double kLoad = 10.0;           // joints' constant normal load [N]
-constexpr double kRatio = 0.364;         // joints' effort over the friction load N r
 
 Law tabulated(std::vector<double> v, std::vector<double> mu) {
   return std::make_shared<friction::TabulatedLaw>(std::move(v), std::move(mu));
