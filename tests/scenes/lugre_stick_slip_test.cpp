@@ -39,35 +39,39 @@ constexpr double kMuC = 1.0, kMuS = 1.5, kVs = 1e-3;
 // the second stick and the second slip.
 const std::vector<double> kTimes = {3.0, 7.0, 7.6, 8.0, 9.0, 10.0, 12.0, 14.2, 15.0};
 
-// x(t) of the reference at kTimes.
-std::vector<double> reference() {
+// The block's state (x, x', z) and one classical RK4 step of its equations from time t.
+struct Block {
+  double x, v, z;
+};
+
+Block rk4Step(double t, const Block& y, double h) {
   auto g = [](double v) {
     const double r = v / kVs;
     return kMuC + (kMuS - kMuC) * std::exp(-r * r);
   };
-  struct Y {
-    double x, v, z;
+  auto f = [&](double s, const Block& b) {
+    const double zdot = b.v - kSigma0 * std::abs(b.v) * b.z / g(std::abs(b.v));
+    const double friction = kFn * (kSigma0 * b.z + kSigma1 * zdot + kSigma2 * b.v);
+    return Block{b.v, (kK * (kV * s - b.x) - friction) / kM, zdot};
   };
-  auto f = [&](double t, const Y& y) {
-    const double zdot = y.v - kSigma0 * std::abs(y.v) * y.z / g(std::abs(y.v));
-    const double friction = kFn * (kSigma0 * y.z + kSigma1 * zdot + kSigma2 * y.v);
-    return Y{y.v, (kK * (kV * t - y.x) - friction) / kM, zdot};
-  };
+  const Block k1 = f(t, y);
+  const Block k2 = f(t + h / 2, {y.x + h / 2 * k1.x, y.v + h / 2 * k1.v, y.z + h / 2 * k1.z});
+  const Block k3 = f(t + h / 2, {y.x + h / 2 * k2.x, y.v + h / 2 * k2.v, y.z + h / 2 * k2.z});
+  const Block k4 = f(t + h, {y.x + h * k3.x, y.v + h * k3.v, y.z + h * k3.z});
+  return {y.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
+          y.v + h / 6 * (k1.v + 2 * k2.v + 2 * k3.v + k4.v),
+          y.z + h / 6 * (k1.z + 2 * k2.z + 2 * k3.z + k4.z)};
+}
+
+// x(t) of the reference at kTimes.
+std::vector<double> reference() {
   const double h = 2e-6;
-  Y y{0, 0, 0};
+  Block y{0, 0, 0};
   double t = 0;
   std::vector<double> out;
   for (double sample : kTimes) {
     const long n = std::lround((sample - t) / h);
-    for (long i = 0; i < n; ++i, t += h) {
-      const Y k1 = f(t, y);
-      const Y k2 = f(t + h / 2, {y.x + h / 2 * k1.x, y.v + h / 2 * k1.v, y.z + h / 2 * k1.z});
-      const Y k3 = f(t + h / 2, {y.x + h / 2 * k2.x, y.v + h / 2 * k2.v, y.z + h / 2 * k2.z});
-      const Y k4 = f(t + h, {y.x + h * k3.x, y.v + h * k3.v, y.z + h * k3.z});
-      y.x += h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x);
-      y.v += h / 6 * (k1.v + 2 * k2.v + 2 * k3.v + k4.v);
-      y.z += h / 6 * (k1.z + 2 * k2.z + 2 * k3.z + k4.z);
-    }
+    for (long i = 0; i < n; ++i, t += h) y = rk4Step(t, y, h);
     t = sample;
     out.push_back(y.x);
   }
@@ -103,32 +107,12 @@ double worstError(const std::vector<std::string>& overrides, std::vector<double>
 // The reference's stick-slip period: between its last two slip onsets (the speed rising
 // through the drive's 0.1 m/s) in the scene's 25 s.
 double referencePeriod() {
-  auto g = [](double v) {
-    const double r = v / kVs;
-    return kMuC + (kMuS - kMuC) * std::exp(-r * r);
-  };
-  struct Y {
-    double x, v, z;
-  };
-  auto f = [&](double t, const Y& y) {
-    const double zdot = y.v - kSigma0 * std::abs(y.v) * y.z / g(std::abs(y.v));
-    return Y{y.v,
-             (kK * (kV * t - y.x) - kFn * (kSigma0 * y.z + kSigma1 * zdot + kSigma2 * y.v)) / kM,
-             zdot};
-  };
   const double h = 1e-5;  // h sigma0 |v| / g <= 0.35: RK4's error far below the 0.01 s rows
-  Y y{0, 0, 0};
+  Block y{0, 0, 0};
   std::vector<double> onsets;
   for (long i = 0; i < std::lround(25.0 / h); ++i) {
-    const double t = i * h;
-    const Y k1 = f(t, y);
-    const Y k2 = f(t + h / 2, {y.x + h / 2 * k1.x, y.v + h / 2 * k1.v, y.z + h / 2 * k1.z});
-    const Y k3 = f(t + h / 2, {y.x + h / 2 * k2.x, y.v + h / 2 * k2.v, y.z + h / 2 * k2.z});
-    const Y k4 = f(t + h, {y.x + h * k3.x, y.v + h * k3.v, y.z + h * k3.z});
-    const double v0 = y.v;
-    y.x += h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x);
-    y.v += h / 6 * (k1.v + 2 * k2.v + 2 * k3.v + k4.v);
-    y.z += h / 6 * (k1.z + 2 * k2.z + 2 * k3.z + k4.z);
+    const double t = i * h, v0 = y.v;
+    y = rk4Step(t, y, h);
     if (v0 < kV && y.v >= kV) onsets.push_back(t + h);
   }
   EXPECT_GE(onsets.size(), 3u);
