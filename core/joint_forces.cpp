@@ -117,7 +117,21 @@ void JointForces::addGeneralized(const Entry& e, double tau, std::vector<Wrench>
   out[c.value].torque += tau * e.value.j_child.tail<3>().transpose();
 }
 
-double JointForces::frictionTorque(const Entry& e, double load) const {
+double limitCoordinate(const JointLimit& limit, double q, bool angular) {
+  if (!angular) return q;
+  const double middle = 0.5 * (limit.lower + limit.upper);
+  return middle + wrapAngle(q - middle);
+}
+
+void JointForces::noteHeld(const Entry& e, double tau, double held, Workspace& ws) {
+  const double change = std::abs(tau - held);
+  if (change > ws.joint_held_change) {
+    ws.joint_held_change = change;
+    ws.joint_held = e.joint;
+  }
+}
+
+double JointForces::frictionTorque(const Entry& e, double load, Workspace& ws) const {
   const JointFriction& f = *e.elements->friction;
   const double r = e.coordinate.angular ? f.radius : 1.0;
   const Vec3 slip(r * e.value.rate, 0.0, 0.0);
@@ -127,10 +141,15 @@ double JointForces::frictionTorque(const Entry& e, double load) const {
   }
   // Damping and friction share one slope budget (core/joint_forces.hpp).
   const double budget = e.max_slope - std::min(e.elements->damping, e.max_slope);
-  return capped(r * friction::tangentialForce(*f.law, slip, load).x(), e.value.rate, budget);
+  const double tau = r * friction::tangentialForce(*f.law, slip, load).x();
+  const double held = capped(tau, e.value.rate, budget);
+  if (held != tau) noteHeld(e, tau, held, ws);
+  return held;
 }
 
 void JointForces::accumulate(const State& state, Workspace& ws) {
+  ws.joint_held_change = 0.0;
+  ws.joint_held = -1;
   if (entries_.empty()) return;  // ws.joint_wrench stays as Dynamics made it: zero
   for (auto& w : ws.joint_wrench) w.setZero();
   const MotionView motion(state, ws.rotation);
@@ -147,20 +166,23 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
     }
     const JointElements& el = *e.elements;
     const double q = e.value.q, rate = e.value.rate;
-    double tau = el.effort + capped(-el.damping * rate, rate, e.max_slope);
+    const double damper = -el.damping * rate, held_damper = capped(damper, rate, e.max_slope);
+    if (held_damper != damper) noteHeld(e, damper, held_damper, ws);
+    double tau = el.effort + held_damper;
     if (el.spring) {
       const double stretch = q - el.spring->reference;
       tau -= el.spring->stiffness * (e.coordinate.angular ? wrapAngle(stretch) : stretch);
     }
     if (el.limit) {
       const JointLimit& l = *el.limit;
-      if (q > l.upper) tau -= std::max(0.0, l.stiffness * (q - l.upper) + l.damping * rate);
-      if (q < l.lower) tau += std::max(0.0, l.stiffness * (l.lower - q) - l.damping * rate);
+      const double ql = limitCoordinate(l, e.value.q, e.coordinate.angular);
+      if (ql > l.upper) tau -= std::max(0.0, l.stiffness * (ql - l.upper) + l.damping * rate);
+      if (ql < l.lower) tau += std::max(0.0, l.stiffness * (l.lower - ql) - l.damping * rate);
     }
     if (el.friction) {
       // Reaction-load friction is added after the solve (applyReactionFriction).
       const double friction = el.friction->load == JointFrictionLoad::kConstant
-                                  ? frictionTorque(e, el.friction->normal_force)
+                                  ? frictionTorque(e, el.friction->normal_force, ws)
                                   : 0.0;
       ws.joint_friction[static_cast<std::size_t>(e.joint)] = friction;
       tau += friction;
@@ -181,7 +203,7 @@ int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) 
       const Vec3 f = solver.reactionForce(e.joint);
       const double load = e.coordinate.angular ? f.norm() : (f - f.dot(e.axis) * e.axis).norm();
       e.load = load;
-      const double tau = frictionTorque(e, load);
+      const double tau = frictionTorque(e, load, ws);
       const double d = tau - e.reaction_torque;
       e.reaction_torque = tau;
       ws.joint_friction[static_cast<std::size_t>(e.joint)] = tau;

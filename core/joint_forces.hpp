@@ -54,6 +54,11 @@ namespace tribo {
 // free parent, or one on a joint of the same type along a parallel axis (a chain of light
 // fingers), makes it the pair's reduced inertia I_p I_c / (I_p + I_c).
 double coordinateInertia(const Model& model, int joint, std::span<const int> joint_of_child);
+// The angle q (wrapped to (-pi, pi]) as `limit` reads it: the turn nearest the middle of its
+// range, so a range across +-pi (a shoulder's [-1.3, 4.45] rad) is continuous where the
+// body turns through pi, and its discontinuity lies opposite the range's middle, outside
+// any range narrower than a full turn. Prismatic coordinates are returned as they are.
+double limitCoordinate(const JointLimit& limit, double q, bool angular);
 // Per body: the last joint whose child it is (-1: none), the table coordinateInertia reads
 // (made once, so that all joints' inertias cost O(joints), not O(joints^2)).
 std::vector<int> jointOfChild(const Model& model);
@@ -109,8 +114,10 @@ class JointForces {
     const double bound = max_slope * std::abs(rate);
     return std::clamp(tau, -bound, bound);
   }
+  // `held` within c_max |q'| in place of the law's `tau`: the change noted in `ws`.
+  static void noteHeld(const Entry& e, double tau, double held, Workspace& ws);
   void addGeneralized(const Entry& e, double tau, std::vector<Wrench>& out) const;
-  double frictionTorque(const Entry& e, double load) const;
+  double frictionTorque(const Entry& e, double load, Workspace& ws) const;
 
   std::vector<Entry> entries_;
   std::vector<int> reaction_;  // entries with reaction-load friction

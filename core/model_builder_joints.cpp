@@ -5,6 +5,7 @@
 
 #include "core/constraint_rank.hpp"
 #include "core/constraint_rows.hpp"
+#include "core/joint_forces.hpp"
 #include "core/model_builder.hpp"
 #include "core/number_text.hpp"
 
@@ -211,20 +212,27 @@ std::optional<int> ModelBuilder::findJoint(const std::string& name) const {
 }
 
 void ModelBuilder::finishJoints(Model& model) const {
-  // Limit gains left at 0: a critically damped stop whose frequency is 0.5 / time_step for
-  // the child alone about (revolute) or along (prismatic) the axis; outboard bodies only
-  // lower it, so the explicit integrators stay well inside their stability limits.
+  // Limit gains left at 0: a critically damped stop whose frequency is 0.5 / time_step on
+  // the coordinate's inertia as the stability estimate takes it (core/joint_forces.hpp: the
+  // child about or along the axis, reduced with a free parent's), so the explicit integrators
+  // stay well inside their limits (rk4 at about 5.6 steps, semi-implicit Euler at about 1.7).
+  // Outboard bodies only lower the frequency.
   const double omega = 0.5 / model.options.time_step;
-  for (Joint& j : model.joints) {
+  const std::vector<int> joint_of_child = jointOfChild(model);
+  for (std::size_t ji = 0; ji < model.joints.size(); ++ji) {
+    Joint& j = model.joints[ji];
     if (!j.elements.limit || j.elements.limit->stiffness > 0.0) continue;
-    const Body& c = model.bodies[j.child.value];
-    double inertia = c.mass;
-    if (isAngular(j.type)) {
-      const Mat3 r = c.orientation.toRotationMatrix();
-      const Vec3 axis = r * j.axes_in_child.col(2);
-      const Vec3 arm = -(r * j.anchor_in_child);  // centre of mass from the anchor
-      inertia = axis.dot(r * c.inertia * r.transpose() * axis) +
-                c.mass * (arm - arm.dot(axis) * axis).squaredNorm();
+    double inertia = coordinateInertia(model, static_cast<int>(ji), joint_of_child);
+    if (!(inertia > 0.0) || !std::isfinite(inertia)) {  // no dynamic body on either side
+      const Body& c = model.bodies[j.child.value];
+      inertia = c.mass;
+      if (isAngular(j.type)) {
+        const Mat3 r = c.orientation.toRotationMatrix();
+        const Vec3 axis = r * j.axes_in_child.col(2);
+        const Vec3 arm = -(r * j.anchor_in_child);  // centre of mass from the anchor
+        inertia = axis.dot(r * c.inertia * r.transpose() * axis) +
+                  c.mass * (arm - arm.dot(axis) * axis).squaredNorm();
+      }
     }
     JointLimit& l = *j.elements.limit;
     l.stiffness = inertia * omega * omega;

@@ -176,6 +176,13 @@ StepStatus Simulator::check() {
   }
   if (!ws.joint_friction_converged && stats_.joint_friction_unconverged++ == 0)
     stats_.first_unconverged_time = state_.time;
+  if (ws.joint_held >= 0) {
+    if (stats_.joint_held++ == 0) stats_.first_held_time = state_.time;
+    if (ws.joint_held_change > stats_.joint_held_change) {
+      stats_.joint_held_change = ws.joint_held_change;
+      stats_.joint_held_worst = ws.joint_held;
+    }
+  }
   stats_.contact_count = static_cast<int>(ws.contacts.size());
   stats_.max_penetration = std::max(stats_.max_penetration, ws.max_penetration);
   stats_.max_constraint_error = std::max(stats_.max_constraint_error, ws.max_constraint_error);

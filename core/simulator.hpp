@@ -58,6 +58,13 @@ struct StepStats {
   // Steps whose state's joint friction (reaction load) did not settle within the iteration
   // cap (core/joint_forces.hpp), and the time of the first.
   long joint_friction_unconverged = 0;
+  // Steps whose state had a joint's damping or friction held within I_q |q'| / (2 h)
+  // (core/joint_forces.hpp), the time of the first, the largest change to a torque there
+  // [N m or N] and its joint (-1: none).
+  long joint_held = 0;
+  double first_held_time = std::numeric_limits<double>::quiet_NaN();  // [s]
+  double joint_held_change = 0.0;
+  int joint_held_worst = -1;
   // Contact points deeper than their geometry's half width along the normal (point-steps),
   // the time of the first, and the deepest relative to that width.
   long deep_penetrations = 0;

@@ -505,6 +505,9 @@ StabilityReport estimateStableStep(const Model& model) {
         });
     }
     const double damping = std::min(el.damping + slope, cap);
+    if (el.damping + slope > cap)
+      report.held_joints.push_back(
+          {ji, el.damping + slope, cap, kDissipativeSlopeShare * inertia / (el.damping + slope)});
     auto who = [&](const char* what) {
       std::ostringstream e;
       e << "joint '" << joint.name << "' " << what << " on body '"

@@ -125,9 +125,20 @@ struct StabilityLimit {
   std::string element;    // e.g. "contact pair (belt_surface, box_shape)"
 };
 
+// A joint whose damping plus steepest friction slope c exceeds the fixed step's budget
+// c_max = I_q / (2 h) (core/joint_forces.hpp): its torques are held within c_max |q'| where
+// the law is steeper, and a step of at most `rule_step` = I_q / (2 c) gives the law as written.
+struct HeldJoint {
+  int joint = -1;
+  double slope = 0.0;      // c [N m s/rad or N s/m]
+  double max_slope = 0.0;  // c_max at the model's step
+  double rule_step = 0.0;  // [s]
+};
+
 struct StabilityReport {
-  StabilityLimit limit;            // the most restrictive element
-  std::vector<std::string> notes;  // elements that could not be bounded, and why
+  StabilityLimit limit;                // the most restrictive element
+  std::vector<std::string> notes;      // elements that could not be bounded, and why
+  std::vector<HeldJoint> held_joints;  // fixed steps only
 };
 
 // Largest stable step of `integrator` on x'' + c_over_m x' + k_over_m x = 0.

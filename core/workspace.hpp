@@ -58,6 +58,11 @@ struct Workspace {
   // solveConstraints: joint friction under reaction load (core/joint_forces.hpp): false when
   // its fixed-point iteration stopped at the cap before the friction torques settled.
   bool joint_friction_converged = true;
+  // JointForces at fixed steps: the largest change the I_q |q'| / (2 h) rule made to a joint's
+  // damping or friction torque at this evaluation, |law's - applied| [N m or N], and that
+  // joint (-1: the rule did not engage).
+  double joint_held_change = 0.0;
+  int joint_held = -1;
   // Per model joint: the friction force [N] or torque [N m] on its coordinate at this
   // evaluation (joint friction of any law and load; 0 for joints without friction).
   std::vector<double> joint_friction;

@@ -30,7 +30,9 @@ nlohmann::json stepStatsJson(const StepStats& stats) {
           {"rejected_steps", stats.rejected_steps},
           {"force_evaluations", stats.evaluations},
           {"events", stats.events},
-          {"joint_friction_unconverged_steps", stats.joint_friction_unconverged}};
+          {"joint_friction_unconverged_steps", stats.joint_friction_unconverged},
+          {"joint_held_steps", stats.joint_held},
+          {"joint_held_largest_change", stats.joint_held_change}};
 }
 
 }  // namespace

@@ -89,6 +89,24 @@ class SummarySpill : public RowSink {
   SpilledColumn t_, x_, slip_;
 };
 
+// The fixed-step rule held a joint's damping or friction within I_q |q'| / (2 h)
+// (core/joint_forces.hpp): where, how often, how much, and the step that avoids it.
+std::string heldJointWarning(const Model& model, const RunResult& result) {
+  const StepStats& s = result.stats;
+  const Joint& joint = model.joints[static_cast<std::size_t>(s.joint_held_worst)];
+  std::ostringstream w;
+  w << "joint '" << joint.name << "': its damping and friction were held to I_q |q'| / (2 h), "
+    << "the fixed-step rule for light links (docs/joints.md), at " << s.joint_held << " of "
+    << s.steps << " steps (first at t = " << s.first_held_time << " s), changing its "
+    << (isAngular(joint.type) ? "torque by up to " : "force by up to ") << s.joint_held_change
+    << (isAngular(joint.type) ? " N m" : " N") << " from the law's";
+  for (const HeldJoint& h : result.stability.held_joints)
+    if (h.joint == s.joint_held_worst)
+      w << "; a step of at most " << h.rule_step << " s (or integrator bdf or dopri5) gives "
+        << "the law as written";
+  return w.str();
+}
+
 }  // namespace
 
 RunResult runScene(const io::Scene& scene, const RunMonitor& monitor) {
@@ -213,6 +231,7 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
          "against the joint's lever; see docs/joints.md)";
     result.warnings.push_back(w.str());
   }
+  if (result.stats.joint_held > 0) result.warnings.push_back(heldJointWarning(model, result));
   if (result.stats.deep_penetrations > 0) {
     const Geometry& g = model.geometries[result.stats.deepest_geometry];
     const std::string body = g.body.isWorld() ? "world" : model.bodies[g.body.value].name;

@@ -8,7 +8,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
+#include "core/constraint_rows.hpp"
 #include "core/simulator.hpp"
 #include "friction/friction_law.hpp"
 #include "support/joint_test_models.hpp"
@@ -117,8 +120,50 @@ TEST(JointElements, UndampedLimitReturnsTheSlidersSpeed) {
   EXPECT_NEAR(sim.state().bodies[0].position.x(), 0.1 - (0.3 - t_out), 1e-5);
 }
 
+// A disk on a free axle turning at w0 towards the upper end of a range, with an undamped stop
+// of stiffness k: ranges that cross +-pi (a shoulder's [-1.3, 4.45] rad), that lie beyond it
+// on either side, and one across 0 for comparison. Passing through pi does nothing (the
+// kinetic energy is unchanged to rounding until the stop), the stop engages where the range
+// says (the farthest turn is upper + w0 sqrt(I / k), the closed form of a spring stop), and
+// the disk leaves at -w0.
+TEST(JointElements, LimitRangesAcrossPiEngageOnlyAtTheirEnds) {
+  const double k = 400.0, w0 = 2.0;
+  for (const auto& [lower, upper] : std::vector<std::pair<double, double>>{
+           {-1.3, 4.45}, {2.5, 3.9}, {-3.9, -2.5}, {-std::numbers::pi - 0.5, -2.0}, {-1.0, 1.0}}) {
+    ModelBuilder b;
+    b.options().time_step = 1e-4;
+    const double start = upper - 1.0;  // 0.5 s before the stop
+    const int j = disk(b, w0, "disk", Vec3::Zero(), kIz);
+    b.setJointLimit(j, {lower, upper, k, 0.0});
+    // The disk starts turned to `start` (its coordinate counts from the configuration at 0).
+    auto model = b.build();
+    Model turned = *model;
+    turned.bodies[0].orientation = Quat(Eigen::AngleAxisd(start, Vec3::UnitZ()));
+    Simulator sim(std::make_shared<const Model>(turned));
+    const double e0 = 0.5 * kIz * w0 * w0;
+    double angle = start, farthest = start, previous_yaw = start;
+    const double contact_time = std::numbers::pi * std::sqrt(kIz / k);
+    const long n = std::lround((0.5 + contact_time + 0.2) / 1e-4);
+    for (long i = 0; i < n; ++i) {
+      ASSERT_TRUE(sim.step().ok);
+      const Quat& q = sim.state().bodies[0].orientation;
+      const double yaw = 2.0 * std::atan2(q.z(), q.w());
+      angle += wrapAngle(yaw - previous_yaw);  // the turn, unwrapped
+      previous_yaw = yaw;
+      farthest = std::max(farthest, angle);
+      const double w = sim.state().bodies[0].angular_velocity.z();
+      if (angle < upper - 0.05 && w > 0.0) {
+        ASSERT_NEAR(0.5 * kIz * w * w, e0, 1e-9 * e0) << lower << " " << upper << " at " << angle;
+      }
+    }
+    EXPECT_NEAR(farthest, upper + w0 * std::sqrt(kIz / k), 1e-4) << lower << " " << upper;
+    EXPECT_NEAR(sim.state().bodies[0].angular_velocity.z(), -w0, 1e-4) << lower << " " << upper;
+  }
+}
+
 TEST(JointElements, LimitGainsLeftOutAreDerivedFromTheStepAndTheChild) {
-  // Critically damped at w = 0.5 / time_step for the child alone: k = m w^2, c = 2 m w.
+  // Critically damped at w = 0.5 / time_step for the child on a fixed parent: k = m w^2,
+  // c = 2 m w.
   ModelBuilder b;
   b.options().time_step = 2e-3;
   b.setJointLimit(slider(b, Vec3::UnitX(), 0.0), {-0.1, 0.1, 0.0, 0.0});

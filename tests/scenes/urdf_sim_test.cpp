@@ -1,7 +1,8 @@
 // Real URDF robots simulated headless: every file of the shared corpus dropped on the ground
-// for 1 s without NaN and without energy rising (nothing drives them, so kinetic plus
-// gravitational energy can only fall); and a pendulum written as URDF moving exactly as the
-// same pendulum written as a scene file (scenes/robots/pendulum.urdf).
+// for 1 s at an automatic step within its own stability estimate, without NaN and without
+// energy rising (nothing drives them, so kinetic plus gravitational energy can only fall); and a
+// pendulum written as URDF moving exactly as the same pendulum written as a scene file
+// (scenes/robots/pendulum.urdf).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/simulator.hpp"
+#include "core/stability.hpp"
 #include "io/scene_loader.hpp"
 #include "io/urdf_model.hpp"
 #include "io/urdf_reader.hpp"
@@ -48,6 +50,13 @@ TEST_P(UrdfOnGround, OneSecondWithoutNanOrEnergyGain) {
   const nlohmann::json facts = nlohmann::json::parse(in)["urdfs"][file];
   if (!facts["is_valid_tree"].get<bool>()) GTEST_SKIP() << "invalid tree: tested by the reader";
   const io::Scene scene = io::sceneFromUrdf((corpus() / file).string(), {corpus().string()}, {});
+  // The automatic step: within 0.9 of the stable step estimated at it, and 1 ms a whole
+  // number of steps (or bdf, with no step limit, at the output interval).
+  const double dt = scene.model->options.time_step;
+  if (scene.model->options.integrator != IntegratorType::kBdf) {
+    EXPECT_LE(dt, 0.9 * estimateStableStep(*scene.model).limit.max_step) << file;
+    EXPECT_NEAR(1e-3 / dt, std::round(1e-3 / dt), 1e-9) << file << ": dt " << dt;
+  }
   Simulator sim(scene.model);
   const Model& m = *scene.model;
   const double e0 = mechanicalEnergy(m, sim.state());

@@ -384,6 +384,57 @@ TEST_F(UrdfWild, RevoluteWithoutLimitsOnAnUndeclaredWorldSwingsFreely) {
   }
 }
 
+// Class 9: a joint limit between a free base light about the joint's axis and a heavier arm
+// (an arm dropped on the ground by its base, as the Panda is). The default limit is a
+// critically damped stop at 0.5 / dt on the pair's reduced inertia I_p I_c / (I_p + I_c),
+// I_p the base's own about the axis and I_c the arm's about the joint (parallel axes), so
+// the automatic step is within 0.9 of the stable step estimated at its own gains, whatever
+// the masses; it divides the 1 ms output interval; and the run says nothing about either.
+TEST_F(UrdfWild, AutomaticStepIsWithinItsOwnEstimateOnALimitedJointOfAFreeBase) {
+  struct Case {
+    double base_mass, arm_mass, arm_length;
+  };
+  for (const Case& k : {Case{4.0, 3.0, 0.3}, Case{0.5, 2.0, 0.5}, Case{40.0, 0.05, 0.1},
+                        Case{1.0, 1.0, 0.05}, Case{0.2, 20.0, 1.0}}) {
+    for (const std::string integrator : {"rk4", "semi_implicit_euler"}) {
+      const double l = k.arm_length, m = k.arm_mass;
+      const double base_izz = k.base_mass * 0.02 / 12;  // a 0.1 m cube
+      // The arm: a bar of length l along x from the joint, its centre of mass at l / 2.
+      const double i_bar = m * (l * l + 0.0004) / 12;
+      const std::string text =
+          "<robot name=\"arm\"><link name=\"base\">" +
+          inertial(k.base_mass, base_izz, base_izz, base_izz) +
+          "<collision><geometry><box size=\"0.1 0.1 0.1\"/></geometry></collision></link>"
+          "<link name=\"arm\">" +
+          inertial(m, m * 0.0008 / 12, i_bar, i_bar, num(l / 2) + " 0 0") +
+          "<collision><origin xyz=\"" + num(l / 2) + " 0 0\"/><geometry><box size=\"" + num(l) +
+          " 0.02 0.02\"/></geometry></collision></link><joint name=\"yaw\" type=\"revolute\">"
+          "<parent link=\"base\"/><child link=\"arm\"/><origin xyz=\"0 0 0.07\"/>"
+          "<axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>"
+          "</joint></robot>";
+      const io::Scene scene =
+          io::sceneFromUrdf(write("arm.urdf", text), {}, {"integrator=" + integrator});
+      const double dt = scene.model->options.time_step;
+      const double per_ms = 1e-3 / dt;
+      EXPECT_NEAR(per_ms, std::round(per_ms), 1e-9) << dt;
+      const double i_arm = i_bar + m * (l / 2) * (l / 2);
+      const double reduced = base_izz * i_arm / (base_izz + i_arm);
+      const Joint& yaw = scene.model->joints.back();
+      ASSERT_NE(yaw.name.find("yaw"), std::string::npos) << yaw.name;
+      EXPECT_NEAR(yaw.elements.limit->stiffness, reduced * std::pow(0.5 / dt, 2),
+                  1e-9 * yaw.elements.limit->stiffness)
+          << integrator << " " << k.base_mass;
+      const double limit = estimateStableStep(*scene.model).limit.max_step;
+      EXPECT_LE(dt, 0.9 * limit) << integrator << " " << k.base_mass;
+      const study::RunResult r = runOneSecond(scene);
+      for (const std::string& w : r.warnings) {
+        EXPECT_EQ(w.find("exceeds the estimated stability limit"), std::string::npos) << w;
+        EXPECT_EQ(w.find("not a whole multiple"), std::string::npos) << w;
+      }
+    }
+  }
+}
+
 // The guards still stop what they exist to stop: a step far above the stability limit blows
 // up (energy rising), whatever the robot. 60 times: the limit is the friction's yaw (3 times
 // its translation's rate, core/stability.hpp), a chatter that dissipates, 20 times below the
