@@ -6,6 +6,7 @@
 #include <assimp/scene.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
 #include <cctype>
@@ -14,6 +15,7 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <string_view>
 
 #include "io/collada_check.hpp"
 #include "io/file_read.hpp"
