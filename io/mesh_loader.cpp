@@ -1,19 +1,25 @@
 #include "io/mesh_loader.hpp"
 
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
+#include <string_view>
 
 #include "io/collada_check.hpp"
 #include "io/file_read.hpp"
+#include "io/gltf_check.hpp"
 #include "io/obj_reader.hpp"
 
 namespace tribo::io {
@@ -23,7 +29,10 @@ using contact::MeshError;
 
 namespace {
 
-void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, MeshData& out) {
+// Every node's meshes, in the file's frame (the transforms of the node and its ancestors
+// applied), appended to `out`; a face naming a vertex the mesh does not have is refused.
+void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, MeshData& out,
+             const std::string& name) {
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
@@ -35,13 +44,18 @@ void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;  // points and lines left by triangulation
+      for (unsigned k = 0; k < 3; ++k)
+        if (face.mIndices[k] >= mesh.mNumVertices)
+          throw MeshError("mesh file '" + name + "': a triangle names vertex " +
+                          std::to_string(face.mIndices[k]) + " of a mesh of " +
+                          std::to_string(mesh.mNumVertices) + " vertices");
       out.triangles.push_back({base + static_cast<int>(face.mIndices[0]),
                                base + static_cast<int>(face.mIndices[1]),
                                base + static_cast<int>(face.mIndices[2])});
     }
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c)
-    collect(scene, *node.mChildren[c], transform, out);
+    collect(scene, *node.mChildren[c], transform, out, name);
 }
 
 // Joins vertices with identical coordinates (several meshes of one file share corners).
@@ -81,15 +95,66 @@ void checkScale(const std::string& name, const Eigen::Vector3d& scale) {
     throw MeshError("mesh file '" + name + "': scale must be 3 numbers > 0");
 }
 
-// The format of a file extension or hint, in lower case: "stl", "obj" or "dae".
+// The format of a file extension or hint, in lower case: "stl", "obj", "dae", "gltf" or
+// "glb".
 std::string format(const std::string& written, const std::string& name) {
   std::string f(written.starts_with('.') ? written.substr(1) : written);
   for (char& c : f) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (f != "stl" && f != "obj" && f != "dae")
-    throw MeshError("mesh file '" + name + "': expected an STL, OBJ or DAE file (by its " +
-                    "extension), found '" + written + "'");
+  if (f != "stl" && f != "obj" && f != "dae" && f != "gltf" && f != "glb")
+    throw MeshError("mesh file '" + name + "': expected an STL, OBJ, DAE, glTF or GLB file " +
+                    "(by its extension), found '" + written + "'");
   return f;
 }
+
+// The folder assimp is told a glTF file is in: the buffers it asks for are named in it.
+const std::string kGltfFolder = "/tribo-gltf/";
+
+// The files assimp opens for a glTF: the file itself from memory, its buffers from the
+// .gltf's folder (gltfBufferPath; checkGltf has checked them), read whole within
+// kMaxMeshBytes. Nothing else is opened, nothing written.
+class GltfFiles : public Assimp::IOSystem {
+ public:
+  GltfFiles(std::span<const unsigned char> bytes, std::string main,
+            std::optional<std::filesystem::path> folder, std::string name)
+      : bytes_(bytes), main_(std::move(main)), folder_(std::move(folder)), name_(std::move(name)) {}
+
+  bool Exists(const char* file) const override {
+    return file == main_ || resolve(file).has_value();
+  }
+  char getOsSeparator() const override { return '/'; }
+
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (std::string_view(mode).find_first_of("wa+") != std::string_view::npos) return nullptr;
+    if (file == main_) return new Assimp::MemoryIOStream(bytes_.data(), bytes_.size());
+    const auto path = resolve(file);
+    if (!path) return nullptr;
+    try {
+      const std::string data = readFileBounded(*path, "glTF buffer file", kMaxMeshBytes);
+      auto* copy = new uint8_t[data.size()];
+      std::copy(data.begin(), data.end(), copy);
+      return new Assimp::MemoryIOStream(copy, data.size(), true);
+    } catch (const FileReadError&) {
+      return nullptr;
+    }
+  }
+  void Close(Assimp::IOStream* stream) override { delete stream; }
+
+ private:
+  // The file a buffer name assimp asks for stands for, when it is one.
+  std::optional<std::filesystem::path> resolve(const std::string& file) const {
+    if (!file.starts_with(kGltfFolder)) return std::nullopt;
+    try {
+      return gltfBufferPath(file.substr(kGltfFolder.size()), folder_, name_);
+    } catch (const MeshError&) {
+      return std::nullopt;
+    }
+  }
+
+  std::span<const unsigned char> bytes_;
+  std::string main_;
+  std::optional<std::filesystem::path> folder_;
+  std::string name_;
+};
 
 // Scaled and welded, a mesh that holds at least one triangle.
 std::shared_ptr<const MeshData> finish(MeshData&& read, const std::string& name,
@@ -113,20 +178,48 @@ std::shared_ptr<const MeshData> finish(MeshData&& read, const std::string& name,
   return mesh;
 }
 
-// STL and COLLADA through assimp, from memory: every node's meshes merged.
+// A glTF through assimp after checkGltf, its buffers found through GltfFiles.
+const aiScene* readGltf(Assimp::Importer& importer, std::span<const unsigned char> bytes,
+                        const std::string& format,
+                        const std::optional<std::filesystem::path>& folder,
+                        const std::string& name) {
+  checkGltf(bytes, format == "glb", folder, name);
+  const std::string main = kGltfFolder + "mesh." + format;
+  importer.SetIOHandler(new GltfFiles(bytes, main, folder, name));  // the importer owns it
+  return importer.ReadFile(main, kSteps | aiProcess_ValidateDataStructure);
+}
+
+// STL, COLLADA and glTF through assimp, from memory: every node's meshes merged. `folder`
+// holds a .gltf's buffer files (none: only embedded buffers).
 MeshData readWithAssimp(std::span<const unsigned char> bytes, const std::string& format,
+                        const std::optional<std::filesystem::path>& folder,
                         const std::string& name) {
   if (format == "dae")
     checkColladaSizes({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, name);
   Assimp::Importer importer;
   configure(importer);
   const aiScene* scene =
-      importer.ReadFileFromMemory(bytes.data(), bytes.size(), kSteps, format.c_str());
+      format == "gltf" || format == "glb"
+          ? readGltf(importer, bytes, format, folder, name)
+          : importer.ReadFileFromMemory(bytes.data(), bytes.size(), kSteps, format.c_str());
   if (scene == nullptr || scene->mRootNode == nullptr)
     throw MeshError("mesh file '" + name + "': cannot read it (" + importer.GetErrorString() + ")");
   MeshData mesh;
-  collect(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
+  collect(*scene, *scene->mRootNode, aiMatrix4x4(), mesh, name);
   return mesh;
+}
+
+// loadMeshFromMemory with the folder of the file the bytes came from.
+std::shared_ptr<const MeshData> load(std::span<const unsigned char> bytes, const std::string& hint,
+                                     const std::string& name, const Eigen::Vector3d& scale,
+                                     const std::optional<std::filesystem::path>& folder) {
+  checkScale(name, scale);
+  const std::string f = format(hint, name);
+  if (bytes.empty()) throw MeshError("mesh file '" + name + "': cannot read it (no bytes)");
+  if (f == "obj")
+    return finish(readObj({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, name), name,
+                  scale);
+  return finish(readWithAssimp(bytes, f, folder, name), name, scale);
 }
 
 }  // namespace
@@ -143,24 +236,16 @@ std::shared_ptr<const MeshData> loadMesh(const std::string& path, const Eigen::V
   } catch (const FileReadError& e) {
     throw MeshError(e.what());
   }
-  return loadMeshFromMemory(
-      std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), hint, path,
-      scale);
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  return load(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), hint,
+              path, scale, folder.empty() ? std::filesystem::path(".") : folder);
 }
 
 std::shared_ptr<const MeshData> loadMeshFromMemory(std::span<const unsigned char> bytes,
                                                    const std::string& hint,
                                                    const std::string& name_for_errors,
                                                    const Eigen::Vector3d& scale) {
-  checkScale(name_for_errors, scale);
-  const std::string f = format(hint, name_for_errors);
-  if (bytes.empty())
-    throw MeshError("mesh file '" + name_for_errors + "': cannot read it (no bytes)");
-  if (f == "obj")
-    return finish(
-        readObj({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, name_for_errors),
-        name_for_errors, scale);
-  return finish(readWithAssimp(bytes, f, name_for_errors), name_for_errors, scale);
+  return load(bytes, hint, name_for_errors, scale, std::nullopt);
 }
 
 }  // namespace tribo::io

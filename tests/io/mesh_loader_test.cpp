@@ -358,13 +358,14 @@ TEST(MeshLoader, ObjPolygonsAreCutIntoTrianglesThatCoverThem) {
   }
 }
 
-TEST(MeshLoader, OnlyStlObjAndDaeAreRead) {
+TEST(MeshLoader, OnlyStlObjDaeAndGltfAreRead) {
   const fs::path ply = write("cube.ply", "ply\nformat ascii 1.0\nend_header\n");
   try {
     loadMesh(ply.string());
     ADD_FAILURE() << "a .ply read";
   } catch (const MeshError& e) {
-    EXPECT_TRUE(has(e.what(), "expected an STL, OBJ or DAE file (by its extension), found '.ply'"))
+    EXPECT_TRUE(has(e.what(),
+                    "expected an STL, OBJ, DAE, glTF or GLB file (by its extension), found '.ply'"))
         << e.what();
   }
   fs::remove(ply);
