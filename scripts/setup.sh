@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 PACKAGES=(build-essential cmake pkg-config clang-format
-          libjs-three chromium python3-pil  # tribo view (three.js inlined), its browser tests
+          libjs-three chromium python3-pil python3-yaml  # tribo view (three.js inlined), its browser tests
           libeigen3-dev libfcl-dev libccd-dev liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
           libgtest-dev libgmock-dev libbenchmark-dev libassimp-dev
           libsundials-dev libmuparser-dev libspectra-dev gnuplot-nox

@@ -71,10 +71,10 @@ TriboView.Overlays = function (view) {
     forceBodies.forEach(function (f) {
       if (f.normal !== undefined)
         arrows.push({ f: f, kind: "normal", arrow: new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1),
-                      new THREE.Vector3(), 1, 0x66ccff) });
+                      new THREE.Vector3(), 1, TriboView.colours.normal) });
       if (f.friction !== undefined)
         arrows.push({ f: f, kind: "friction", arrow: new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0),
-                      new THREE.Vector3(), 1, 0xff6666) });
+                      new THREE.Vector3(), 1, TriboView.colours.friction) });
     });
     arrows.forEach(function (a) { view.scene.add(a.arrow); });
   };
@@ -106,7 +106,7 @@ TriboView.Overlays = function (view) {
       }
       var inContact = (view.series[f.normal][frame] || 0) > 0;
       var stuck = Math.abs(view.series[f.slip][frame] || 0) < view.data.meta.stick_speed;
-      b.material.color.set(!inContact ? b.baseColour : stuck ? 0x3366ff : 0xff8800);
+      b.material.color.set(!inContact ? b.baseColour : stuck ? TriboView.colours.sticking : TriboView.colours.slipping);
     });
   };
 

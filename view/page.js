@@ -1,13 +1,15 @@
 // The replay page's main script: reads the embedded run (window.TRIBO_DATA), builds the
 // view, replays the recorded motion (positions and orientations, interpolated between
 // frames), wires the controls (play, pause, speed, scrub, frame steps, follow, trails,
-// forces, stick/slip, plot channels, keyboard) and writes a JSON status into
-// #tribo-status for tests: errors, bodies, time, frame, camera, each body's projected
-// screen position, frame times. URL hash parameters (docs/view.md): t, paused, speed,
+// forces, stick/slip, plot channels, keyboard), fills the legend and writes a JSON status
+// into #tribo-status for tests: errors, bodies, time, frame, camera, each body's projected
+// screen position and colour, the springs, joints and surface arrows drawn (where, on
+// screen), the legend's entries, the plot's axes, frame times. URL hash parameters (docs/view.md): t, paused, speed,
 // camera=ex,ey,ez,tx,ty,tz[,fov], follow, trails, plot, forces, stickslip, test,
 // click=ID,...,scrub:FRAME,wait (controls clicked in order, clickdelay ms apart), size=WxH,
 // bench=N.
-// Not here: geometry (scene.js), overlays (overlays.js), the plot (plot.js).
+// Not here: geometry (scene.js), overlays (overlays.js), springs, joints and surface arrows
+// (elements.js), the plot (plot.js).
 (function () {
   var data = window.TRIBO_DATA;
   var statusEl = document.getElementById("tribo-status");
@@ -37,8 +39,8 @@
   });
   var hasOrientation = quat.some(function (q) { return q; });
 
-  // The scene's size: the spread of the recorded and initial body origins, at least the
-  // bodies' own sizes.
+  // The scene's size: the spread of the recorded and initial body origins and the joints'
+  // anchors, at least the bodies' own sizes (springs' far ends, on the world, do not count).
   var lo = new THREE.Vector3(Infinity, Infinity, Infinity), hi = lo.clone().negate();
   data.scene.bodies.forEach(function (b, i) {
     var v = new THREE.Vector3().fromArray(b.position);
@@ -51,6 +53,11 @@
       var r = g.half_extents ? Math.max.apply(null, g.half_extents) : (g.radius || 0) + (g.half_length || 0);
       lo.min(v.clone().subScalar(r)); hi.max(v.clone().addScalar(r));
     });
+  });
+  (data.scene.joints || []).forEach(function (j) {  // joint anchors are near their bodies
+    if (j.type === "free") return;
+    var v = new THREE.Vector3().fromArray(j.anchor);
+    lo.min(v); hi.max(v);
   });
   if (!isFinite(lo.x)) { lo.set(-1, -1, -1); hi.set(1, 1, 1); }
   var centre = lo.clone().add(hi).multiplyScalar(0.5);
@@ -85,6 +92,7 @@
   camera.updateProjectionMatrix();
   orbit.set(eye, target);
   var overlays = new TriboView.Overlays(view);
+  var elements = new TriboView.Elements(data, view);
   var plot = new TriboView.Plot(document.getElementById("plot"), view, function (t) { seek(t); });
 
   // Frame k with T[k] <= t < T[k+1] (binary search), and the fraction of the way to k+1.
@@ -123,6 +131,7 @@
     var at = locate(state.t);
     view.frame = at[0];
     place(at[0], at[1]);
+    elements.update();
     TriboView.movePlanes(built.planes, state.t);
     if (state.follow >= 0) {
       var bp = built.bodies[state.follow].group.position;
@@ -193,11 +202,15 @@
   function writeStatus() {
     var w = renderer.domElement.width, h = renderer.domElement.height;
     var screen = {}, colours = {};
-    built.bodies.forEach(function (b, i) {
-      var p = b.group.position.clone().project(camera);
-      screen[b.name] = [+((p.x + 1) / 2 * w).toFixed(2), +((1 - p.y) / 2 * h).toFixed(2)];
-      if (test) colours[b.name] = "#" + b.baseColour.getHexString();
+    function pixel(v) {
+      var p = v.clone().project(camera);
+      return [+((p.x + 1) / 2 * w).toFixed(2), +((1 - p.y) / 2 * h).toFixed(2)];
+    }
+    built.bodies.forEach(function (b) {
+      screen[b.name] = pixel(b.group.position);
+      colours[b.name] = "#" + b.baseColour.getHexString();
     });
+    var legendBox = legend ? legend.getBoundingClientRect() : { left: 0, top: 0, right: 0, bottom: 0 };
     statusEl.textContent = JSON.stringify({
       ready: true, errors: window.TRIBO_ERRORS, bodies: built.bodies.length,
       names: built.bodies.map(function (b) { return b.name; }),
@@ -206,6 +219,12 @@
       canvas: [w, h], window: [window.innerWidth, window.innerHeight],
       camera: { eye: camera.position.toArray(), target: orbit.target.toArray(), fov: camera.fov },
       screen: screen, colours: colours, actions: actions,
+      elements: elements.counts, drawn: elements.describe(pixel),
+      legend: legendEntries, legend_rect: [legendBox.left, legendBox.top, legendBox.right, legendBox.bottom],
+      plot: plot.axes, coil_radius: elements.coilRadius,
+      spring_colour: "#" + new THREE.Color(TriboView.colours.spring).getHexString(),
+      joint_colour: "#" + new THREE.Color(TriboView.colours.joint).getHexString(),
+      belt_colour: "#" + new THREE.Color(TriboView.colours.belt).getHexString(),
       frame_ms: stats(frameTimes), render_ms: stats(renderTimes), bench: bench
     });
   }
@@ -267,6 +286,50 @@
   else { byId("forces").disabled = true; byId("stickslip").disabled = true; }
   byId("notes").innerHTML = "";
   notes.concat(built.notes).forEach(function (n) { var d = document.createElement("div"); d.textContent = n; byId("notes").appendChild(d); });
+
+  // The legend: what each colour and marker means, for what this scene has.
+  var legend = byId("legend"), legendEntries = [];
+  function hex(c) { return "#" + new THREE.Color(c).getHexString(); }
+  function legendEntry(key, symbol, colours, label) {
+    var d = document.createElement("div");
+    d.className = "entry";
+    d.setAttribute("data-key", key);
+    colours.forEach(function (c) {
+      var sw = document.createElement("span");
+      sw.className = "swatch";
+      sw.setAttribute("data-colour", hex(c));
+      sw.style.color = hex(c);
+      sw.textContent = symbol;
+      d.appendChild(sw);
+    });
+    d.appendChild(document.createTextNode(" " + label));
+    legend.appendChild(d);
+    legendEntries.push({ key: key, colours: colours.map(hex), label: label });
+  }
+  var C = TriboView.colours;
+  var bodyColours = [];
+  built.bodies.forEach(function (b, i) {
+    // Only bodies drawn in their colour (a half-space is a textured plane).
+    var gs = data.scene.bodies[i].geometries;
+    if (gs.length && gs.every(function (g) { return g.shape === "halfspace"; })) return;
+    var c = hex(b.baseColour);
+    if (bodyColours.indexOf(c) < 0 && bodyColours.length < 8) bodyColours.push(c);
+  });
+  legendEntry("body", "\u25a0", bodyColours, built.bodies.length > 1 ? "bodies (each its own colour)" : "body");
+  if (overlays.hasStickSlip) {
+    legendEntry("sticking", "\u25a0", [C.sticking], "sticking: in contact, slip below the stick speed (stick/slip on)");
+    legendEntry("slipping", "\u25a0", [C.slipping], "slipping: in contact, slip above it (stick/slip on)");
+  }
+  if (overlays.hasForces) {
+    legendEntry("normal_force", "\u2191", [C.normal], "normal force (forces on)");
+    if (overlays.hasFriction) legendEntry("friction_force", "\u2192", [C.friction], "friction force (forces on)");
+  }
+  if (elements.counts.springs)
+    legendEntry("spring", "\u223f", [C.spring], "spring between its anchors (dots)");
+  if (elements.counts.joints)
+    legendEntry("joint", "\u25c6", [C.joint], "joint: anchor and axis");
+  if (elements.counts.belt_arrows)
+    legendEntry("belt", "\u27a4", [C.belt], "direction the surface (belt) moves");
 
   // URL hash settings.
   function setSelect(sel, names) {

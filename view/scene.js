@@ -1,9 +1,11 @@
 // The scene's geometry as three.js objects: one group per body holding its geometries at
 // their local poses (box, sphere, cylinder, capsule, cone, meshes), half-spaces as large
 // checkered planes whose texture slides with the body's surface velocity (a belt), and
-// lights. In test mode every body is drawn in one flat colour of its own and the planes
+// lights; the page's colours (bodies, contact states, springs, joints, surface arrows,
+// forces). In test mode every body is drawn in one flat colour of its own and the planes
 // in dark grey, so a screenshot can be searched for a body's pixels.
-// Not here: moving the bodies (page.js), overlays (overlays.js).
+// Not here: moving the bodies (page.js), overlays (overlays.js), springs, joints and surface
+// arrows (elements.js).
 var TriboView = window.TriboView || {};
 window.TriboView = TriboView;
 
@@ -12,8 +14,18 @@ TriboView.testColour = function (i) {
   return new THREE.Color().setHSL((i * 0.618033988749895 + 0.05) % 1, 1.0, 0.5);
 };
 
-TriboView.palette = [0x4e79a7, 0xf28e2b, 0xe15759, 0x76b7b2, 0x59a14f, 0xedc948, 0xb07aa1,
-                     0xff9da7, 0x9c755f, 0xbab0ac];
+// Body colours, chosen away from the contact-state colours below (no blue, no orange), so
+// that a body's own colour never reads as sticking or slipping.
+TriboView.palette = [0x59a14f, 0xb07aa1, 0x76b7b2, 0x9c755f, 0xff9da7, 0xbab0ac, 0x8cd17d,
+                     0xd37295];
+
+// What the page draws in which colour (the legend lists them): contact states (the
+// stick/slip overlay), springs and their anchors, joints, the direction a surface moves,
+// force arrows.
+TriboView.colours = {
+  sticking: 0x3366ff, slipping: 0xff8800, spring: 0xf2f2f2, joint: 0xffe14d, belt: 0xb6ff2e,
+  normal: 0x66ccff, friction: 0xff6666
+};
 
 TriboView.checkerTexture = function () {
   var c = document.createElement("canvas");

@@ -3,7 +3,9 @@
 // empty points grey) or a line for one; with more axes, the first two at the others' first
 // values. Hovering a point shows its row; clicking opens its replay page when the sweep
 // kept its trajectory. Writes #tribo-status (errors, points, each drawn cell's centre and
-// value) for tests. URL hash: metric=NAME. Not here: a run's replay (page.js).
+// value, each label's text and bounding box) for tests. URL hash: metric=NAME. The canvas
+// fits the window and its margins fit the labels' measured sizes, so that no label is cut.
+// Not here: a run's replay (page.js).
 (function () {
   var data = window.TRIBO_DATA, meta = data.meta;
   var statusEl = document.getElementById("tribo-status");
@@ -48,11 +50,40 @@
     var v = parseFloat(row[col[metric.value]]);
     return row[col.status] === "complete" && isFinite(v) ? v : null;
   }
-  var cells = [];
+  // The canvas fits the window (at most 900 x 560), so that nothing drawn falls outside it.
+  var panel = document.getElementById("sweep-panel");
+  canvas.width = Math.max(420, Math.min(900, window.innerWidth - 24));
+  canvas.height = Math.max(300, Math.min(560, window.innerHeight - panel.offsetHeight - 16));
+  var cells = [], labels = [];
+  // Writes text at (x, y) (rotated a quarter turn anticlockwise when `up`) and records its
+  // bounding box in canvas pixels, from the font's measured glyph extents.
+  function label(name, text, x, y, align, up) {
+    g.textAlign = align;
+    var m = g.measureText(text);
+    var l = m.actualBoundingBoxLeft, r = m.actualBoundingBoxRight;
+    var a = m.actualBoundingBoxAscent, d = m.actualBoundingBoxDescent;
+    if (up) {
+      g.save(); g.translate(x, y); g.rotate(-Math.PI / 2); g.fillText(text, 0, 0); g.restore();
+      labels.push({ name: name, text: text, box: [x - a, y - r, x + d, y + l] });
+    } else {
+      g.fillText(text, x, y);
+      labels.push({ name: name, text: text, box: [x - l, y - a, x + r, y + d] });
+    }
+    g.textAlign = "left";
+  }
+  // The largest font size (12 px down to 8 px) at which `text` is at most `room` wide.
+  function fit(text, room) {
+    for (var size = 12; size > 8; --size) {
+      g.font = size + "px sans-serif";
+      if (g.measureText(text).width <= room) return;
+    }
+    g.font = "8px sans-serif";
+  }
   function draw() {
-    var w = canvas.width, h = canvas.height, left = 70, right = w - 90, top = 20, bottom = h - 50;
+    var w = canvas.width, h = canvas.height, top = 20, bottom = h - 50, left = 70;
     g.clearRect(0, 0, w, h);
     g.font = "12px sans-serif";
+    labels = [];
     var shown = data.rows.filter(function (r) {
       for (var k = 2; k < axes.length; ++k) if (r[col[axes[k].name]] !== axes[k].values[0]) return false;
       return true;
@@ -60,6 +91,11 @@
     var vals = shown.map(value).filter(function (v) { return v !== null; });
     var lo = Math.min.apply(null, vals), hi = Math.max.apply(null, vals);
     var span = hi > lo ? hi - lo : 1;
+    var hiText = hi.toPrecision(4), loText = lo.toPrecision(4);
+    // Right of the map: a gap, the colour bar, its values and its label (the result's name,
+    // written upwards): the margin is what they measure.
+    var valueWidth = Math.max(g.measureText(hiText).width, g.measureText(loText).width);
+    var right = axes.length === 1 ? w - 20 : w - (20 + 20 + 6 + valueWidth + 10 + 16 + 8);
     cells = [];
     var ax = axes[0], nx = ax.values.length;
     if (axes.length === 1) {
@@ -78,9 +114,13 @@
       g.fillStyle = "#f28e2b";
       cells.forEach(function (c) { g.beginPath(); g.arc(c.x, c.y, 4, 0, 7); g.fill(); });
       g.fillStyle = "#ddd";
-      g.fillText(hi.toPrecision(4), 4, top + 4);
-      g.fillText(lo.toPrecision(4), 4, bottom);
-      g.fillText(ax.name + ": " + ax.values[0] + " .. " + ax.values[nx - 1], left, h - 20);
+      label("value_high", hiText, 4, top + 4, "left");
+      label("value_low", loText, 4, bottom, "left");
+      var lineLabel = ax.name + ": " + ax.values[0] + " .. " + ax.values[nx - 1];
+      fit(lineLabel, right - left);
+      label("x_axis", lineLabel, left, h - 20, "left");
+      g.font = "12px sans-serif";
+      label("y_axis", metric.value, left - 40, (top + bottom) / 2, "center", true);
     } else {
       var ay = axes[1], ny = ay.values.length;
       var cw = (right - left) / nx, ch = (bottom - top) / ny;
@@ -93,17 +133,24 @@
         cells.push({ point: r[0], x: x0 + cw / 2, y: y0 + ch / 2, w: cw, h: ch, value: v, row: r });
       });
       g.fillStyle = "#ddd";
-      g.fillText(ax.name + " " + ax.values[0] + " .. " + ax.values[nx - 1] + "  (right)", left, h - 30);
-      g.save(); g.translate(50, bottom); g.rotate(-Math.PI / 2);
-      g.fillText(ay.name + " " + ay.values[0] + " .. " + ay.values[ny - 1] + "  (up)", 0, 0);
-      g.restore();
+      var xText = ax.name + " " + ax.values[0] + " .. " + ax.values[nx - 1] + "  (right)";
+      fit(xText, right - left);
+      label("x_axis", xText, (left + right) / 2, bottom + 30, "center");
+      var yText = ay.name + " " + ay.values[0] + " .. " + ay.values[ny - 1] + "  (up)";
+      fit(yText, bottom - top);
+      label("y_axis", yText, left - 24, (top + bottom) / 2, "center", true);
+      g.font = "12px sans-serif";
+      var barX = right + 20;
       for (var s = 0; s <= 10; ++s) {  // colour bar
         g.fillStyle = colour(s / 10);
-        g.fillRect(right + 20, bottom - (s + 1) * (bottom - top) / 11, 20, (bottom - top) / 11 + 1);
+        g.fillRect(barX, bottom - (s + 1) * (bottom - top) / 11, 20, (bottom - top) / 11 + 1);
       }
       g.fillStyle = "#ddd";
-      g.fillText(hi.toPrecision(4), right + 44, top + 10);
-      g.fillText(lo.toPrecision(4), right + 44, bottom);
+      label("bar_high", hiText, barX + 26, top + 10, "left");
+      label("bar_low", loText, barX + 26, bottom, "left");
+      fit(metric.value, bottom - top);
+      label("bar", metric.value, barX + 26 + valueWidth + 10 + 12, (top + bottom) / 2, "center", true);
+      g.font = "12px sans-serif";
     }
     cells.forEach(function (c) {  // a white dot marks a point with a replay page
       if (!data.linked[c.point]) return;
@@ -113,6 +160,12 @@
       ready: true, errors: window.TRIBO_ERRORS, kind: "sweep", metric: metric.value,
       points: data.rows.length, linked: linkedCount, range: [lo, hi],
       offset: [canvas.getBoundingClientRect().left, canvas.getBoundingClientRect().top],
+      canvas: [canvas.width, canvas.height], window: [window.innerWidth, window.innerHeight],
+      labels: labels.map(function (l) {
+        var r = canvas.getBoundingClientRect();
+        return { name: l.name, text: l.text, canvas_box: l.box.map(function (v) { return +v.toFixed(2); }),
+                 page_box: [l.box[0] + r.left, l.box[1] + r.top, l.box[2] + r.left, l.box[3] + r.top].map(function (v) { return +v.toFixed(2); }) };
+      }),
       cells: cells.map(function (c) { return { point: c.point, x: c.x, y: c.y, value: c.value }; })
     });
   }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/file_read.hpp"
+#include "io/output_channels.hpp"
 #include "io/scene_loader.hpp"
 #include "io/scene_source.hpp"
 #include "io/urdf_reader.hpp"
@@ -119,6 +120,9 @@ ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOption
   for (const auto& c : traj.columns)
     if (c.size() > 3 && c.compare(c.size() - 3, 3, ".qw") == 0) info.orientation = true;
 
+  // Each column's unit ("" where it has none), for the plot's axis labels.
+  nlohmann::json units = nlohmann::json::array();
+  for (const auto& c : traj.columns) units.push_back(io::channelUnit(*scene.model, c));
   nlohmann::json meta = {
       {"kind", "run"},
       {"scene_path", scene_path},
@@ -130,7 +134,8 @@ ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOption
       {"rows", traj.rows},
       {"stride", traj.stride},
       {"frame_cap", options.frame_cap},
-      {"columns", traj.columns}};
+      {"columns", traj.columns},
+      {"units", units}};
   std::string data =
       "{\"meta\":" + meta.dump() + ",\"scene\":" + viewSceneJson(*scene.model) + ",\"series\":[";
   for (std::size_t c = 0; c < traj.values.size(); ++c) {

@@ -76,12 +76,53 @@ std::string viewSceneJson(const Model& model) {
                       {"geometries", nlohmann::json::array()}});
   nlohmann::json world = nlohmann::json::array();
   for (const Geometry& g : model.geometries) {
-    if (g.body.isWorld())
+    if (g.body.isWorld()) {
       world.push_back(geometryJson(g));
-    else
-      bodies[static_cast<std::size_t>(g.body.value)]["geometries"].push_back(geometryJson(g));
+      continue;
+    }
+    nlohmann::json j = geometryJson(g);
+    // The direction the surface moves in: the body's surface_velocity read in the
+    // geometry's frame (surfaceVelocityOf in core/model.hpp), here in the body frame.
+    const Vec3& v = model.bodies[static_cast<std::size_t>(g.body.value)].surface_velocity;
+    if (v.squaredNorm() > 0.0) j["surface_velocity"] = vec(g.local_pose.linear() * v);
+    bodies[static_cast<std::size_t>(g.body.value)]["geometries"].push_back(std::move(j));
   }
-  return nlohmann::json{{"bodies", bodies}, {"world", world}}.dump();
+  nlohmann::json springs = nlohmann::json::array();
+  for (const SpringDamper& s : model.springs)
+    springs.push_back({{"name", s.name},
+                       {"kind", "spring"},
+                       {"a", s.body_a.value},
+                       {"point_a", vec(s.point_a)},
+                       {"b", s.body_b.value},
+                       {"point_b", vec(s.point_b)},
+                       {"stiffness", s.stiffness},
+                       {"damping", s.damping},
+                       {"rest_length", s.rest_length}});
+  for (const Bushing& s : model.bushings)
+    springs.push_back({{"name", s.name},
+                       {"kind", "bushing"},
+                       {"a", s.body_a.value},
+                       {"point_a", vec(s.position_a)},
+                       {"b", s.body_b.value},
+                       {"point_b", vec(s.position_b)}});
+  nlohmann::json joints = nlohmann::json::array();
+  for (const Joint& j : model.joints) {
+    const Body& child = model.bodies[static_cast<std::size_t>(j.child.value)];
+    const Vec3 axis_in_child = j.axes_in_child.col(2);
+    joints.push_back({{"name", j.name},
+                      {"type", jointTypeName(j.type)},
+                      {"parent", j.parent.value},
+                      {"child", j.child.value},
+                      {"anchor_in_parent", vec(j.anchor_in_parent)},
+                      {"axis_in_parent", vec(j.axes_in_parent.col(2))},
+                      {"anchor_in_child", vec(j.anchor_in_child)},
+                      {"axis_in_child", vec(axis_in_child)},
+                      {"anchor", vec(child.position + child.orientation * j.anchor_in_child)},
+                      {"axis", vec(child.orientation * axis_in_child)}});
+  }
+  return nlohmann::json{
+      {"bodies", bodies}, {"world", world}, {"springs", springs}, {"joints", joints}}
+      .dump();
 }
 
 }  // namespace tribo::study

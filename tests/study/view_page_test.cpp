@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -109,6 +110,94 @@ TEST(ViewScene, BeltGeometryAsJson) {
   EXPECT_TRUE(j["world"].empty());
 }
 
+// Expects the three numbers of a JSON array.
+void expectVec(const nlohmann::json& j, double x, double y, double z, const std::string& what) {
+  ASSERT_EQ(j.size(), 3u) << what;
+  EXPECT_NEAR(j[0].get<double>(), x, 1e-12) << what;
+  EXPECT_NEAR(j[1].get<double>(), y, 1e-12) << what;
+  EXPECT_NEAR(j[2].get<double>(), z, 1e-12) << what;
+}
+
+TEST(ViewScene, BeltSpringJointAndSurfaceDirection) {
+  // The belt scene: the wall spring from the world point (-100, 0, z0) to the box's origin,
+  // the box on a planar_translation joint of normal y, the belt's surface moving along +x.
+  const io::Scene scene = io::loadScene(kBelt, {"v_b=2.5", "x0=0.3"});
+  const auto j = nlohmann::json::parse(viewSceneJson(*scene.model));
+  const double z0 = 0.05 - 10.0 * 9.81 / (4 * 2.5e5);  // the scene's z0 at m = 10
+  ASSERT_EQ(j["springs"].size(), 1u);
+  const auto& spring = j["springs"][0];
+  EXPECT_EQ(spring["name"], "wall_spring");
+  EXPECT_EQ(spring["kind"], "spring");
+  EXPECT_EQ(spring["a"], -1);  // the world
+  expectVec(spring["point_a"], -100.0, 0.0, z0, "wall anchor, world");
+  EXPECT_EQ(spring["b"], 1);  // the box
+  expectVec(spring["point_b"], 0.0, 0.0, 0.0, "the box's origin, box frame");
+  EXPECT_DOUBLE_EQ(spring["stiffness"].get<double>(), 300.0);
+  EXPECT_DOUBLE_EQ(spring["rest_length"].get<double>(), 100.0);
+  ASSERT_EQ(j["joints"].size(), 1u);
+  const auto& joint = j["joints"][0];
+  EXPECT_EQ(joint["name"], "box_on_belt");
+  EXPECT_EQ(joint["type"], "planar_translation");
+  EXPECT_EQ(joint["parent"], -1);
+  EXPECT_EQ(joint["child"], 1);
+  expectVec(joint["anchor"], 0.3, 0.0, z0, "joint anchor, world");
+  expectVec(joint["anchor_in_child"], 0.0, 0.0, 0.0, "joint anchor, box frame");
+  expectVec(joint["axis"], 0.0, 1.0, 0.0, "plane normal, world");
+  expectVec(joint["axis_in_parent"], 0.0, 1.0, 0.0, "plane normal, world frame");
+  const auto& plane = j["bodies"][0]["geometries"][0];
+  expectVec(plane["surface_velocity"], 2.5, 0.0, 0.0, "belt surface velocity");
+  EXPECT_FALSE(j["bodies"][1]["geometries"][0].contains("surface_velocity"));  // the box
+}
+
+TEST(ViewScene, AttachmentPointsAndAxesInBodyFrames) {
+  // A body turned a quarter turn about z at (1, 2, 3): a spring's points and a joint's
+  // anchor and axis, given in world coordinates at t = 0, come out in its frame, rotated back
+  // by -90 deg about z: (x, y, z) -> (y, -x, z). A bushing's frames are given in body frames.
+  const std::string yaml = R"(
+simulation: {duration: 0.01, time_step: 0.001}
+bodies:
+  - name: belt
+    kind: kinematic
+    surface_velocity: [2, 0, 0]
+    geometry: [{name: surface, shape: halfspace, rpy: [0, 0, 1.5707963267948966]}]
+  - name: arm
+    mass: 1
+    position: [1, 2, 3]
+    rpy: [0, 0, 1.5707963267948966]
+    geometry: [{name: arm_shape, shape: box, size: [0.2, 0.1, 0.1]}]
+joints:
+  - {name: hinge, type: revolute, parent: world, child: arm, anchor: [1, 2, 3.2], axis: [1, 0, 0]}
+springs:
+  - {name: tie, a: world, point_a: [0, 0, 1], b: arm, point_b: [1.5, 2, 3], stiffness: 10}
+bushings:
+  - {name: mount, a: world, b: arm, frame_a: {position: [0, 0, 2]},
+     frame_b: {position: [0.5, 0, 0]}, stiffness: [1, 1, 1]}
+contacts: []
+)";
+  const io::Scene scene = io::loadSceneFromString(yaml, "arm.yaml");
+  const auto j = nlohmann::json::parse(viewSceneJson(*scene.model));
+  ASSERT_EQ(j["springs"].size(), 2u);
+  const auto& tie = j["springs"][0];
+  EXPECT_EQ(tie["a"], -1);
+  expectVec(tie["point_a"], 0.0, 0.0, 1.0, "tie on the world");
+  EXPECT_EQ(tie["b"], 1);
+  expectVec(tie["point_b"], 0.0, -0.5, 0.0, "tie on the arm, arm frame");
+  const auto& mount = j["springs"][1];
+  EXPECT_EQ(mount["kind"], "bushing");
+  expectVec(mount["point_a"], 0.0, 0.0, 2.0, "mount on the world");
+  expectVec(mount["point_b"], 0.5, 0.0, 0.0, "mount on the arm, arm frame");
+  ASSERT_EQ(j["joints"].size(), 1u);
+  const auto& hinge = j["joints"][0];
+  EXPECT_EQ(hinge["type"], "revolute");
+  expectVec(hinge["anchor_in_child"], 0.0, 0.0, 0.2, "hinge anchor, arm frame");
+  expectVec(hinge["axis_in_child"], 0.0, -1.0, 0.0, "hinge axis, arm frame");
+  expectVec(hinge["anchor_in_parent"], 1.0, 2.0, 3.2, "hinge anchor, world");
+  expectVec(hinge["axis"], 1.0, 0.0, 0.0, "hinge axis, world");
+  // The belt's surface velocity read in its plane's frame, turned a quarter turn: along +y.
+  expectVec(j["bodies"][0]["geometries"][0]["surface_velocity"], 0.0, 2.0, 0.0,
+            "belt surface velocity, body frame");
+}
+
 TEST(ViewPage, WrittenFromARunWithItsParameters) {
   const fs::path d = freshDir("run");
   const io::Scene scene = io::loadScene(kBelt, {"duration=0.2", "v_b=2.5"});
@@ -129,6 +218,31 @@ TEST(ViewPage, WrittenFromARunWithItsParameters) {
   // The scene was reloaded with the run's parameters: the belt moves at 2.5 m/s.
   EXPECT_NE(page.find("\"surface_velocity\":[2.5,0.0,0.0]"), std::string::npos);
   EXPECT_EQ(page.find("/*TRIBO_"), std::string::npos);  // every template marker filled
+  // The page's data: each column's unit for the plot's axes, the spring for the drawing.
+  const std::string marker = "window.TRIBO_DATA = ";
+  const std::size_t from = page.find(marker);
+  ASSERT_NE(from, std::string::npos);
+  const std::size_t to = page.find(";</script>", from);
+  ASSERT_NE(to, std::string::npos);
+  const auto data =
+      nlohmann::json::parse(page.substr(from + marker.size(), to - from - marker.size()));
+  const auto& columns = data["meta"]["columns"];
+  const auto& units = data["meta"]["units"];
+  ASSERT_EQ(units.size(), columns.size());
+  const std::map<std::string, std::string> expected = {{"t", "s"},
+                                                       {"box.x", "m"},
+                                                       {"box.vx", "m/s"},
+                                                       {"box.normal_force", "N"},
+                                                       {"box.slip", "m/s"}};
+  std::size_t found = 0;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const auto e = expected.find(columns[c].get<std::string>());
+    if (e == expected.end()) continue;
+    EXPECT_EQ(units[c], e->second) << e->first;
+    ++found;
+  }
+  EXPECT_EQ(found, expected.size());
+  EXPECT_EQ(data["scene"]["springs"].size(), 1u);
 }
 
 TEST(ViewPage, WrittenFromAUrdfRobotRun) {

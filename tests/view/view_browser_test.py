@@ -4,11 +4,12 @@ page is opened in headless Chromium (software WebGL), and its DOM status and scr
 checked against expectations computed here from trajectory.csv and the camera parameters.
 
     view_browser_test.py TRIBO SOURCE_DIR WORK_DIR CASE
-CASE: loads | position | controls | orientation | orientation_note | sweep. Exit 0 pass, 1 fail, 77 skipped (no
-chromium). Not here: the page's own logic (view/*.js), the C++ generator's unit tests.
+CASE: loads | position | controls | orientation | orientation_note | sweep | elements. Exit 0
+pass, 1 fail, 77 skipped (no chromium, PIL or yaml). Not here: the page's own logic (view/*.js), the C++ generator's unit tests.
 """
 import csv
 import html
+import html.parser
 import json
 import math
 import os
@@ -39,9 +40,9 @@ def chromium():
     return None
 
 
-def browse(work, url, mode, width=900, height=700, budget=3000, out=None):
-    """Runs headless Chromium on url; mode 'dom' returns the page's status JSON, 'shot'
-    writes a screenshot to out."""
+def browse(work, url, mode, width=900, height=700, budget=3000, out=None, with_dom=False):
+    """Runs headless Chromium on url; mode 'dom' returns the page's status JSON (and the
+    dumped DOM with with_dom), 'shot' writes a screenshot to out."""
     profile = os.path.join(work, "profile-" + mode)
     args = [chromium()] + CHROMIUM_FLAGS + ["--user-data-dir=" + profile,
                                             "--window-size=%d,%d" % (width, height),
@@ -59,7 +60,7 @@ def browse(work, url, mode, width=900, height=700, budget=3000, out=None):
     start += len('<pre id="tribo-status">')
     text = html.unescape(dom[start:dom.find("</pre>", start)])
     try:
-        return json.loads(text)
+        return (json.loads(text), dom) if with_dom else json.loads(text)
     except ValueError:
         fail("status is not JSON: " + text[:500])
 
@@ -92,8 +93,9 @@ def interpolate(times, values, t):
     return values[-1] if t > times[-1] else values[0]
 
 
-def project(point, eye, target, fov_deg, width, height):
-    """Pixel of a world point through a perspective camera (z up), computed here."""
+def project(point, eye, target, fov_deg, width, height, with_depth=False):
+    """Pixel of a world point through a perspective camera (z up), computed here (and its
+    depth along the view direction)."""
     def sub(a, b): return [a[i] - b[i] for i in range(3)]
     def dot(a, b): return sum(a[i] * b[i] for i in range(3))
     def cross(a, b): return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
@@ -109,7 +111,8 @@ def project(point, eye, target, fov_deg, width, height):
     tan_half = math.tan(math.radians(fov_deg) / 2.0)
     ndc_x = dot(d, right) / (depth * tan_half * width / height)
     ndc_y = dot(d, up) / (depth * tan_half)
-    return ((ndc_x + 1.0) / 2.0 * width, (1.0 - ndc_y) / 2.0 * height)
+    pixel = ((ndc_x + 1.0) / 2.0 * width, (1.0 - ndc_y) / 2.0 * height)
+    return pixel + (depth,) if with_depth else pixel
 
 
 def centroid(png, colour, width, height, tolerance=40):
@@ -304,6 +307,38 @@ def case_sweep(tribo, source, work):
     by_brightness = [c["point"] for c in sorted(cells, key=brightness)]
     check(by_value == by_brightness, "cells brighter where amplitude_pp is larger: %s, %s" %
           (by_value, by_brightness))
+    check_labels(status, 1000, 800, "amplitude_pp")
+    # A small window and the result with the longest name: the labels still fit.
+    skip = {"point", "status", "warnings", "message", "mu_k", "v_b"}
+    def numeric(c):
+        try:
+            return all(math.isfinite(float(r[c])) for r in rows)
+        except (TypeError, ValueError):
+            return False
+    longest = max((c for c in rows[0] if c not in skip and numeric(c)), key=len)
+    status = browse(work, "file://" + out + "/view.html#metric=" + longest, "dom", width=640, height=480,
+                    budget=500)
+    check(status["errors"] == [] and status["metric"] == longest, "the page shows %s" % longest)
+    check_labels(status, 640, 480, longest)
+
+
+def check_labels(status, width, height, metric):
+    """Every label of the sweep page (the colour bar's among them) lies inside the canvas and
+    the viewport."""
+    # The viewport: the window's width, its height less the headless window's frame.
+    vw, vh = status["window"]
+    check(vw == width and height - 200 <= vh <= height, "viewport %d x %d" % (vw, vh))
+    labels = {l["name"]: l for l in status["labels"]}
+    check("bar" in labels and labels["bar"]["text"] == metric,
+          "the colour bar is labelled %s" % labels.get("bar", {}).get("text"))
+    cw, ch = status["canvas"]
+    for l in status["labels"]:
+        x0, y0, x1, y1 = l["canvas_box"]
+        check(0 <= x0 < x1 <= cw and 0 <= y0 < y1 <= ch,
+              "label %s %r at %s lies inside the %d x %d canvas" % (l["name"], l["text"], l["canvas_box"], cw, ch))
+        x0, y0, x1, y1 = l["page_box"]
+        check(0 <= x0 < x1 <= vw and 0 <= y0 < y1 <= vh,
+              "label %s at %s lies inside the %d x %d viewport" % (l["name"], l["page_box"], vw, vh))
 
 
 def case_orientation_note(tribo, source, work):
@@ -324,6 +359,215 @@ def case_orientation_note(tribo, source, work):
           (rows, status["frames"], status["stride"]))
 
 
+# What a column's unit is, by its suffix (docs/scene-format.md's channel table), for the
+# plot's axis label.
+UNITS = {"x": "m", "y": "m", "z": "m", "vx": "m/s", "vy": "m/s", "vz": "m/s", "slip": "m/s",
+         "normal_force": "N", "friction_force": "N"}
+
+
+class LegendParser(html.parser.HTMLParser):
+    """The legend's entries in the dumped DOM: data-key -> (swatch colours, text)."""
+    def __init__(self):
+        super().__init__()
+        self.entries, self.depth, self.key = {}, 0, None
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if a.get("id") == "legend":
+            self.depth = 1
+        elif self.depth:
+            self.depth += 1
+            if a.get("class") == "entry":
+                self.key = a.get("data-key")
+                self.entries[self.key] = ([], "")
+            elif a.get("class") == "swatch" and self.key:
+                self.entries[self.key][0].append(a.get("data-colour"))
+
+    def handle_endtag(self, tag):
+        if self.depth:
+            self.depth -= 1
+
+    def handle_data(self, data):
+        if self.depth and self.key:
+            colours, text = self.entries[self.key]
+            self.entries[self.key] = (colours, text + data)
+
+
+def rgb(hex_colour):
+    return tuple(int(hex_colour[i:i + 2], 16) for i in (1, 3, 5))
+
+
+def pixels_of(png, colour, tolerance=40):
+    from PIL import Image
+    image = Image.open(png).convert("RGB")
+    target = rgb(colour)
+    px = image.load()
+    return [(x + 0.5, y + 0.5) for y in range(image.size[1]) for x in range(image.size[0])
+            if sum(abs(px[x, y][i] - target[i]) for i in range(3)) <= tolerance]
+
+
+def distance_to_segment(p, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    u = max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)))
+    return math.hypot(p[0] - a[0] - u * dx, p[1] - a[1] - u * dy)
+
+
+def case_elements(tribo, source, work):
+    """The belt scene's spring (wall anchor to the box), the box's joint and the belt's
+    direction of motion are drawn where the scene and trajectory.csv put them; the legend
+    names what each colour means; the plot has tick values and units."""
+    import yaml
+    with open(os.path.join(source, "scenes", "belt.yaml")) as f:
+        scene = yaml.safe_load(f)
+    run = make_run(tribo, source, work, ["duration=2"])
+    traj = read_csv(os.path.join(run, "trajectory.csv"))
+    z0 = traj["box.z"][0]  # the scene's $z0: the box starts there
+    def value(v):  # a number or "$name" of the scene's parameters
+        if isinstance(v, str) and v.startswith("$"):
+            return z0 if v == "$z0" else float(scene["parameters"][v[1:]])
+        return float(v)
+    springs = scene["springs"]
+    joints = [j for j in scene["joints"] if j["type"] != "free"]
+    belt = next(b for b in scene["bodies"] if b["name"] == "belt")
+    v_belt = [value(v) for v in belt["surface_velocity"]]
+    check(len(springs) == 1 and springs[0]["a"] == "world" and springs[0]["b"] == "box",
+          "belt.yaml: one spring, from the world to the box")
+    wall = [value(v) for v in springs[0]["point_a"]]
+
+    # The full page: legend, plot, counts and places of what is drawn.
+    t = 1.0
+    status, dom = browse(work, "file://%s/view.html#paused&t=%g&plot=box.x" % (run, t), "dom",
+                         width=1000, height=700, budget=800, with_dom=True)
+    check(status["errors"] == [], "no errors: %s" % status["errors"])
+    expected = {"springs": len(springs), "anchors": 2 * len(springs), "joints": len(joints),
+                "belt_arrows": 1}
+    check(status["elements"] == expected, "drawn: %s, the scene has %s" % (status["elements"], expected))
+    box = [interpolate(traj["t"], traj["box." + a], t) for a in "xyz"]
+    drawn = status["drawn"]
+    s = drawn["springs"][0]
+    check(all(abs(s["a"][i] - wall[i]) < 1e-5 for i in range(3)),
+          "the spring's wall end at %s, belt.yaml's point_a %s" % (s["a"], wall))
+    # point_b is the box's initial origin: it moves with the box's origin.
+    check(all(abs(s["b"][i] - box[i]) < 1e-5 for i in range(3)),
+          "the spring's box end at %s follows the box to %s" % (s["b"], box))
+    j = drawn["joints"][0]
+    check(j["name"] == joints[0]["name"] and all(abs(j["anchor"][i] - box[i]) < 1e-5 for i in range(3)),
+          "the joint %s drawn at the box's origin %s" % (j["name"], j["anchor"]))
+    arrow = drawn["belt_arrows"][0]
+    d = [arrow["end"][i] - arrow["start"][i] for i in range(3)]
+    n = math.sqrt(sum(c * c for c in d))
+    vn = math.sqrt(sum(c * c for c in v_belt))
+    check(arrow["body"] == "belt" and all(abs(d[i] / n - v_belt[i] / vn) < 1e-6 for i in range(3)),
+          "the belt's arrow points along its surface velocity %s: %s" % (v_belt, [c / n for c in d]))
+    check(abs(arrow["start"][2]) < 0.02 and abs(arrow["end"][2]) < 0.02,
+          "the arrow lies on the belt's surface z = 0 (z %.4f)" % arrow["start"][2])
+
+    # Colours: no body looks like a contact state; the legend lists each meaning.
+    parser = LegendParser()
+    parser.feed(dom)
+    legend = parser.entries
+    for key in ("body", "sticking", "slipping", "spring", "joint", "belt"):
+        check(key in legend and legend[key][0] and legend[key][1].strip(),
+              "legend entry %s: %s" % (key, legend.get(key)))
+    check(status["colours"]["box"] in legend["body"][0], "the legend shows the box's colour %s" %
+          status["colours"]["box"])
+    for state in ("sticking", "slipping"):
+        c = rgb(legend[state][0][0])
+        for name, body_colour in status["colours"].items():
+            b = rgb(body_colour)
+            dist = math.sqrt(sum((c[i] - b[i]) ** 2 for i in range(3)))
+            check(dist > 120, "%s %s is far from %s's colour %s (RGB distance %.0f)" %
+                  (state, legend[state][0][0], name, body_colour, dist))
+    lx0, ly0, lx1, ly1 = status["legend_rect"]
+    check(0 <= lx0 < lx1 <= 1000 and 0 <= ly0 < ly1 <= 700, "the legend lies in the window: %s" %
+          status["legend_rect"])
+
+    # The plot: time ticks within the run, value ticks over box.x's range, units in the labels.
+    plot = status["plot"]
+    check(plot["x_label"] == "t [s]", "time axis label %r" % plot["x_label"])
+    check(plot["y_label"] == "box.x [%s]" % UNITS["x"], "value axis label %r" % plot["y_label"])
+    for axis, ticks, lo, hi in (("time", plot["x_ticks"], traj["t"][0], traj["t"][-1]),
+                                ("value", plot["y_ticks"], min(traj["box.x"]), max(traj["box.x"]))):
+        values = [k["value"] for k in ticks]
+        pixels = [k["px" if axis == "time" else "py"] for k in ticks]
+        steps = [values[i + 1] - values[i] for i in range(len(values) - 1)]
+        margin = 0.05 * (hi - lo)
+        check(len(values) >= 3 and all(lo - margin <= v <= hi + margin for v in values),
+              "%s ticks %s within [%.4g, %.4g]" % (axis, [k["text"] for k in ticks], lo, hi))
+        check(all(abs(float(k["text"]) - k["value"]) <= 1e-9 + 1e-6 * abs(steps[0]) for k in ticks),
+              "%s tick labels read as their values" % axis)
+        check(all(st > 0 and abs(st - steps[0]) < 1e-9 * steps[0] for st in steps),
+              "%s ticks evenly spaced by %g" % (axis, steps[0]))
+        scale = [(pixels[i + 1] - pixels[i]) / steps[i] for i in range(len(steps))]
+        check(all(abs(c - scale[0]) < 0.02 * abs(scale[0]) for c in scale) and
+              (scale[0] > 0) == (axis == "time"),
+              "%s ticks placed linearly (%.2f px per unit)" % (axis, scale[0]))
+
+    # The flat-colour page through a fixed camera: where the spring, joint and arrow are drawn.
+    width, height = 800, 600
+    eye, target, fov = [0.0, -0.6, 0.5], [-0.05, 0.0, 0.05], 45.0
+    url = "file://%s/view.html#test&paused&t=%g&size=%dx%d&camera=%s" % (
+        run, t, width, height, ",".join(str(v) for v in eye + target + [fov]))
+    status = browse(work, url, "dom", budget=500)
+    check(status["errors"] == [], "no errors in test mode")
+    png = os.path.join(work, "elements.png")
+    browse(work, url, "shot", budget=500, out=png)
+    s = status["drawn"]["springs"][0]
+    for end, point in (("screen_b", box), ("screen_a", wall)):
+        ex, ey = project(point, eye, target, fov, width, height)
+        sx, sy = s[end]
+        check(abs(sx - ex) < 0.5 + 1e-6 * abs(ex) and abs(sy - ey) < 0.5 + 1e-6 * abs(ey),
+              "the page projects the spring's end %s to (%.1f, %.1f), computed here (%.1f, %.1f)" %
+              (point, sx, sy, ex, ey))
+    # The coil: from the box's left face towards the wall, spring-coloured pixels lie along
+    # the line within the coil's radius on screen; and every spring-coloured pixel does.
+    white = pixels_of(png, status["spring_colour"])
+    focal = height / (2 * math.tan(math.radians(fov) / 2))
+    radius = status["coil_radius"]
+    samples = hits = 0
+    far = None
+    x = box[0] - 0.13
+    while True:
+        u = (box[0] - x) / (box[0] - wall[0])
+        p = [box[i] + u * (wall[i] - box[i]) for i in range(3)]
+        px, py, depth = project(p, eye, target, fov, width, height, with_depth=True)
+        if not (12 <= px <= width - 12 and 12 <= py <= height - 12):
+            break
+        tol = radius * focal / depth + 2.5
+        samples += 1
+        hits += any(abs(q[0] - px) <= tol and abs(q[1] - py) <= tol and
+                    math.hypot(q[0] - px, q[1] - py) <= tol for q in white)
+        far = (px, py, tol)
+        x -= 0.02
+    check(samples >= 10 and hits >= 0.9 * samples,
+          "the coil drawn at %d of %d points along the spring's line" % (hits, samples))
+    near = project(box, eye, target, fov, width, height)
+    off = [q for q in white if distance_to_segment(q, near, far[:2]) > far[2] + 12]
+    check(len(white) > 50 and len(off) <= 0.02 * len(white),
+          "%d of %d spring-coloured pixels off the spring's line" % (len(off), len(white)))
+    # The joint's marker over the box's origin.
+    jx, jy = project(box, eye, target, fov, width, height)
+    yellow = [q for q in pixels_of(png, status["joint_colour"]) if math.hypot(q[0] - jx, q[1] - jy) < 40]
+    check(len(yellow) > 20, "the joint's marker: %d joint-coloured pixels around (%.0f, %.0f)" %
+          (len(yellow), jx, jy))
+    # The belt's arrow: its pixels along the projected direction of the belt's motion.
+    a = status["drawn"]["belt_arrows"][0]
+    a0 = project(a["start"], eye, target, fov, width, height)
+    a1 = project(a["end"], eye, target, fov, width, height)
+    green = pixels_of(png, status["belt_colour"])
+    check(len(green) > 50, "the arrow covers %d pixels" % len(green))
+    along = [((q[0] - a0[0]) * (a1[0] - a0[0]) + (q[1] - a0[1]) * (a1[1] - a0[1])) /
+             ((a1[0] - a0[0]) ** 2 + (a1[1] - a0[1]) ** 2) for q in green]
+    off = [q for q in green if distance_to_segment(q, a0, a1) > 12]
+    check(not off and min(along) > -0.05 and max(along) < 1.05,
+          "the arrow's pixels lie on the projected belt direction from (%.0f, %.0f) to (%.0f, %.0f)"
+          % (a0[0], a0[1], a1[0], a1[1]))
+    head = sum(1 for u in along if u > 0.75)
+    tail = sum(1 for u in along if u < 0.25)
+    check(head > tail, "the arrow's head (%d px) at the end the belt moves to (tail %d px)" %
+          (head, tail))
+
+
 def main():
     tribo, source, work, case = sys.argv[1:5]
     if not chromium():
@@ -331,13 +575,16 @@ def main():
         sys.exit(77)
     try:
         import PIL  # noqa: F401
+        import yaml  # noqa: F401
     except ImportError:
-        print("SKIPPED: no PIL for /usr/bin/python3 (Debian python3-pil; scripts/setup.sh)")
+        print("SKIPPED: no PIL or yaml for /usr/bin/python3 (Debian python3-pil, python3-yaml; "
+              "scripts/setup.sh)")
         sys.exit(77)
     work = os.path.abspath(work)
     os.makedirs(work, exist_ok=True)
     {"loads": case_loads, "position": case_position, "controls": case_controls,
-     "orientation_note": case_orientation_note, "orientation": case_orientation, "sweep": case_sweep}[case](os.path.abspath(tribo), source, work)
+     "orientation_note": case_orientation_note, "orientation": case_orientation, "sweep": case_sweep,
+     "elements": case_elements}[case](os.path.abspath(tribo), source, work)
     print("PASS")
 
 
