@@ -13,6 +13,12 @@
 //     (block-sparse Cholesky in an approximate-minimum-degree order, core/block_cholesky.hpp);
 //     kAuto picks sparse from `sparse_threshold` equations on (the crossover measured by
 //     bench/core/chain_bench.cpp).
+//   drift: the largest |Phi| at a step's end (m for a distance, rad or - for an angle or a
+//     perpendicularity) above `drift_warning` is a warning after the run naming the joint,
+//     above `drift_stop` a stop naming the joint's child body (quantity "constraint_drift"):
+//     a joint that has come apart by a tenth of a metre is not the mechanism any more, however
+//     the energy looks. 1 cm is where a joint's gap is seen in the replay; the validating
+//     scenes drift 1e-9 (rk4) to 4e-3 (semi-implicit Euler), docs/joints.md.
 // Not here: the Baumgarte gains (SimulationOptions), the solve itself.
 #pragma once
 
@@ -36,6 +42,8 @@ struct ConstraintOptions {
   // docs/joints.md): dense and sparse tie at one joint (5 equations); sparse is 8% faster at
   // 10, 26% at 20 and 2.4 times at Andrews' 41 equations in closed loops.
   int sparse_threshold = 8;
+  double drift_warning = 1e-2;  // [m or rad]
+  double drift_stop = 0.1;      // [m or rad]
 };
 
 // Scene names: "error" / "remove"; "auto" / "dense" / "sparse". Throw std::invalid_argument.

@@ -39,6 +39,7 @@ ConstraintSolver::ConstraintSolver(const Model& model)
 void ConstraintSolver::solve(const State& state, Workspace& ws) {
   ws.max_constraint_error = 0.0;
   ws.max_constraint_rate_error = 0.0;
+  ws.max_constraint_joint = -1;
   for (auto& w : ws.constraint_wrench) w.setZero();
   const int m = equationCount();
   if (m == 0) return;
@@ -50,7 +51,10 @@ void ConstraintSolver::solve(const State& state, Workspace& ws) {
     const RowValue& v = values_[r];
     jacobian_.setRow(r, v);
     rhs_(r) = -v.bias - 2.0 * alpha * v.phi_dot - beta * beta * v.phi;
-    ws.max_constraint_error = std::max(ws.max_constraint_error, std::abs(v.phi));
+    if (std::abs(v.phi) > ws.max_constraint_error) {
+      ws.max_constraint_error = std::abs(v.phi);
+      ws.max_constraint_joint = rows_[r].joint;
+    }
     ws.max_constraint_rate_error = std::max(ws.max_constraint_rate_error, std::abs(v.phi_dot));
   }
   jacobian_.computeMassWeighted(inv_mass_, ws.inv_inertia_world);

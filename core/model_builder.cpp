@@ -283,6 +283,10 @@ std::shared_ptr<const Model> ModelBuilder::build() const {
   if (!finite(o.gravity)) throw ModelError("options: gravity must be finite");
   if (!(o.baumgarte_alpha >= 0.0) || !(o.baumgarte_beta >= 0.0))
     throw ModelError("options: Baumgarte alpha and beta must be >= 0");
+  if (!(o.constraints.drift_warning > 0.0) || !(o.constraints.drift_stop > 0.0))
+    throw ModelError("options: constraint drift_warning and drift_stop must be > 0 (got " +
+                     numberText(o.constraints.drift_warning) + ", " +
+                     numberText(o.constraints.drift_stop) + ")");
   if (!std::isfinite(o.relative_tolerance) || o.relative_tolerance <= 0.0 ||
       o.relative_tolerance >= 1.0)
     throw ModelError("options: relative tolerance must be in (0, 1) (got " +

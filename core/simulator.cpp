@@ -185,7 +185,22 @@ StepStatus Simulator::check() {
   }
   stats_.contact_count = static_cast<int>(ws.contacts.size());
   stats_.max_penetration = std::max(stats_.max_penetration, ws.max_penetration);
-  stats_.max_constraint_error = std::max(stats_.max_constraint_error, ws.max_constraint_error);
+  if (ws.max_constraint_error > stats_.max_constraint_error) {
+    stats_.max_constraint_error = ws.max_constraint_error;
+    stats_.max_constraint_joint = ws.max_constraint_joint;
+  }
+  if (ws.max_constraint_error > m.options.constraints.drift_stop && ws.max_constraint_joint >= 0) {
+    const Joint& j = m.joints[static_cast<std::size_t>(ws.max_constraint_joint)];
+    const std::string body = m.bodies[(j.child.isWorld() ? j.parent : j.child).value].name;
+    std::ostringstream s;
+    s << "joint '" << j.name << "' came apart: its constraint error |Phi| is "
+      << ws.max_constraint_error
+      << " (m or rad), more than constraints.drift_stop = " << m.options.constraints.drift_stop
+      << " (body '" << body
+      << "'; a step too large for the mechanism, or a pose near a singular one; "
+         "constraints: {projection: true} holds the joints)";
+    return failed(body, "constraint_drift", s.str());
+  }
   stats_.max_constraint_rate_error =
       std::max(stats_.max_constraint_rate_error, ws.max_constraint_rate_error);
   return {};

@@ -47,6 +47,7 @@ struct StepStats {
   int contact_count = 0;
   double max_penetration = 0.0;            // over the run [m]
   double max_constraint_error = 0.0;       // over the run, max |Phi|
+  int max_constraint_joint = -1;           // where it was (-1: no joint)
   double max_constraint_rate_error = 0.0;  // over the run, max |J v|
   // Integrator work (core/integrator.hpp), and force evaluations in all (the integrator's
   // plus the simulator's one per step at the new state).

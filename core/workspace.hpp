@@ -54,6 +54,7 @@ struct Workspace {
   // Constraint measures at the evaluated state (solveConstraints).
   double max_constraint_error = 0.0;       // max |Phi| [m or -]
   double max_constraint_rate_error = 0.0;  // max |J v|
+  int max_constraint_joint = -1;           // the joint of the row with max |Phi| (-1: none)
   double max_penetration = 0.0;            // contactKinematics: deepest contact [m]
   // solveConstraints: joint friction under reaction load (core/joint_forces.hpp): false when
   // its fixed-point iteration stopped at the cap before the friction torques settled.

@@ -45,6 +45,8 @@ void Loader::readConstraintOptions(const Value& v, ConstraintOptions& c) {
   if (auto x = m.get("solver"))
     c.solver = guarded(*x, [&] { return constraintSolverFromName(x->text()); });
   if (auto x = m.get("sparse_threshold")) c.sparse_threshold = x->integer(1);
+  if (auto x = m.get("drift_warning")) c.drift_warning = x->positive();
+  if (auto x = m.get("drift_stop")) c.drift_stop = x->positive();
 }
 
 void Loader::readJoint(const Value& v) {

@@ -29,8 +29,9 @@ inline const List kCollision{
     "broadphase",          "closed_form_box_halfspace", "closed_form_primitives",
     "polyhedron_manifold", "max_points_per_pair",       "joined_bodies_collide",
     "match_radius",        "query_time_limit"};
-inline const List kConstraints{"projection", "tolerance", "iterations",      "project_initial",
-                               "redundant",  "solver",    "sparse_threshold"};
+inline const List kConstraints{"projection",       "tolerance",     "iterations",
+                               "project_initial",  "redundant",     "solver",
+                               "sparse_threshold", "drift_warning", "drift_stop"};
 inline const List kBody{"name",        "kind", "mass",     "inertia",          "position",
                         "orientation", "rpy",  "velocity", "angular_velocity", "surface_velocity",
                         "geometry"};

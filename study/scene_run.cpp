@@ -232,6 +232,17 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
     result.warnings.push_back(w.str());
   }
   if (result.stats.joint_held > 0) result.warnings.push_back(heldJointWarning(model, result));
+  if (result.stats.max_constraint_error > model.options.constraints.drift_warning &&
+      result.stats.max_constraint_joint >= 0) {
+    const Joint& j = model.joints[static_cast<std::size_t>(result.stats.max_constraint_joint)];
+    std::ostringstream w;
+    w << "joint '" << j.name << "' drifted: its constraint error |Phi| reached "
+      << result.stats.max_constraint_error << " (m or rad), more than constraints.drift_warning = "
+      << model.options.constraints.drift_warning
+      << ": positions along it are off by that much (constraints: {projection: true} holds "
+         "the joints; a smaller step reduces the drift)";
+    result.warnings.push_back(w.str());
+  }
   if (result.stats.deep_penetrations > 0) {
     const Geometry& g = model.geometries[result.stats.deepest_geometry];
     const std::string body = g.body.isWorld() ? "world" : model.bodies[g.body.value].name;
