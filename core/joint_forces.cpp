@@ -59,7 +59,25 @@ double coordinateInertia(const Model& model, int joint, std::span<const int> joi
                 : model.bodies[j.parent.value].mass;
   } else if (below->type == j.type) {
     const auto [a2, axis2] = pose(j.parent, below->anchor_in_child, below->axes_in_child.col(2));
-    if (std::abs(axis2.dot(axis)) > 0.99) p = about(j.parent, a2, axis2);
+    if (std::abs(axis2.dot(axis)) > 0.99) {
+      p = about(j.parent, a2, axis2);
+    } else if (angular && dynamic(below->parent)) {
+      // Three revolute joints in series (a gimbal, as URDF writes a ball joint through two
+      // massless links): turning the middle joint swings this axis around the middle axis, and
+      // where it lines up with the first joint's axis (gimbal lock) the parent and the middle
+      // link turn together about it against the first joint alone. That happens when both
+      // axes make the same angle with the middle one. The parent then gives way as in a chain
+      // of fingers, whatever the pose at the start: near lock a damper on this joint acts on
+      // the two links' own inertia, and sized for the child's it would make the step unstable.
+      const int first_index = joint_of_child[static_cast<std::size_t>(below->parent.value)];
+      if (first_index >= 0 && model.joints[static_cast<std::size_t>(first_index)].type == j.type) {
+        const Joint& first = model.joints[static_cast<std::size_t>(first_index)];
+        const Vec3 axis1 =
+            pose(below->parent, first.anchor_in_child, first.axes_in_child.col(2)).second;
+        if (std::abs(std::abs(axis1.dot(axis2)) - std::abs(axis.dot(axis2))) < 0.01)
+          p = about(j.parent, anchor, axis);
+      }
+    }
   }
   return std::isinf(p) ? c : p * c / (p + c);
 }

@@ -52,7 +52,9 @@ namespace tribo {
 // mass's distance from the axis); prismatic, the child's mass. The parent counts as held
 // (bodies beyond the child only add inertia) unless it gives way about the same axis: a
 // free parent, or one on a joint of the same type along a parallel axis (a chain of light
-// fingers), makes it the pair's reduced inertia I_p I_c / (I_p + I_c).
+// fingers), or can come to (the last of three revolute joints whose first and last axes
+// make the same angle with the middle one: at gimbal lock they line up), makes it the
+// pair's reduced inertia I_p I_c / (I_p + I_c).
 double coordinateInertia(const Model& model, int joint, std::span<const int> joint_of_child);
 // The angle q (wrapped to (-pi, pi]) as `limit` reads it: the turn nearest the middle of its
 // range, so a range across +-pi (a shoulder's [-1.3, 4.45] rad) is continuous where the

@@ -5,6 +5,7 @@
 // (scenes/robots/pendulum.urdf).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +73,76 @@ TEST_P(UrdfOnGround, OneSecondWithoutNanOrEnergyGain) {
   }
   EXPECT_LE(mechanicalEnergy(m, sim.state()), e0 + 1e-6 * scale) << file;
   EXPECT_NEAR(sim.state().time, 1.0, m.options.time_step);
+}
+
+// Runs a URDF at tribo run's automatic settings (rk4 at the automatic step, the given
+// duration) and checks that it completes and that kinetic plus gravitational energy never
+// rises above its start: nothing drives the robot, joint dampers and the ground only take.
+void runsWithoutEnergyGain(const std::string& path, const std::string& duration) {
+  const io::Scene scene = io::sceneFromUrdf(path, {corpus().string()}, {"duration=" + duration});
+  const Model& m = *scene.model;
+  ASSERT_EQ(m.options.integrator, IntegratorType::kRk4);
+  Simulator sim(scene.model);
+  const double e0 = mechanicalEnergy(m, sim.state());
+  double scale = 1e-3;  // J: m g times 1 m, for the tolerance
+  for (const auto& b : m.bodies) scale += b.kind == BodyKind::kDynamic ? b.mass * 9.81 : 0.0;
+  double highest = e0;
+  const long steps = std::lround(m.options.duration / m.options.time_step);
+  for (long i = 0; i < steps; ++i) {
+    const StepStatus status = sim.step();
+    ASSERT_TRUE(status.ok) << path << ": " << status.message;
+    highest = std::max(highest, mechanicalEnergy(m, sim.state()));
+  }
+  EXPECT_LE(highest, e0 + 1e-6 * scale) << path;
+  EXPECT_NEAR(sim.state().time, m.options.duration, m.options.time_step);
+}
+
+// The humanoid ragdoll: hips of three damped revolute joints through two massless links (a
+// gimbal). Falling, both hips pass close to gimbal lock after 1.3 s, where the two links
+// turn together against the hip dampers; the dampers' cap (core/joint_forces.hpp) must see
+// the links' inertia there, or the automatic rk4 step is unstable and the run stops.
+TEST(UrdfOnGroundLonger, HumanoidRunsThreeSecondsAtTheAutomaticStep) {
+  TRIBO_REQUIRE_URDF_CORPUS(folder);
+  runsWithoutEnergyGain((corpus() / "bullet3/humanoid.urdf").string(), "3");
+}
+
+// The class, generated: a heavy body on the world, a leg hung from it by revolute joints
+// about x, z and y through two massless links, each with a damper as strong as the leg's
+// own inertia allows at the step; the leg's centre of mass off every axis so that gravity
+// swings it through many poses, and the middle joint starting 0.05 rad from gimbal lock.
+TEST(UrdfOnGroundLonger, DampedGimbalThroughMasslessLinksNearLock) {
+  const fs::path dir = fs::temp_directory_path() / "tribo_urdf_gimbal";
+  fs::create_directories(dir);
+  for (const double mass : {0.05, 1.0, 5.0, 40.0}) {
+    const double length = 0.3, i_leg = mass * length * length / 12;
+    const auto num = [](double v) { return std::to_string(v); };
+    const auto inertial = [&](double m, double i, const std::string& xyz) {
+      return "<inertial><origin xyz=\"" + xyz + "\"/><mass value=\"" + num(m) +
+             "\"/><inertia ixx=\"" + num(i) + "\" ixy=\"0\" ixz=\"0\" iyy=\"" + num(i) +
+             "\" iyz=\"0\" izz=\"" + num(i) + "\"/></inertial>";
+    };
+    const auto joint = [&](const std::string& name, const std::string& parent,
+                           const std::string& child, const std::string& axis,
+                           const std::string& rpy) {
+      // Damping I_leg / (2 h) at the 1 ms step: the most the leg alone would be held to.
+      return "<joint name=\"" + name + "\" type=\"continuous\"><parent link=\"" + parent +
+             "\"/><child link=\"" + child + "\"/><origin rpy=\"" + rpy + "\"/><axis xyz=\"" + axis +
+             "\"/><dynamics damping=\"" + num(i_leg / 2e-3) + "\"/></joint>";
+    };
+    const std::string robot =
+        "<robot name=\"gimbal\"><link name=\"base\">" + inertial(4 * mass, mass, "0 0 0") +
+        "</link><joint name=\"mount\" type=\"fixed\"><parent link=\"world\"/><child "
+        "link=\"base\"/><origin xyz=\"0 0 2\"/></joint><link name=\"l1\"/><link "
+        "name=\"l2\"/><link name=\"leg\">" +
+        inertial(mass, i_leg, "0.05 0.08 -0.15") + "</link>" +
+        joint("hip_x", "base", "l1", "1 0 0", "0 0 0") +
+        joint("hip_z", "l1", "l2", "0 0 1", "0 0 1.5208") +
+        joint("hip_y", "l2", "leg", "0 1 0", "0 0 0") + "</robot>";
+    const fs::path path = dir / "gimbal.urdf";
+    std::ofstream(path) << robot;
+    SCOPED_TRACE(mass);
+    runsWithoutEnergyGain(path.string(), "2");
+  }
 }
 
 std::vector<std::string> corpusFiles() {
