@@ -215,6 +215,37 @@ std::string directEffectNote(const std::string& who, const friction::DynamicFric
   return note.str();
 }
 
+// Semi-implicit Euler advances a dynamic law's state from the step's starting slip
+// (DynamicFrictionLaw::stableStep at frozen slip v_n; stuck, a bristle moves with the slip:
+// z_{n+1} = z_n + h v_n) while the velocity takes the force at z_n. On the presliding mode
+// y'' + c y' + k y = 0 (k, c: the bristles' stiffness and damping over the mass) the one-step
+// matrix on (v, y) is then explicit Euler's, not semi-implicit Euler's:
+//   [v+]   [1 - h c   -h k] [v]
+//   [y+] = [h          1  ] [y],    det = 1 - h (c - h k),  trace = 2 - h c,
+// so the update cancels h k of the damping c (semi-implicit Euler's own det is 1 - h c). Its
+// spectral radius stays <= 1 for h <= c / k (Jury: det <= 1, and 1 + det >= |trace|, which
+// overdamped, c^2 > 4 k, is h <= 4 / (c + sqrt(c^2 - 4 k)) >= 2 / c, never below semi-implicit
+// Euler's own limit, 2x2 above); the step keeps half of the damping, h k <= c / 2, as the
+// creep a ringing bristle leaves (friction/lugre_law.hpp: a stuck contact drifts while it
+// moves) grows as the inverse of the ring's decay rate c - h k (a disc of 0.01 kg m^2 on a
+// lugre pin, I_q / (N r^2) = 10 s^2/m: near h = c / k its ring decays 15 times slower than at
+// small steps and at 0.9 c / k it creeps 2.1 times the reference's 18 um, at c / (2 k) 1.3
+// times; measured in tests/core/stability_laws_test.cpp: off at 1.08 c / (2 k)).
+// In units of the law: h <= sigma_d / (2 sigma0), whatever the load and mass (1.6 ms for
+// lugre's defaults); it binds only an underdamped mode (c^2 < 4 k: c / (2 k) < 2 / c). An
+// undamped bristle (dahl, sigma_d = 0) rings with growing amplitude at every step until its
+// hysteresis holds it: no step is stable in this sense (a note, not a limit).
+double explicitStateStep(const friction::DynamicFrictionLaw::Presliding& p) {
+  return p.damping / (2.0 * p.stiffness);
+}
+
+std::string explicitStateNote(const std::string& who, const friction::DynamicFrictionLaw& law) {
+  return who + ": friction law " + std::string(law.name()) +
+         " has an undamped presliding spring; semi-implicit Euler advances its state from the "
+         "step's starting slip, which feeds its ring at any step (the law's hysteresis bounds "
+         "it): its creep converges only at first order in the step (use rk4)";
+}
+
 }  // namespace
 
 double stableStep(IntegratorType integrator, double k_over_m, double c_over_m) {
@@ -249,6 +280,10 @@ StabilityReport estimateStableStep(const Model& model) {
     const auto [it, added] = bounded.try_emplace({k_over_m, c_over_m}, 0.0);
     if (added) it->second = stableStep(integrator, k_over_m, c_over_m);
     if (it->second < report.limit.max_step) report.limit = {it->second, element()};
+  };
+  // A bound found otherwise (the explicit bristle update below).
+  auto considerStep = [&](double step, const auto& element) {
+    if (step < report.limit.max_step) report.limit = {step, element()};
   };
   std::vector<bool> noted(model.materials.size(), false);  // one note per material
   double drive_speed = 0.0;  // fastest prescribed motion: kinematic bodies, moving surfaces
@@ -336,6 +371,13 @@ StabilityReport estimateStableStep(const Model& model) {
           return who() + " friction (" + std::string(friction_law.name()) + " presliding)";
         });
         consider_yaw(p.stiffness * load, p.damping * load, " presliding");
+        if (integrator == IntegratorType::kSemiImplicitEuler && p.damping > 0.0)
+          considerStep(explicitStateStep(p), [&] {
+            return who() + " friction (" + std::string(friction_law.name()) +
+                   " presliding, state update from the starting slip)";
+          });
+        else if (integrator == IntegratorType::kSemiImplicitEuler && first_of_material)
+          report.notes.push_back(explicitStateNote(who(), *dynamic));
       }
       if (integrator != IntegratorType::kSemiImplicitEuler) {
         const double v = kSlipSpeedFactor * std::max(drive_speed, friction_law.stickSpeed());
@@ -451,19 +493,25 @@ StabilityReport estimateStableStep(const Model& model) {
                                           double per_inertia, const auto& who) {
     if (!(per_inertia > 0.0)) return;
     const friction::DynamicFrictionLaw::Presliding p = law.presliding();
-    if (p.stiffness > 0.0)
+    if (p.stiffness > 0.0) {
       consider(p.stiffness * per_inertia, p.damping * per_inertia,
                [&] { return who("presliding"); });
-    // The state's decay also for semi-implicit Euler: its exact update at frozen slip did not
-    // keep a disc of 0.01 kg m^2 on a lugre pin (I_q / (N r^2) = 10 s^2/m) stable up to the
-    // presliding limit (measured: off at 0.14 of it, near this mode's limit).
+      // Semi-implicit Euler's state update from the starting slip (explicitStateStep).
+      if (integrator == IntegratorType::kSemiImplicitEuler && p.damping > 0.0)
+        considerStep(explicitStateStep(p),
+                     [&] { return who("presliding, state update from the starting slip"); });
+      else if (integrator == IntegratorType::kSemiImplicitEuler)
+        report.notes.push_back(explicitStateNote(who("presliding"), law));
+    }
+    // The state's decay, as on a contact (not for semi-implicit Euler: exact at frozen slip).
     const double v_ref = std::max(drive_speed, law.stickSpeed());
     const double v = kSlipSpeedFactor * v_ref;
-    consider(0.0, law.stateStiffness(v), [&] {
-      std::ostringstream e;
-      e << "internal state at slip speed " << v << " m/s";
-      return who(e.str().c_str());
-    });
+    if (integrator != IntegratorType::kSemiImplicitEuler)
+      consider(0.0, law.stateStiffness(v), [&] {
+        std::ostringstream e;
+        e << "internal state at slip speed " << v << " m/s";
+        return who(e.str().c_str());
+      });
     const double direct = law.directSlope(v_ref);
     if (direct > 0.0 && std::isfinite(direct)) {
       consider(0.0, direct * per_inertia, [&] {

@@ -62,8 +62,12 @@
 //                  c = mu(v_ref) / v_ref W (mu0 / a = 20 times the direct effect for the
 //                  defaults), for a body free to slide across the contact plane (not on a
 //                  slide or planar_translation joint), and in yaw (with the larger of the two,
-//                  for a body free to turn); and, except for semi-implicit Euler (whose state
-//                  update is exact at frozen slip), the internal state's decay rate as a
+//                  for a body free to turn); for semi-implicit Euler, whose state update
+//                  starts from the step's slip (explicit Euler on the bristle), the bristle
+//                  keeps half its damping: h <= sigma_d / (2 sigma0) (explicitStateStep in
+//                  core/stability.cpp; none for an undamped bristle, dahl: a note); and, except
+//                  for semi-implicit Euler (whose state update is exact at frozen slip), the
+//                  internal state's decay rate as a
 //                  first-order mode (k = 0, c/m = lambda, DynamicFrictionLaw::stateStiffness)
 //                  at slip speed 4 v_ref, v_drive the fastest kinematic body, moving surface
 //                  or slider's drive (prismatic): a driven stick-slip slips at up to 3.5
@@ -93,16 +97,20 @@
 //                  the joint forces hold it (so it never bounds the step there; for dopri5 it
 //                  does); a dynamic law's friction (not held: its force is not capped) as on a
 //                  contact with N r^2 for the load W, on the same m: presliding k = sigma0 N r^2,
-//                  c = sigma_d N r^2; direct effect c = mu_d(v_ref) N r^2; the state's decay
-//                  c/m = lambda at 4 v_ref, here for semi-implicit Euler too (measured: on
-//                  a heavy disc, I_q / (N r^2) = 10 s^2/m, lugre and elasto_plastic went off
-//                  at 0.14-0.18 of the presliding limit, near this mode's).
-// A user law (Python) is bounded by what it states: its curve's sampled slope, its presliding
-// and state_stiffness (0 when left out); it has no direct effect here. Measured in the class
+//                  c = sigma_d N r^2, and for semi-implicit Euler h <= sigma_d / (2 sigma0);
+//                  direct effect c = mu_d(v_ref) N r^2; the state's decay c/m = lambda at
+//                  4 v_ref (not for semi-implicit Euler). On a heavy disc, I_q / (N r^2) =
+//                  10 s^2/m, the bristle mode is underdamped and the explicit state update
+//                  sets semi-implicit Euler's limit (measured: lugre off at 1.08 times it).
+// A user law (Python) is bounded by what it states: its curve's sampled slope, its presliding,
+// state_stiffness and direct_slope (0 when left out: the direct effect is the slope with the
+// state held, which the steady curve mu(v) does not show). Measured in the class
 // (tests/core/stability_laws_test.cpp, docs/speed-accuracy.md): at 0.9 of the estimate each
-// law agrees with a tenth of the step, and it stops agreeing within 0.86-4 times it; dahl,
-// whose undamped presliding ratchets a body along by the method's numerical damping, has no
-// converged reference there.
+// law agrees with a tenth of the step, and it stops agreeing within 1-4 times it (RK4 on a
+// lugre slider or light disc: 0.93-0.95); dahl, whose undamped presliding ratchets a body
+// along by the method's numerical damping, is checked for boundedness instead: with RK4 its
+// reference converges and the run at 0.9 is stable and creeps no further; with semi-implicit
+// Euler its creep converges at first order only (the state update feeds its ring).
 // The limit is the largest h for which the integrator's one-step matrix for that system has
 // spectral radius <= 1 (undamped: RK4 h w < 2 sqrt(2), semi-implicit Euler h w < 2; real
 // axis: RK4 2.785, Dormand-Prince 5(4) 3.307). For dopri5 it bounds the internal steps the

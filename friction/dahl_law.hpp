@@ -27,6 +27,7 @@
 // |z| stays within mu_c / sigma0 when it starts there.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -63,8 +64,13 @@ class DahlLaw final : public BristleLaw {
   // mu_c, so |e(h)| = |e| exp(-k h) (alpha = 1) or |e| (1 + (alpha - 1) k h |e|^(alpha - 1))^(-1
   // / (alpha - 1)).
   void stableStep(double* z, const Eigen::Vector3d& slip, double fn, double h) const override;
-  // {sigma0, 0}: dF/dx = sigma0 F_n at z = 0.
-  Presliding presliding() const override { return {params_.sigma0, 0.0}; }
+  // {2^alpha sigma0, 0}: the steepest dF/dx = sigma0 F_n |1 - (F / F_c) sgn v|^alpha (Dahl's
+  // equation above) over the stuck states |F| <= F_c, reached unloading a bristle loaded to
+  // F_c; sigma0 F_n at z = 0. A body held at 0.8 F_c rings on the unloading side at 1.8 sigma0
+  // F_n, past the RK4 limit taken at sigma0 (measured: diverged at 0.9 of that estimate).
+  Presliding presliding() const override {
+    return {params_.sigma0 * std::pow(2.0, params_.alpha), 0.0};
+  }
   // sigma0 v_max alpha 2^(alpha - 1) / mu_c (|e| <= 2 while |z| <= mu_c / sigma0).
   double stateStiffness(double v_max) const override;
 

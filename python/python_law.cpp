@@ -30,7 +30,7 @@ PythonCalls::PythonCalls(std::string name, const py::object& law) : name_(std::m
   }
   slope_ = py::getattr(law, "slope", py::none());
   max_ = py::getattr(law, "max_coefficient", py::none());
-  for (const char* key : {"rate", "force", "stable_step", "state_stiffness"})
+  for (const char* key : {"rate", "force", "stable_step", "state_stiffness", "direct_slope"})
     if (py::hasattr(law, key)) methods_[key] = law.attr(key);
   const py::object stick = py::getattr(law, "stick_speed", py::none());
   if (!stick.is_none()) stick_speed_ = stick.cast<double>();
@@ -232,6 +232,12 @@ double PythonDynamicLaw::stateStiffness(double v_max) const {
   py::gil_scoped_acquire hold;
   const py::object& f = calls_.method("state_stiffness");
   return f.is_none() ? 0.0 : calls_.number(f, v_max);
+}
+
+double PythonDynamicLaw::directSlope(double v) const {
+  py::gil_scoped_acquire hold;
+  const py::object& f = calls_.method("direct_slope");
+  return f.is_none() ? 0.0 : calls_.number(f, v);
 }
 
 std::map<std::string, std::shared_ptr<const friction::FrictionLaw>> userLawsFrom(

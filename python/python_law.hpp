@@ -6,7 +6,10 @@
 //     arrays (copies). Optional: `tangent_vectors` (0), `initial_state()` (zeros),
 //     `stable_step(z, slip, fn, h)` (the new z; else one explicit Euler step, which is not
 //     bounded for stiff states: use rk4, dopri5 or bdf then), `presliding` ((stiffness,
-//     damping) per unit load, (0, 0)) and `state_stiffness(v_max)` (0).
+//     damping) per unit load, (0, 0)), `state_stiffness(v_max)` (0) and `direct_slope(v)` (0:
+//     d|F_t|/d|s| per unit load with the state held, DynamicFrictionLaw::directSlope; the
+//     steady curve mu(v) cannot give it, as it is the slope before the state responds:
+//     rate-and-state's a / v against the curve's (a - b) / v).
 // Optional for both: `slope(v)` (else a central difference of mu with step
 // 1e-6 max(|v|, stick_speed)), `stick_speed` [m/s] (1e-3), `max_coefficient(v_max)` (else the
 // largest |mu| over 2001 speeds from 0 to v_max, a sampled bound).
@@ -100,6 +103,7 @@ class PythonDynamicLaw final : public PythonCurveLaw<friction::DynamicFrictionLa
   void stableStep(double* z, const Eigen::Vector3d& slip, double fn, double h) const override;
   Presliding presliding() const override { return presliding_; }
   double stateStiffness(double v_max) const override;
+  double directSlope(double v) const override;
 
  private:
   // The Python result `r` copied into out[0..n) (NaN and a recorded error when it is not a

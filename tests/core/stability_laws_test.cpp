@@ -191,27 +191,30 @@ bool agrees(const Outcome& o, const Outcome& ref, std::string* why) {
 
 // What is asserted of a case: agreement at 0.9 of the estimate, and disagreement by 4 times
 // it. Measured, not asserted (the report's figures):
-// - dahl: its presliding spring is undamped, so the step from rest leaves an oscillation that
-//   ratchets the body along by an amount set by each method's numerical damping (at a tenth of
-//   the estimate the slider moves 3.1 mm with semi-implicit Euler, 0.1 mm with RK4): there is
-//   no converged reference to agree with;
 // - by 4 times: the narrow step's chatter stays within its 0.1 mm/s segment (a speed error
 //   below 5%), and the heavy disc (I 0.01 kg m^2) on a lugre or elasto_plastic pin never
-//   slips at the speed 4 v_stick whose state decay bounds it (conservative there);
-// - at 0.9: that disc on a lugre pin under semi-implicit Euler creeps 25 um against the
-//   reference's 18 um (both stuck, just past the 5 um tolerance; off from 0.86 of the
-//   estimate, the state decay's limit there).
+//   slips at the speed 4 v_stick whose state decay bounds RK4 there (conservative).
+// dahl's presliding spring is undamped: the step from rest leaves a ring that only the law's
+// hysteresis damps, and it ratchets the body along by an amount each method's numerical
+// damping sets, so agreement is not what is asserted (`bounded`):
+// - RK4: the reference is converged (a tenth and a twentieth of the estimate agree); at 0.9
+//   of the estimate the run is stable and creeps no further than the reference and no faster
+//   (RK4's damping of the ring only shortens the creep: 0.4-0.6 of the reference's on joints);
+// - semi-implicit Euler: its state update from the step's starting slip feeds the ring
+//   (core/stability.cpp), so the creep converges at first order only (the slider's 3.1, 1.6,
+//   0.8 mm at steps of 20, 10, 5 us): no reference to agree with; at 0.9 of
+//   the estimate the run is bounded, the energy guard (core/energy.hpp) never stopping it.
 struct Expect {
   bool agrees_below = true;
   bool off_by_4 = true;
+  bool bounded = false;  // dahl: the checks above instead of agreement
 };
 
 Expect expectFor(const LawCase& c, bool heavy_disc, IntegratorType integrator) {
-  if (c.name == "dahl") return {false, false};
-  if (heavy_disc && c.name == "lugre" && integrator == IntegratorType::kSemiImplicitEuler)
-    return {false, false};
+  if (c.name == "dahl") return {false, false, true};
   if (c.name == "tabulated narrow step") return {true, false};
-  if (heavy_disc && (c.name == "lugre" || c.name == "elasto_plastic")) return {true, false};
+  if (heavy_disc && (c.name == "lugre" || c.name == "elasto_plastic"))
+    return {true, integrator == IntegratorType::kSemiImplicitEuler};
   return {};
 }
 
@@ -229,6 +232,16 @@ double checkCase(const std::function<ModelBuilder(double)>& make, double r, doub
   EXPECT_FALSE(ref.stopped) << who << ": " << ref.message;
   std::string why;
   const Outcome at = run(make(0.9 * limit), seconds, r, stick_speed);
+  if (expect.bounded) {
+    EXPECT_FALSE(at.stopped) << who << " at 0.9 x " << limit << " s: " << at.message;
+    EXPECT_TRUE(std::isfinite(at.displacement) && std::isfinite(at.peak)) << who;
+    if (make(limit).build()->options.integrator == IntegratorType::kRk4) {
+      const Outcome finer = run(make(0.05 * limit), seconds, r, stick_speed);
+      EXPECT_TRUE(agrees(ref, finer, &why)) << who << ": reference not converged: " << why;
+      EXPECT_LE(std::abs(at.displacement), 1.05 * std::abs(ref.displacement) + 5e-6) << who;
+      EXPECT_LE(at.peak, 1.2 * ref.peak + 1e-6) << who;
+    }
+  }
   if (expect.agrees_below) {
     EXPECT_TRUE(agrees(at, ref, &why))
         << who << " at 0.9 x " << limit << " s (" << report.limit.element << "): " << why;
