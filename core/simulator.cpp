@@ -193,7 +193,7 @@ StepStatus Simulator::check() {
     const Joint& j = m.joints[static_cast<std::size_t>(ws.max_constraint_joint)];
     const std::string body = m.bodies[(j.child.isWorld() ? j.parent : j.child).value].name;
     std::ostringstream s;
-    s << "joint '" << j.name << "' came apart: its constraint error |Phi| is "
+    s << "joint '" << j.name << "' came apart (constraint drift): its constraint error |Phi| is "
       << ws.max_constraint_error
       << " (m or rad), more than constraints.drift_stop = " << m.options.constraints.drift_stop
       << " (body '" << body

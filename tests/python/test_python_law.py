@@ -197,3 +197,40 @@ def test_python_state_law_errors(belt):
 
     with pytest.raises(TypeError, match="rate"):
         tribo.load_scene(belt, set={"friction": "n"}, laws={"n": NoRate()})
+
+
+def test_a_direct_slope_enters_the_stable_step_as_a_damper(belt):
+    # A state law's direct effect D (d|F_t|/d|s| per unit load with the state held) acts on
+    # the box's slip like a damper c = D N, N = m g on the flat belt: where it binds, the
+    # explicit step limit is RK4's real-axis bound z over c / m = D g, z the real root of
+    # 1 - z + z^2/2 - z^3/6 + z^4/24 = 1 (z^3 - 4 z^2 + 12 z - 24 = 0, Newton from 3). Without
+    # the method the estimate has no such term and prints a longer step.
+    class Smooth(PythonLuGre):
+        def mu(self, v):
+            return math.tanh(v / 1e-3) * self.g(abs(v))
+
+    class Direct(Smooth):
+        def __init__(self, d):
+            super().__init__()
+            self.d = d
+
+        def direct_slope(self, v):
+            return self.d
+
+    settings = {"friction": "p", "integrator": "rk4", "dt": 1e-5}
+
+    def stability(law):
+        result = tribo.load_scene(belt, set=settings, laws={"p": law}).run(duration=1e-4)
+        assert result.complete, result.message
+        return result.summary["stability"]
+
+    z = 3.0
+    for _ in range(50):
+        z -= (((z - 4) * z + 12) * z - 24) / ((3 * z - 8) * z + 12)
+    plain = stability(Smooth())
+    assert "direct effect" not in plain["limiting_element"]
+    for d in (1e3, 2e3, 1e4):
+        s = stability(Direct(d))
+        assert "direct effect" in s["limiting_element"]
+        assert s["estimated_max_step"] == pytest.approx(z / (d * 9.81), rel=1e-9)
+        assert s["estimated_max_step"] < plain["estimated_max_step"]

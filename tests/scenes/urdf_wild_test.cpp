@@ -426,7 +426,16 @@ TEST_F(UrdfWild, AutomaticStepIsWithinItsOwnEstimateOnALimitedJointOfAFreeBase) 
           << integrator << " " << k.base_mass;
       const double limit = estimateStableStep(*scene.model).limit.max_step;
       EXPECT_LE(dt, 0.9 * limit) << integrator << " " << k.base_mass;
-      const study::RunResult r = runOneSecond(scene);
+      // Semi-implicit Euler drifts on turning constrained bodies (docs/joints.md), and a
+      // 20 kg arm landing on a 0.2 kg base tears the joint 0.1 m apart at rk4's automatic
+      // step too (5 mm at 0.1 ms): such a run may stop, and then for constraint drift, the
+      // guard made for it; rk4 with the arm at most ten times the base finishes.
+      const study::RunResult r = study::runScene(scene);
+      if ((integrator == "rk4" && m <= 10 * k.base_mass) || r.complete) {
+        EXPECT_TRUE(r.complete) << r.message;
+      } else {
+        EXPECT_EQ(r.stop.quantity, "constraint_drift") << r.message;
+      }
       for (const std::string& w : r.warnings) {
         EXPECT_EQ(w.find("exceeds the estimated stability limit"), std::string::npos) << w;
         EXPECT_EQ(w.find("not a whole multiple"), std::string::npos) << w;
