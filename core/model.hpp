@@ -1,7 +1,7 @@
 // The model: the immutable description of a scene, built and validated once by
 // ModelBuilder. Bodies, collision geometries, joints, force elements, applied loads,
-// contact materials and pairs, and the simulation options (every speed-for-accuracy trade is one of them).
-// Not here: anything that changes during a run (core/state.hpp, core/dynamics.hpp).
+// contact materials and pairs, and the simulation options (every speed-for-accuracy trade is one of
+// them). Not here: anything that changes during a run (core/state.hpp, core/dynamics.hpp).
 #pragma once
 
 #include <cstdint>

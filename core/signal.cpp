@@ -57,8 +57,8 @@ Signal Signal::smoothStep(double start, double before, double end, double after)
   checkFinite("smooth_step", "end", end);
   checkFinite("smooth_step", "after", after);
   if (!(end > start))
-    throw std::invalid_argument("smooth_step: end (" + numberText(end) +
-                                ") must be after start (" + numberText(start) + ")");
+    throw std::invalid_argument("smooth_step: end (" + numberText(end) + ") must be after start (" +
+                                numberText(start) + ")");
   Signal s;
   s.kind_ = Kind::kSmoothStep;
   s.a_ = start;
@@ -91,8 +91,8 @@ Signal Signal::sines(std::vector<Sine> terms) {
     checkFinite("sines", "phase", k.phase);
     checkFinite("sines", "offset", k.offset);
     if (k.frequency < 0.0)
-      throw std::invalid_argument("sines: frequency must be >= 0 (got " +
-                                  numberText(k.frequency) + ")");
+      throw std::invalid_argument("sines: frequency must be >= 0 (got " + numberText(k.frequency) +
+                                  ")");
   }
   Signal s;
   s.kind_ = Kind::kSines;

@@ -227,8 +227,7 @@ TEST(AppliedLoad, BuilderRefusesWhatCannotCarryALoad) {
       b.addLoad(l);
       ADD_FAILURE() << "accepted: " << part;
     } catch (const ModelError& e) {
-      EXPECT_NE(std::string(e.what()).find("load '" + l.name + "'"), std::string::npos)
-          << e.what();
+      EXPECT_NE(std::string(e.what()).find("load '" + l.name + "'"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
     }
   };

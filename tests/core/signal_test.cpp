@@ -1,13 +1,13 @@
 // Time signals (core/signal.hpp): each kind's value and derivative against its closed form,
 // at, just before and just after its breakpoints, over several time and amplitude scales;
 // the derivative against central differences away from breakpoints; the factories' checks.
+#include "core/signal.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-
-#include "core/signal.hpp"
 
 namespace tribo {
 namespace {
