@@ -35,7 +35,8 @@ loads:
     point: [0.1, 0, 0]
   - name: shake
     body: block
-    force: [{sines: [{amplitude: 1, frequency: $w}, {amplitude: 2, frequency: 1, phase: 0.5, offset: 3}]}, 0, 0]
+    force: [{sines: [{amplitude: 1, frequency: $w},
+                     {amplitude: 2, frequency: 1, phase: 0.5, offset: 3}]}, 0, 0]
 output: {channels: [position, loads]}
 )";
 
