@@ -68,6 +68,8 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   ws_.joint_wrench.assign(nb, {});
   ws_.joint_friction.assign(model_->joints.size(), 0.0);
   ws_.constraint_wrench.assign(nb, {});
+  ws_.load_wrench.assign(nb, {});
+  ws_.load_force.assign(model_->loads.size(), Vec3::Zero());
   ws_.rotation.assign(nb, Mat3::Identity());
   ws_.inv_inertia_world.assign(nb, Mat3::Zero());
   ws_.linear_acceleration.assign(nb, Vec3::Zero());
@@ -244,7 +246,22 @@ void Dynamics::assemble(const State& state) {
   }
   accumulateSprings(state);
   accumulateBushingsAndTorsion(state);
+  accumulateLoads(state);
   joint_forces_.accumulate(state, ws_);
+}
+
+void Dynamics::accumulateLoads(const State& state) {
+  if (model_->loads.empty()) return;
+  for (Wrench& w : ws_.load_wrench) w.setZero();
+  for (std::size_t i = 0; i < model_->loads.size(); ++i) {
+    const AppliedLoad& load = model_->loads[i];
+    const LoadWrench w =
+        appliedLoadWrench(load, state.time, bodyKinematics(state, ws_.rotation, load.body));
+    Wrench& on = ws_.load_wrench[load.body.value];
+    applyAt(on, state.bodies[load.body.value].position, w.point, w.force);
+    on.torque += w.torque;
+    ws_.load_force[i] = w.force;
+  }
 }
 
 void Dynamics::accumulateSprings(const State& state) {
@@ -303,6 +320,7 @@ void Dynamics::accumulateBushingsAndTorsion(const State& state) {
 
 void Dynamics::unconstrainedAccelerations(const State& state) {
   const Model& m = *model_;
+  const bool has_loads = !m.loads.empty();
   parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Body& body = m.bodies[b];
     if (body.kind != BodyKind::kDynamic) {
@@ -311,10 +329,14 @@ void Dynamics::unconstrainedAccelerations(const State& state) {
       return;
     }
     const BodyState& s = state.bodies[b];
-    const Vec3 force =
+    Vec3 force =
         ws_.contact_wrench[b].force + ws_.spring_wrench[b].force + ws_.joint_wrench[b].force;
-    const Vec3 torque =
+    Vec3 torque =
         ws_.contact_wrench[b].torque + ws_.spring_wrench[b].torque + ws_.joint_wrench[b].torque;
+    if (has_loads) {  // else nothing added: a scene without loads computes as before
+      force += ws_.load_wrench[b].force;
+      torque += ws_.load_wrench[b].torque;
+    }
     const Mat3& r = ws_.rotation[b];
     const Vec3 gyro =
         s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));

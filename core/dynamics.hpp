@@ -7,7 +7,8 @@
 //   friction           per contact point: the pair's friction law, with the memory of
 //                      stateful and dynamic laws (core/friction_states.hpp)
 //   assemble           wrenches by source: contacts, force elements (spring-dampers,
-//                      bushings, torsional springs), joint forces (core/joint_forces.hpp)
+//                      bushings, torsional springs), applied loads at the state's time
+//                      (core/applied_load.hpp), joint forces (core/joint_forces.hpp)
 //   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations
 //   solveConstraints   Lagrange multipliers (core/constraint_solver.hpp), then joint
 //                      friction under reaction load
@@ -87,6 +88,7 @@ class Dynamics {
 
   void accumulateSprings(const State& state);
   void accumulateBushingsAndTorsion(const State& state);  // core/bushing.hpp, torsional_spring.hpp
+  void accumulateLoads(const State& state);               // core/applied_load.hpp
 
   std::shared_ptr<const Model> model_;
   contact::CollisionDetector detector_;

@@ -38,6 +38,11 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
     // drives) count as sources: their work enters or leaves through the joints.
     for (const Wrench* j : {&ws.constraint_wrench[b], &ws.joint_wrench[b]})
       a.input_power += j->force.dot(s.velocity) + j->torque.dot(s.angular_velocity);
+    // Applied loads too (core/applied_load.hpp): F . v + T . w, T about the origin.
+    if (!model.loads.empty()) {
+      const Wrench& l = ws.load_wrench[b];
+      a.input_power += l.force.dot(s.velocity) + l.torque.dot(s.angular_velocity);
+    }
   }
   for (const SpringDamper& sp : model.springs) {
     auto end = [&](BodyIndex b, const Vec3& local) {

@@ -15,6 +15,10 @@
 //                                      Baumgarte correction and moving parents do work) and
 //                                      the joint elements' wrench (limits, springs, dampers,
 //                                      friction, drives: their energy is not in E)
+//           + (F_L . v + T_L . w)       over dynamic bodies, F_L, T_L the applied loads' wrench
+//                                      about the origin (core/applied_load.hpp: work done
+//                                      from outside, so a pushed body does not read as a
+//                                      divergence and a diverging one is not excused)
 // Along an exact solution dE/dt = P_in - D with D >= 0 (contact and force element damping, friction
 // slip, the clipped tension of a separating penalty contact), so E_net = E - integral(P_in dt)
 // never rises. The guard integrates P_in with the trapezoidal rule between checks and

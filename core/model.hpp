@@ -1,7 +1,7 @@
 // The model: the immutable description of a scene, built and validated once by
-// ModelBuilder. Bodies, collision geometries, joints, force elements, contact materials
-// and pairs, and the simulation options (every speed-for-accuracy trade is one of them).
-// Not here: anything that changes during a run (core/state.hpp, core/dynamics.hpp).
+// ModelBuilder. Bodies, collision geometries, joints, force elements, applied loads,
+// contact materials and pairs, and the simulation options (every speed-for-accuracy trade is one of
+// them). Not here: anything that changes during a run (core/state.hpp, core/dynamics.hpp).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +13,7 @@
 #include "contact/collision_detector.hpp"
 #include "contact/contact_force.hpp"
 #include "contact/shape.hpp"
+#include "core/applied_load.hpp"
 #include "core/automatic_contacts.hpp"
 #include "core/body.hpp"
 #include "core/bushing.hpp"
@@ -93,6 +94,7 @@ struct Model {
   std::vector<SpringDamper> springs;
   std::vector<Bushing> bushings;
   std::vector<TorsionalSpring> torsional_springs;
+  std::vector<AppliedLoad> loads;  // time-driven forces and torques on dynamic bodies
   std::vector<contact::Material> materials;
   std::vector<ContactPair> contact_pairs;  // listed contacts; pair id = index
   // True when the scene listed no contacts: every two geometries that may touch do, by the

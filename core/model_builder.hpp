@@ -95,6 +95,9 @@ class ModelBuilder {
   // configuration and it is relaxed at `rest_angle` [rad].
   void addTorsionalSpring(const std::string& name, BodyIndex a, BodyIndex b, const Vec3& axis_world,
                           double stiffness, double damping, double rest_angle);
+  // Applied load (core/applied_load.hpp) on a dynamic body, its point finite; the name
+  // unique among loads (core/model_builder_elements.cpp).
+  void addLoad(const AppliedLoad& load);
 
   SimulationOptions& options() { return options_; }
   std::optional<BodyIndex> findBody(const std::string& name) const;

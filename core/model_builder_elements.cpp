@@ -1,4 +1,5 @@
-// ModelBuilder: bushings and torsional springs (core/bushing.hpp, core/torsional_spring.hpp).
+// ModelBuilder: bushings, torsional springs and applied loads (core/bushing.hpp,
+// core/torsional_spring.hpp, core/applied_load.hpp).
 #include <cmath>
 #include <sstream>
 
@@ -81,6 +82,20 @@ void ModelBuilder::addTorsionalSpring(const std::string& name, BodyIndex a, Body
   s.damping = damping;
   s.rest_angle = rest_angle;
   model_.torsional_springs.push_back(s);
+}
+
+void ModelBuilder::addLoad(const AppliedLoad& load) {
+  const std::string who = "load '" + load.name + "'";
+  const Body body = checkedBody(load.body, who);
+  if (load.body.isWorld()) throw ModelError(who + ": cannot act on the world");
+  if (body.kind != BodyKind::kDynamic)
+    throw ModelError(who + ": body '" + body.name +
+                     "' is kinematic (its motion is prescribed; a load needs a dynamic body)");
+  if (!load.point.allFinite())
+    throw ModelError(who + ": point must be finite (got " + vectorText(load.point) + ")");
+  for (const AppliedLoad& other : model_.loads)
+    if (other.name == load.name) throw ModelError(who + ": a load of that name already exists");
+  model_.loads.push_back(load);
 }
 
 }  // namespace tribo

@@ -47,6 +47,10 @@ struct Workspace {
   std::vector<Wrench> spring_wrench;
   std::vector<Wrench> joint_wrench;
   std::vector<Wrench> constraint_wrench;  // solveConstraints: J^T lambda
+  // assemble: per body, the applied loads (core/applied_load.hpp); per model load, its world
+  // force F at this evaluation's time.
+  std::vector<Wrench> load_wrench;
+  std::vector<Vec3> load_force;
   // Per body, world: unconstrainedAccelerations, then solveConstraints adds the constraint
   // forces' part; the result of the evaluation (zero for kinematic bodies).
   std::vector<Vec3> linear_acceleration;

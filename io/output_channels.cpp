@@ -36,6 +36,7 @@ const std::vector<std::string>& knownChannelGroups() {
     n.emplace_back("joints");
     n.emplace_back("friction_states");
     n.emplace_back("energy");
+    n.emplace_back("loads");
     return n;
   }();
   return names;
@@ -88,6 +89,9 @@ std::vector<std::string> channelColumns(const Model& model,
     for (const char* e :
          {"energy.kinetic", "energy.gravity", "energy.elastic", "energy.input_power"})
       names.emplace_back(e);
+  if (hasGroup(groups, "loads"))
+    for (const AppliedLoad& l : model.loads)
+      for (const char* suffix : {".fx", ".fy", ".fz"}) names.push_back(l.name + suffix);
   return names;
 }
 
@@ -120,7 +124,10 @@ std::string channelUnit(const Model& model, std::string_view column) {
                                                                     {"wz", "rad/s"},
                                                                     {"slip", "m/s"},
                                                                     {"normal_force", "N"},
-                                                                    {"friction_force", "N"}};
+                                                                    {"friction_force", "N"},
+                                                                    {"fx", "N"},
+                                                                    {"fy", "N"},
+                                                                    {"fz", "N"}};
   // A pair's state names (A/B.z.x) hold a dot of their own: only body and pair columns here.
   if (owner.find('.') != std::string_view::npos) return "";
   for (const auto& [name, unit] : kParts)

@@ -28,6 +28,8 @@
 //                                                       contact (0 out of contact)
 //   energy              energy.kinetic energy.gravity energy.elastic energy.input_power
 //                                                       (core/energy.hpp) [J, W]
+//   loads               LOAD.fx LOAD.fy LOAD.fz         each applied load's force, world [N]
+//                                                       (core/applied_load.hpp)
 // Default: position, velocity, contact (what trajectory.csv always held).
 // A scene with automatic contacts has a pair for every two geometries that may touch: `pairs`
 // then writes three columns for each, and listing them costs time and memory quadratic in

@@ -18,9 +18,10 @@ namespace tribo::io::scene_keys {
 
 using List = std::vector<std::string>;
 
-inline const List kTop{"parameters",    "simulation", "bodies",   "robots",
-                       "joints",        "springs",    "bushings", "torsional_springs",
-                       "friction_laws", "materials",  "contacts", "output"};
+inline const List kTop{"parameters", "simulation",    "bodies",    "robots",
+                       "joints",     "springs",       "bushings",  "torsional_springs",
+                       "loads",      "friction_laws", "materials", "contacts",
+                       "output"};
 inline const List kSimulation{"duration",  "time_step",      "integrator",  "gravity",
                               "baumgarte", "collision",      "rtol",        "atol",
                               "max_step",  "event_location", "constraints", "threads"};
@@ -61,6 +62,13 @@ inline const List kBushing{"name",
                            "rotational_damping"};
 inline const List kFrame{"position", "orientation", "rpy"};
 inline const List kTorsionalSpring{"name", "a", "b", "axis", "stiffness", "damping", "rest_angle"};
+inline const List kLoad{"name", "body", "force", "torque", "frame", "point"};
+// A signal mapping's one key, its kind (io/scene_signal.hpp), and each kind's keys.
+inline const List kSignal{"ramp", "step", "smooth_step", "table", "sines"};
+inline const List kRampSignal{"rate", "start", "initial"};
+inline const List kStepSignal{"time", "before", "after"};
+inline const List kSmoothStepSignal{"start", "end", "before", "after"};
+inline const List kSineTerm{"amplitude", "frequency", "phase", "offset"};
 inline const List kMaterial{"name", "normal", "friction", "surfaces", "default"};
 inline const List kNormal{"law",       "stiffness",   "damping",     "exponent",
                           "max_depth", "restitution", "impact_speed"};
@@ -78,6 +86,7 @@ inline const List kRedundancyPolicies{"error", "remove"};
 inline const List kDriveModes{"position", "velocity"};
 inline const List kJointFrictionLoads{"reaction", "constant"};
 inline const List kSummaryCoordinates{"x", "y", "z"};
+inline const List kLoadFrames{"world", "body"};
 inline const List kOtherWords{"true", "false", "world", "auto", "tabulated"};
 
 // Every table above with the section it belongs to, for generators and tests.
@@ -104,6 +113,12 @@ inline const std::vector<Section>& sections() {
                                         {"bushings[]", &kBushing},
                                         {"bushings[].frame_a / frame_b", &kFrame},
                                         {"torsional_springs[]", &kTorsionalSpring},
+                                        {"loads[]", &kLoad},
+                                        {"loads[] signal", &kSignal},
+                                        {"loads[] signal.ramp", &kRampSignal},
+                                        {"loads[] signal.step", &kStepSignal},
+                                        {"loads[] signal.smooth_step", &kSmoothStepSignal},
+                                        {"loads[] signal.sines[]", &kSineTerm},
                                         {"materials[]", &kMaterial},
                                         {"materials[].normal", &kNormal},
                                         {"contacts[]", &kContact},
@@ -117,6 +132,7 @@ inline const std::vector<Section>& sections() {
                                         {"(words) drive mode", &kDriveModes},
                                         {"(words) joint friction load", &kJointFrictionLoads},
                                         {"(words) summary coordinate", &kSummaryCoordinates},
+                                        {"(words) load frame", &kLoadFrames},
                                         {"(words) other", &kOtherWords}};
   return all;
 }

@@ -3,7 +3,7 @@
 // ModelBuilder. The format is documented in docs/scene-format.md, with scenes/belt.yaml as
 // a commented example; in short, the top-level keys are
 //   parameters, simulation, bodies, robots (URDF files), joints, springs, bushings,
-//   torsional_springs, friction_laws, materials, contacts, output
+//   torsional_springs, loads, friction_laws, materials, contacts, output
 // and a scalar "$name" anywhere stands for parameter `name` (io/scene_parameters.hpp).
 // The loader is strict: unknown keys, wrong types and dangling names are SceneErrors that
 // give file:line:col, the key path (e.g. "bodies[1].mass") and what was expected vs found;

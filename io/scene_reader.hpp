@@ -8,6 +8,7 @@
 //   io/scene_bodies.cpp     bodies, geometry, robots, Gazebo tags, body names
 //   io/scene_joints.cpp     joints, joint references, constraint options, springs,
 //                           bushings, torsional springs
+//   io/scene_loads.cpp      applied loads (their signals: io/scene_signal.hpp)
 //   io/scene_materials.cpp  friction laws, materials, normal laws, contacts
 // Internal to io/ (it includes yaml-cpp): io/scene_loader.cpp uses it; nothing outside io/
 // includes it.
@@ -92,6 +93,9 @@ class Loader {
   void readSpring(const Value& v);
   void readBushing(const Value& v);
   void readTorsionalSpring(const Value& v);
+
+  // io/scene_loads.cpp
+  void readLoad(const Value& v);
 
   // io/scene_materials.cpp
   std::shared_ptr<const friction::FrictionLaw> frictionLaw(const Value& name);

@@ -26,6 +26,7 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
   joints_ = io::hasGroup(groups, "joints");
   friction_states_ = io::hasGroup(groups, "friction_states");
   energy_ = io::hasGroup(groups, "energy");
+  loads_ = io::hasGroup(groups, "loads");
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
     if (joints_ && hasScalarCoordinate(model.joints[static_cast<std::size_t>(j)].type))
       joints_recorded_.push_back({j, jointCoordinate(model.joints[static_cast<std::size_t>(j)])});
@@ -169,6 +170,9 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
     row_[col++] = e.elastic;
     row_[col++] = e.input_power;
   }
+  if (loads_)
+    for (const Vec3& f : ws.load_force)
+      for (int i = 0; i < 3; ++i) row_[col++] = f[i];
   for (RowSink* sink : sinks_) sink->row(row_);
   if (keep_rows_)
     for (std::size_t c = 0; c < row_.size(); ++c) data_[c].push_back(row_[c]);

@@ -76,7 +76,7 @@ class TrajectoryRecorder {
   // The groups asked for, by flag (io/output_channels.hpp's order).
   bool position_ = false, orientation_ = false, rpy_ = false, velocity_ = false,
        angular_velocity_ = false, contact_ = false, friction_force_ = false, pairs_ = false,
-       joints_ = false, friction_states_ = false, energy_ = false;
+       joints_ = false, friction_states_ = false, energy_ = false, loads_ = false;
   struct RecordedJoint {
     int joint = -1;
     JointCoordinate coordinate;  // fixed per model: built once

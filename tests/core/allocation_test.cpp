@@ -1,7 +1,8 @@
 // The warm step does not allocate (docs: DESIGN.md, "Workspace"). Every shipped scene
-// (scenes/*.yaml, listed when the test runs, so a new scene is covered without editing this
-// file) is loaded, stepped 20 times to let its buffers grow to their working size, then
-// stepped 50 times more while this binary's replaced allocation functions count:
+// (scenes/*.yaml and scenes/experiments/*.yaml, listed when the test runs, so a new scene
+// is covered without editing this file) is loaded, stepped 20 times to let its buffers grow
+// to their working size, then stepped 50 times more while this binary's replaced allocation
+// functions count:
 //   - global operator new / new[], all variants (plain, nothrow, aligned, aligned nothrow);
 //   - in builds without AddressSanitizer also malloc, calloc, realloc and the aligned
 //     allocators (glibc's __libc_* underneath), which catches Eigen's dynamic matrices and
@@ -200,9 +201,9 @@ class Allocation : public ::testing::Test {
 
 std::vector<std::filesystem::path> shippedScenes() {
   std::vector<std::filesystem::path> files;
-  for (const auto& e :
-       std::filesystem::directory_iterator(std::string(TRIBO_SOURCE_DIR) + "/scenes"))
-    if (e.is_regular_file() && e.path().extension() == ".yaml") files.push_back(e.path());
+  for (const char* dir : {"/scenes", "/scenes/experiments"})
+    for (const auto& e : std::filesystem::directory_iterator(std::string(TRIBO_SOURCE_DIR) + dir))
+      if (e.is_regular_file() && e.path().extension() == ".yaml") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   return files;
 }

@@ -45,6 +45,8 @@ bushings:
   - {name: bu, a: a, b: b, frame_a: {position: [0, 0, 0]}, stiffness: [1, 1, 1]}
 torsional_springs:
   - {name: t, a: a, b: b, axis: [0, 0, 1], stiffness: 1}
+loads:
+  - {name: l, body: a, force: [{ramp: {rate: 1}}, {sines: [{amplitude: 1, frequency: 2}]}, 0]}
 friction_laws:
   coulomb: {mu: 0.3}
 materials:
@@ -77,6 +79,10 @@ TEST(SceneKeys, EachSectionRefusesAnUnknownKeyListingItsTable) {
         Case{"{name: bu,", "{bogus: 1, name: bu,", &scene_keys::kBushing},
         Case{"{position: [0, 0, 0]}", "{bogus: 1}", &scene_keys::kFrame},
         Case{"{name: t,", "{bogus: 1, name: t,", &scene_keys::kTorsionalSpring},
+        Case{"{name: l,", "{bogus: 1, name: l,", &scene_keys::kLoad},
+        Case{"{ramp: {rate: 1}}", "{bogus: {rate: 1}}", &scene_keys::kSignal},
+        Case{"{rate: 1}", "{rate: 1, bogus: 1}", &scene_keys::kRampSignal},
+        Case{"{amplitude: 1,", "{bogus: 1, amplitude: 1,", &scene_keys::kSineTerm},
         Case{"{name: m1,", "{bogus: 1, name: m1,", &scene_keys::kMaterial},
         Case{"{stiffness: 1e5}", "{bogus: 1}", &scene_keys::kNormal},
         Case{"{a: ga,", "{bogus: 1, a: ga,", &scene_keys::kContact},

@@ -6,6 +6,8 @@
 //   bob's pitch read from its orientation (the same angle, measured twice), its rate equals
 //   the angular velocity's y, and kinetic plus gravitational energy stays at its start
 //   (conservation, RK4 at 1 ms) while the spring-free model's elastic energy stays zero;
+//   the same body pushed by a follower force F along its own x: the `loads` columns read the
+//   world force F (cos w t, sin w t, 0);
 // the default columns are the historic eight per body; bad groups and channels are refused
 // naming what is known.
 #include <gtest/gtest.h>
@@ -50,6 +52,28 @@ TEST(OutputChannels, SpinningBodyQuaternionYawAndRateFollowTheClosedForm) {
       EXPECT_NEAR(std::remainder(yaw[i] - w * t[i], 2 * M_PI), 0.0, 1e-9);
       EXPECT_NEAR(wz[i], w, 1e-12);
     }
+  }
+}
+
+TEST(OutputChannels, LoadsRecordEachLoadsWorldForce) {
+  const double w = 5.0, f = 3.0;
+  const io::Scene scene =
+      io::loadSceneFromString(spinner(w, "{interval: 0.01, channels: [loads]}") +
+                                  "loads: [{name: push, body: wheel, force: [" + std::to_string(f) +
+                                  ", 0, 0], frame: body}]\n",
+                              "s.yaml");
+  const RunResult r = runScene(scene);
+  ASSERT_TRUE(r.complete) << r.message;
+  const auto& tr = r.trajectory;
+  const auto t = tr.column(0);
+  const auto fx = tr.column(tr.columnIndex("push.fx"));
+  const auto fy = tr.column(tr.columnIndex("push.fy"));
+  const auto fz = tr.column(tr.columnIndex("push.fz"));
+  ASSERT_GT(t.size(), 100u);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    EXPECT_NEAR(fx[i], f * std::cos(w * t[i]), 1e-9 * f);
+    EXPECT_NEAR(fy[i], f * std::sin(w * t[i]), 1e-9 * f);
+    EXPECT_EQ(fz[i], 0.0);
   }
 }
 
