@@ -80,6 +80,7 @@ class SceneGenerator {
     frictionLaws(s);
     materials(s);
     output(s);
+    loads(s, n);  // last: the sections above stay what they were for each seed
     return s.str();
   }
 
@@ -299,6 +300,49 @@ class SceneGenerator {
           << ", rest_angle: " << uniform(-3, 3) << "}\n";
       }
     }
+  }
+  // Applied loads on dynamic bodies, each component a random signal of every kind.
+  void loads(std::ostringstream& s, int n) {
+    if (!chance(0.3)) return;
+    s << "loads:\n";
+    for (int k = 0, count = 1 + pick(2); k < count; ++k) {
+      s << "  - {name: l" << k << ", body: b" << pick(n) << ", force: " << signals()
+        << (chance(0.5) ? ", torque: " + signals() : std::string())
+        << ", frame: " << (chance(0.5) ? "world" : "body") << ", point: " << vec(-0.1, 0.1)
+        << "}\n";
+    }
+  }
+  std::string signals() {
+    std::ostringstream s;
+    s.precision(17);
+    s << '[';
+    for (int i = 0; i < 3; ++i) {
+      const double a = (chance(0.5) ? 1 : -1) * logUniform(1e-3, 10);
+      s << (i ? ", " : "");
+      switch (pick(6)) {
+        case 0:
+          s << a;
+          break;
+        case 1:
+          s << "{ramp: {rate: " << a << ", start: " << uniform(0, 0.01) << "}}";
+          break;
+        case 2:
+          s << "{step: {time: " << uniform(0, 0.01) << ", before: 0, after: " << a << "}}";
+          break;
+        case 3:
+          s << "{smooth_step: {start: 0, end: " << uniform(1e-3, 0.01)
+            << ", before: 0, after: " << a << "}}";
+          break;
+        case 4:
+          s << "{table: [[0, 0], [" << uniform(1e-3, 0.01) << ", " << a << "], [0.02, " << -a
+            << "]]}";
+          break;
+        default:
+          s << "{sines: [{amplitude: " << a << ", frequency: " << logUniform(0.1, 1e3) << "}]}";
+      }
+    }
+    s << ']';
+    return s.str();
   }
   std::string gains(double lo, double hi) {
     std::ostringstream s;
@@ -534,8 +578,9 @@ TEST(PhysicsFuzz, TheGeneratorWritesEveryLawOfTheFactory) {
   for (const std::string& group : io::knownChannelGroups())
     EXPECT_NE(all.find(group), std::string::npos) << group;
   for (const char* word :
-       {"bushings:", "torsional_springs:", "threads: auto", "threads: 2", "integrator: bdf",
-        "integrator: dopri5", "$scale", "load: reaction", "law: lugre", "law: rate_state"})
+       {"bushings:", "torsional_springs:", "loads:", "{smooth_step:", "frame: body",
+        "threads: auto", "threads: 2", "integrator: bdf", "integrator: dopri5", "$scale",
+        "load: reaction", "law: lugre", "law: rate_state"})
     EXPECT_NE(all.find(word), std::string::npos) << word;
 }
 
