@@ -131,6 +131,7 @@ int runModes(Arguments& a) {
   try {
     study::writeModesJson(out / "modes.json", scene, result);
     study::writeModesCsv(out / "modes.csv", result);
+    if (result.linear) study::writeLinearModel(out, *result.linear);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo modes: %s\n", e.what());
     return 4;
@@ -178,6 +179,10 @@ Command addModesCommand(CLI::App& tribo) {
   addSetOption(*modes, a->overrides);
   modes->add_flag("--settle", a->spec.steady.settle,
                   "a damped settling run before the steady-state search");
+  modes->add_flag("--matrices", a->spec.linear_model,
+                  "also the linear model y' = A y + B w with the loads' and actuators' inputs:\n"
+                  "DIR/A.mtx, B.mtx, K.mtx, C.mtx, N.mtx (Matrix Market) and\n"
+                  "DIR/linear_model.json naming rows and columns");
   addCheckedOption(*modes, "--boundary", "NAME=LO:HI",
                    "bisect NAME over [LO, HI] for where the largest growth rate crosses zero;\n"
                    "writes DIR/boundary.json",

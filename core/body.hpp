@@ -3,13 +3,20 @@
 // A dynamic body obeys Newton-Euler: m a = F, I_W dw/dt = T - w x I_W w (I_W = R I_B R^T,
 // inertia about the centre of mass, which is the body origin). A kinematic body moves with
 // a prescribed constant velocity, whatever acts on it. Either may carry a surface velocity
-// (body frame): its surface slides past contacts while its geometry stays put (a belt).
-// Not here: state (core/state.hpp), geometry (Model::geometries).
+// (body frame): its surface slides past contacts while its geometry stays put (a belt),
+// constant or, with a signal per component (core/signal.hpp), varying in time (a belt whose
+// speed is modulated: Popp & Stelter 1990's road to period doubling).
+// Not here: state (core/state.hpp), geometry (Model::geometries), kinematic bodies whose
+// velocity varies in time.
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <optional>
 #include <string>
 
 #include "core/math.hpp"
+#include "core/signal.hpp"
 
 namespace tribo {
 
@@ -34,6 +41,29 @@ struct Body {
   Vec3 velocity = Vec3::Zero();          // initial (or prescribed), world [m/s]
   Vec3 angular_velocity = Vec3::Zero();  // initial (or prescribed), world [rad/s]
   Vec3 surface_velocity = Vec3::Zero();  // each geometry's frame [m/s] (surfaceVelocityOf)
+  // When set, the surface velocity at time t is (s_x(t), s_y(t), s_z(t)); surface_velocity
+  // then holds its value at t = 0.
+  std::optional<std::array<Signal, 3>> surface_velocity_signal = std::nullopt;
+
+  Vec3 surfaceVelocityAt(double t) const {
+    if (!surface_velocity_signal) return surface_velocity;
+    const auto& s = *surface_velocity_signal;
+    return {s[0].value(t), s[1].value(t), s[2].value(t)};
+  }
+  // The largest |surface velocity| over [0, duration], for the step estimate and the energy
+  // guard's scales: a constant's norm; a signal's largest at 1001 even samples and at its
+  // breakpoints (a bound up to the sampling: a peak narrower than duration / 1000 may be
+  // missed).
+  double surfaceSpeedBound(double duration) const {
+    if (!surface_velocity_signal) return surface_velocity.norm();
+    double bound = 0.0;
+    auto at = [&](double t) { bound = std::max(bound, surfaceVelocityAt(t).norm()); };
+    for (int i = 0; i <= 1000; ++i) at(duration * i / 1000.0);
+    for (const Signal& s : *surface_velocity_signal)
+      for (double t : s.breakpoints())
+        if (t >= 0.0 && t <= duration) at(t);
+    return bound;
+  }
 };
 
 }  // namespace tribo

@@ -31,7 +31,7 @@ contact::GeometryMotion motionOf(const Model& model, const State& state, const W
   m.origin = s.position;
   m.velocity = s.velocity;
   m.angular_velocity = s.angular_velocity;
-  m.surface_velocity = surfaceVelocityOf(model, ws.rotation, g);
+  m.surface_velocity = surfaceVelocityOf(model, ws.rotation, ws.surface_velocity, g);
   return m;
 }
 
@@ -67,6 +67,12 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   ws_.spring_wrench.assign(nb, {});
   ws_.joint_wrench.assign(nb, {});
   ws_.joint_friction.assign(model_->joints.size(), 0.0);
+  ws_.actuator_output.assign(model_->joints.size(), {});
+  ws_.surface_velocity.clear();
+  for (const Body& b : model_->bodies) {
+    ws_.surface_velocity.push_back(b.surface_velocity);
+    if (b.surface_velocity_signal) varying_surfaces_.push_back(ws_.surface_velocity.size() - 1);
+  }
   ws_.constraint_wrench.assign(nb, {});
   ws_.load_wrench.assign(nb, {});
   ws_.load_force.assign(model_->loads.size(), Vec3::Zero());
@@ -143,6 +149,8 @@ const Workspace& Dynamics::evaluate(const State& state) {
 
 void Dynamics::updatePoses(const State& state) {
   const Model& m = *model_;
+  for (const std::size_t b : varying_surfaces_)
+    ws_.surface_velocity[b] = m.bodies[b].surfaceVelocityAt(state.time);
   parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
     ws_.rotation[b] = r;
@@ -255,8 +263,13 @@ void Dynamics::accumulateLoads(const State& state) {
   for (Wrench& w : ws_.load_wrench) w.setZero();
   for (std::size_t i = 0; i < model_->loads.size(); ++i) {
     const AppliedLoad& load = model_->loads[i];
-    const LoadWrench w =
-        appliedLoadWrench(load, state.time, bodyKinematics(state, ws_.rotation, load.body));
+    const BodyKinematics kinematics = bodyKinematics(state, ws_.rotation, load.body);
+    LoadWrench w = appliedLoadWrench(load, state.time, kinematics);
+    if (!load_offsets_.empty()) {  // an input perturbed from outside (study/modes)
+      const Mat3 r = load.frame == LoadFrame::kBody ? kinematics.rotation : Mat3::Identity();
+      w.force += r * load_offsets_[i].force;
+      w.torque += r * load_offsets_[i].torque;
+    }
     Wrench& on = ws_.load_wrench[load.body.value];
     applyAt(on, state.bodies[load.body.value].position, w.point, w.force);
     on.torque += w.torque;

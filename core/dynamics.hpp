@@ -47,6 +47,16 @@ class Dynamics {
   // next call.
   const Workspace& evaluate(const State& state);
   const Workspace& workspace() const { return ws_; }
+  // Added to load i's force and torque (in its frame) from now on: the input matrix's
+  // perturbation (study/modes/input_matrix.hpp); zero offsets restore the load.
+  void setLoadOffset(std::size_t load, const Vec3& force, const Vec3& torque) {
+    if (load_offsets_.empty()) load_offsets_.assign(model_->loads.size(), {});
+    load_offsets_.at(load) = {force, torque};
+  }
+  // A command for a joint's actuator from outside (JointForces::setActuatorCommand).
+  bool setActuatorCommand(int joint, double command) {
+    return joint_forces_.setActuatorCommand(joint, command);
+  }
   // Drift control after a step (ConstraintOptions::projection): moves `state` back onto the
   // joint constraints (core/constraint_projection.hpp); does nothing unless enabled.
   void projectConstraints(State& state);
@@ -102,7 +112,9 @@ class Dynamics {
   const ContactPair& pairOf(const contact::ContactRecord& rec) const {
     return ws_.contact_pair[static_cast<std::size_t>(&rec - ws_.contacts.data())];
   }
-  std::vector<char> at_body_origin_;  // per geometry: its local pose is the identity
+  std::vector<char> at_body_origin_;           // per geometry: its local pose is the identity
+  std::vector<std::size_t> varying_surfaces_;  // bodies whose surface velocity is a signal
+  std::vector<Wrench> load_offsets_;           // per load, setLoadOffset's (empty: none ever set)
   FrictionStates friction_;
   bool profiling_ = false;
   StageProfile profile_;

@@ -68,7 +68,7 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
     const Vec3 f = c.force();  // on B; A gets -f
     const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};
     for (const auto& [geometry, sign] : sides) {
-      const Vec3 surface = surfaceVelocityOf(model, ws.rotation, geometry);
+      const Vec3 surface = surfaceVelocityOf(model, ws.rotation, ws.surface_velocity, geometry);
       if (surface.squaredNorm() == 0.0) continue;
       a.input_power -= sign * f.dot(surface);
     }
@@ -84,10 +84,10 @@ EnergyGuard::EnergyGuard(const Model& model, double modified_step)
   double speed = 0.0, spin = 0.0;
   for (const Body& b : model.bodies) {
     if (b.kind == BodyKind::kKinematic) {
-      speed = std::max({speed, b.velocity.norm(), b.surface_velocity.norm()});
+      speed = std::max({speed, b.velocity.norm(), b.surfaceSpeedBound(model.options.duration)});
       spin = std::max(spin, b.angular_velocity.norm());
     } else {
-      speed = std::max(speed, b.surface_velocity.norm());
+      speed = std::max(speed, b.surfaceSpeedBound(model.options.duration));
     }
   }
   for (const Joint& j : model.joints) {
@@ -163,7 +163,14 @@ EnergyVerdict EnergyGuard::update(const State& state, const Workspace& ws) {
   a.kinetic += modification(state, ws);
   const double dt = state.time - t_;
   work_ += 0.5 * (power_ + a.input_power) * dt;
-  abs_work_ += 0.5 * (std::abs(power_) + std::abs(a.input_power)) * dt;
+  // The allowance |P| integrated: by the trapezoid, or for semi-implicit Euler by the larger
+  // end's |P| over the whole step. That method applies the step's starting force F0 over the
+  // whole step, so from rest it gives the kinetic energy h F0 v1 / 2, above the trapezoid
+  // h F1 v1 / 2 when the force falls within the step (a servo or a spring pulling a body
+  // from rest, with no other energy to hide it); the larger end covers it while F1 >= F0 / 2.
+  abs_work_ += (modified_step_ > 0.0 ? std::max(std::abs(power_), std::abs(a.input_power))
+                                     : 0.5 * (std::abs(power_) + std::abs(a.input_power))) *
+               dt;
   t_ = state.time;
   power_ = a.input_power;
   const double net = a.total() - work_;

@@ -25,6 +25,8 @@
 // compares E_net with its running minimum (at time s):
 //   E_net(t) - E_net(s) > (T + V_elastic)(s) + (V_gravity(s) - min V_gravity on [s, t])
 //                         + integral over [s, t] of |P_in| dt + E_0
+// (the integral by the trapezoid; for semi-implicit Euler by each step's larger end, since it
+// applies the step's starting force over the whole step: core/energy.cpp)
 // For semi-implicit Euler E is replaced by its modified energy E + (h/2) sum (m a.v + w.I_W alpha)
 // (on a linear oscillator v^2 + w^2 x^2 - h w^2 x v is exactly conserved), because near its
 // stability limit the plain energy of a stable step swings by a factor (2 + hw)/(2 - hw).

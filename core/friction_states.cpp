@@ -20,8 +20,8 @@ const ContactPair& pairOf(const Workspace& ws, const contact::ContactRecord& rec
 contact::AnchorFrames anchorFrames(const Model& model, const Workspace& ws,
                                    const ContactPair& pair) {
   return {&ws.geometry_poses[pair.geometry_a], &ws.geometry_poses[pair.geometry_b],
-          surfaceVelocityOf(model, ws.rotation, pair.geometry_a),
-          surfaceVelocityOf(model, ws.rotation, pair.geometry_b)};
+          surfaceVelocityOf(model, ws.rotation, ws.surface_velocity, pair.geometry_a),
+          surfaceVelocityOf(model, ws.rotation, ws.surface_velocity, pair.geometry_b)};
 }
 
 std::string bodyOfPair(const Model& m, int pair_id) {

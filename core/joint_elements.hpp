@@ -9,6 +9,8 @@
 //             slip speed v = r q' (revolute, r = pin radius) or v = q' (prismatic, r = 1), and
 //             the normal load N either the joint's reaction force (revolute: its magnitude;
 //             prismatic: its part normal to the axis) or a constant
+//   actuator: a motor or a position or velocity servo commanded by a time signal, saturated
+//             at its effort limit (core/joint_actuator.hpp)
 //   drive:    a rheonomic constraint q = f(t) (position) or q' = f(t) (velocity), with
 //             f(t) = c0 + c1 t + A sin(w t + phi)
 // and couplings (URDF mimic): q_follower = multiplier q_leader + offset, a constraint.
@@ -18,10 +20,12 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "core/joint_actuator.hpp"
 #include "friction/friction_law.hpp"
 
 namespace tribo {
@@ -99,9 +103,16 @@ struct JointElements {
   double effort = 0.0;   // [N m or N]
   std::optional<JointFriction> friction;
   std::optional<JointDrive> drive;
+  std::optional<JointActuator> actuator;
+  // The joint's rated effort and speed (URDF <limit effort velocity>; infinite where none is
+  // given): the defaults of an actuator's saturation.
+  double rated_effort = std::numeric_limits<double>::infinity();    // [N m or N]
+  double rated_velocity = std::numeric_limits<double>::infinity();  // [rad/s or m/s]
 
   // True when a force (not a constraint) acts on the coordinate.
-  bool hasForces() const { return limit || spring || damping != 0.0 || effort != 0.0 || friction; }
+  bool hasForces() const {
+    return limit || spring || damping != 0.0 || effort != 0.0 || friction || actuator;
+  }
 };
 
 // q_follower = multiplier * q_leader + offset between the coordinates of two revolute or

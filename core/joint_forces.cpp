@@ -197,6 +197,14 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
       if (ql > l.upper) tau -= std::max(0.0, l.stiffness * (ql - l.upper) + l.damping * rate);
       if (ql < l.lower) tau += std::max(0.0, l.stiffness * (l.lower - ql) - l.damping * rate);
     }
+    if (el.actuator) {
+      const ActuatorOutput out =
+          std::isnan(e.command)
+              ? actuatorEffort(*el.actuator, state.time, q, rate, e.coordinate.angular)
+              : actuatorEffortFor(*el.actuator, e.command, 0.0, q, rate, e.coordinate.angular);
+      ws.actuator_output[static_cast<std::size_t>(e.joint)] = out;
+      tau += out.effort;
+    }
     if (el.friction) {
       // Reaction-load friction is added after the solve (applyReactionFriction).
       const double friction = el.friction->load == JointFrictionLoad::kConstant
@@ -207,6 +215,15 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
     }
     addGeneralized(e, tau, ws.joint_wrench);
   }
+}
+
+bool JointForces::setActuatorCommand(int joint, double command) {
+  for (Entry& e : entries_)
+    if (e.joint == joint && e.elements->actuator) {
+      e.command = command;
+      return true;
+    }
+  return false;
 }
 
 int JointForces::applyReactionFriction(ConstraintSolver& solver, Workspace& ws) {

@@ -1,5 +1,6 @@
 // The joint-force stage: generalized forces tau on the scalar coordinates of revolute and
-// prismatic joints (limits, springs, dampers, efforts, friction; core/joint_elements.hpp),
+// prismatic joints (limits, springs, dampers, efforts, actuators, friction;
+// core/joint_elements.hpp),
 // applied to the two bodies as J_q^T tau with J_q the coordinate's Jacobian, so the power
 // they deliver is exactly tau q'. Results go to Workspace::joint_wrench.
 //
@@ -85,6 +86,10 @@ class JointForces {
   // Reaction-load friction, after solver.solve(state, ws): adds it to ws.joint_wrench and
   // updates the constrained accelerations. Returns the iterations used (0: none needed).
   int applyReactionFriction(ConstraintSolver& solver, Workspace& ws);
+  // A command for joint `joint`'s actuator in place of its target signal's value from now on
+  // (its rate taken as 0: held until the next command), NaN to return to the signal. False
+  // when the joint has no actuator.
+  bool setActuatorCommand(int joint, double command);
 
   // Dynamic friction laws on joints (friction/dynamic_law.hpp): each such joint owns a
   // fixed slice of State::friction_values, all of them first, in joint order; the state sees
@@ -110,6 +115,7 @@ class JointForces {
     const double* z = nullptr;  // that slice at the last accumulate()
     double* z_rate = nullptr;   // and its rate in the workspace
     double load = 0.0;          // the friction's load at the last evaluation [N]
+    double command = std::numeric_limits<double>::quiet_NaN();  // the actuator's, if set
   };
   // Holds a dissipative torque within c_max |q'| (see the header comment).
   static double capped(double tau, double rate, double max_slope) {

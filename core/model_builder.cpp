@@ -19,6 +19,13 @@ bool finite(const Vec3& v) { return v.allFinite(); }
 
 }  // namespace
 
+std::optional<int> Model::findActuator(const std::string& name) const {
+  for (std::size_t j = 0; j < joints.size(); ++j)
+    if (joints[j].elements.actuator && joints[j].elements.actuator->name == name)
+      return static_cast<int>(j);
+  return std::nullopt;
+}
+
 std::optional<BodyIndex> Model::findBody(const std::string& name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == name) return BodyIndex{static_cast<int>(i)};

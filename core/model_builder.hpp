@@ -77,6 +77,14 @@ class ModelBuilder {
   void setJointEffort(int joint, double effort);
   void setJointFriction(int joint, const JointFriction& friction);
   void setJointDrive(int joint, const JointDrive& drive);
+  // The joint's rated effort and speed (URDF <limit effort velocity>), both > 0 (infinite:
+  // none), the defaults of an actuator's limits.
+  void setJointRating(int joint, double effort, double velocity);
+  // An actuator (core/joint_actuator.hpp), its name unique among actuators, one per joint and
+  // not on a driven joint; gains finite and >= 0 as its kind needs them (motor: none;
+  // position servo: kp or kd > 0; velocity servo: kd > 0, kp = 0), limits > 0, infinite
+  // ones taking the joint's rating.
+  void setJointActuator(int joint, JointActuator actuator);
   // q_follower = multiplier q_leader + offset (URDF <mimic joint multiplier offset>).
   int addJointCoupling(const std::string& name, int leader, int follower, double multiplier,
                        double offset);

@@ -2,6 +2,7 @@
 // build() (derived limit gains, redundant constraints). See core/model_builder.hpp.
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "core/constraint_rank.hpp"
 #include "core/constraint_rows.hpp"
@@ -186,7 +187,68 @@ void ModelBuilder::setJointDrive(int joint, const JointDrive& drive) {
   if (!std::isfinite(f.constant) || !std::isfinite(f.slope) || !std::isfinite(f.amplitude) ||
       !std::isfinite(f.frequency) || !std::isfinite(f.phase))
     throw ModelError(jointWho(j.name) + " drive: its function's values must be finite");
+  if (j.elements.actuator)
+    throw ModelError(jointWho(j.name) + " drive: the joint has actuator '" +
+                     j.elements.actuator->name +
+                     "' (a drive prescribes the motion; the actuator's effort would do nothing)");
   j.elements.drive = drive;
+}
+
+void ModelBuilder::setJointRating(int joint, double effort, double velocity) {
+  Joint& j = checkedJoint(joint, "a rating", true);
+  auto check = [&](double v, const char* what) {
+    if (std::isnan(v) || v <= 0.0)
+      throw ModelError(jointWho(j.name) + ": rated " + what + " must be > 0 (got " + numberText(v) +
+                       ")");
+  };
+  check(effort, "effort");
+  check(velocity, "velocity");
+  j.elements.rated_effort = effort;
+  j.elements.rated_velocity = velocity;
+}
+
+void ModelBuilder::setJointActuator(int joint, JointActuator actuator) {
+  Joint& j = checkedJoint(joint, "an actuator", true);
+  const std::string who = "actuator '" + actuator.name + "' on " + jointWho(j.name);
+  if (actuator.name.empty()) throw ModelError("actuator on " + jointWho(j.name) + ": empty name");
+  for (const Joint& other : model_.joints)
+    if (other.elements.actuator && other.elements.actuator->name == actuator.name)
+      throw ModelError(who + ": an actuator of that name is on joint '" + other.name + "'");
+  if (j.elements.actuator)
+    throw ModelError(who + ": the joint already has actuator '" + j.elements.actuator->name + "'");
+  if (j.elements.drive)
+    throw ModelError(who +
+                     ": the joint has a drive (its motion is prescribed; the actuator's "
+                     "effort would do nothing)");
+  auto gain = [&](double v, const char* what) {
+    if (!std::isfinite(v) || v < 0.0)
+      throw ModelError(who + ": " + what + " must be finite and >= 0 (got " + numberText(v) + ")");
+  };
+  gain(actuator.kp, "kp");
+  gain(actuator.kd, "kd");
+  switch (actuator.kind) {
+    case ActuatorKind::kMotor:
+      if (actuator.kp != 0.0 || actuator.kd != 0.0)
+        throw ModelError(who + ": a motor takes no gains (its effort is the signal)");
+      break;
+    case ActuatorKind::kPositionServo:
+      if (actuator.kp == 0.0 && actuator.kd == 0.0)
+        throw ModelError(who + ": a position servo needs kp > 0 or kd > 0");
+      break;
+    case ActuatorKind::kVelocityServo:
+      if (actuator.kp != 0.0)
+        throw ModelError(who + ": a velocity servo takes kd only (tau = kd (target - rate))");
+      if (actuator.kd == 0.0) throw ModelError(who + ": a velocity servo needs kd > 0");
+      break;
+  }
+  auto limit = [&](double& v, double rated, const char* what) {
+    if (std::isnan(v) || v <= 0.0)
+      throw ModelError(who + ": " + what + " must be > 0 (got " + numberText(v) + ")");
+    if (std::isinf(v)) v = rated;
+  };
+  limit(actuator.max_effort, j.elements.rated_effort, "effort limit");
+  limit(actuator.max_velocity, j.elements.rated_velocity, "velocity limit");
+  j.elements.actuator = std::move(actuator);
 }
 
 int ModelBuilder::addJointCoupling(const std::string& name, int leader, int follower,

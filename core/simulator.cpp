@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "core/flush_denormals.hpp"
 
@@ -20,6 +22,14 @@ void Simulator::setState(const State& state) {
   state_ = state;
   evaluated_ = false;
   energy_ = makeEnergyGuard();
+}
+
+void Simulator::setActuatorCommand(int joint, double command) {
+  if (std::isinf(command))
+    throw std::invalid_argument("actuator command must be finite (or NaN for the signal)");
+  if (!dynamics_.setActuatorCommand(joint, command))
+    throw std::invalid_argument("joint " + std::to_string(joint) + " has no actuator");
+  evaluated_ = false;
 }
 
 const Workspace& Simulator::current() {

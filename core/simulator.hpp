@@ -88,6 +88,11 @@ class Simulator {
   const State& state() const { return state_; }
   void setState(const State& state);
   const StepStats& stats() const { return stats_; }
+  // Commands joint `joint`'s actuator from now on, in place of its target signal (a
+  // controller outside the model: held over each step, zero-order), NaN to return to the
+  // signal; the current evaluation is dropped. Throws std::invalid_argument when the joint
+  // has no actuator or the command is infinite.
+  void setActuatorCommand(int joint, double command);
 
   // Advances by the model's time step.
   StepStatus step();

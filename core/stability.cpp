@@ -288,7 +288,7 @@ StabilityReport estimateStableStep(const Model& model) {
   std::vector<bool> noted(model.materials.size(), false);  // one note per material
   double drive_speed = 0.0;  // fastest prescribed motion: kinematic bodies, moving surfaces
   for (const Body& b : model.bodies) {
-    drive_speed = std::max(drive_speed, b.surface_velocity.norm());
+    drive_speed = std::max(drive_speed, b.surfaceSpeedBound(model.options.duration));
     if (b.kind != BodyKind::kDynamic) drive_speed = std::max(drive_speed, b.velocity.norm());
   }
   for (const Joint& joint : model.joints)  // a slider driven along its axis
@@ -481,7 +481,7 @@ StabilityReport estimateStableStep(const Model& model) {
   }
   // Joint elements on the coordinate's inertia (core/joint_forces.hpp): spring and limit
   // stiffness, damping and the friction's sticking slope (both held to I_q / (2 h) at fixed
-  // steps).
+  // steps), a servo's gains.
   const bool fixed_step =
       integrator == IntegratorType::kRk4 || integrator == IntegratorType::kSemiImplicitEuler;
   const double h = model.options.time_step;
@@ -570,6 +570,10 @@ StabilityReport estimateStableStep(const Model& model) {
     if (damping > 0.0)
       consider(0.0, damping / inertia,
                [&] { return who(el.friction ? "damping and friction" : "damping"); });
+    // A servo: a spring kp and damper kd to its target (core/joint_actuator.hpp), not capped.
+    if (const auto& a = el.actuator; a && a->kind != ActuatorKind::kMotor)
+      consider(a->kp / inertia, a->kd / inertia,
+               [&] { return who(("actuator '" + a->name + "'").c_str()); });
   }
   return report;
 }

@@ -91,7 +91,8 @@
 //                  so that at the limit the numerical chatter stays below the stick speed;
 //   joint elements (revolute, prismatic): m = the coordinate's inertia (coordinateInertia in
 //                  core/joint_forces.hpp, a light link's few 1e-6 kg m^2 included), k = the
-//                  spring's and the limit's stiffness, c = damping plus the friction's
+//                  spring's and the limit's stiffness, a servo's kp with its own c = kd
+//                  (core/joint_actuator.hpp, not held), c = damping plus the friction's
 //                  sticking slope mu'(v) N r^2 (as for contacts; N: the constant load, or the
 //                  child's weight for a reaction load), c held to m / (2 h) at a fixed step as
 //                  the joint forces hold it (so it never bounds the step there; for dopri5 it

@@ -9,6 +9,7 @@
 
 #include "contact/contact_point.hpp"
 #include "core/contact_pair.hpp"
+#include "core/joint_actuator.hpp"
 #include "core/math.hpp"
 
 namespace tribo {
@@ -71,6 +72,12 @@ struct Workspace {
   // Per model joint: the friction force [N] or torque [N m] on its coordinate at this
   // evaluation (joint friction of any law and load; 0 for joints without friction).
   std::vector<double> joint_friction;
+  // Per model joint: its actuator's target, effort and saturation at this evaluation
+  // (core/joint_actuator.hpp; zero for joints without one).
+  std::vector<ActuatorOutput> actuator_output;
+  // Per body: its surface velocity at this evaluation's time, body's geometry frames
+  // (Body::surfaceVelocityAt; zero for bodies without one).
+  std::vector<Vec3> surface_velocity;
 };
 
 }  // namespace tribo

@@ -37,6 +37,7 @@ const std::vector<std::string>& knownChannelGroups() {
     n.emplace_back("friction_states");
     n.emplace_back("energy");
     n.emplace_back("loads");
+    n.emplace_back("actuators");
     return n;
   }();
   return names;
@@ -92,6 +93,11 @@ std::vector<std::string> channelColumns(const Model& model,
   if (hasGroup(groups, "loads"))
     for (const AppliedLoad& l : model.loads)
       for (const char* suffix : {".fx", ".fy", ".fz"}) names.push_back(l.name + suffix);
+  if (hasGroup(groups, "actuators"))
+    for (const Joint& j : model.joints)
+      if (const auto& a = j.elements.actuator)
+        for (const char* suffix : {".target", ".effort", ".saturated"})
+          names.push_back(a->name + suffix);
   return names;
 }
 
@@ -101,6 +107,16 @@ std::string channelUnit(const Model& model, std::string_view column) {
   if (dot == std::string_view::npos) return "";
   const std::string_view owner = column.substr(0, dot), part = column.substr(dot + 1);
   if (owner == "energy") return part == "input_power" ? "W" : "J";
+  for (const Joint& j : model.joints) {
+    const auto& a = j.elements.actuator;
+    if (!a || a->name != owner) continue;
+    const bool turns = j.type == JointType::kRevolute;
+    if (part == "effort" || (part == "target" && a->kind == ActuatorKind::kMotor))
+      return turns ? "N m" : "N";
+    if (part == "target" && a->kind == ActuatorKind::kPositionServo) return turns ? "rad" : "m";
+    if (part == "target") return turns ? "rad/s" : "m/s";
+    return "";  // saturated: 0 or 1
+  }
   for (const Joint& j : model.joints) {
     if (j.name != owner || (j.type != JointType::kRevolute && j.type != JointType::kPrismatic))
       continue;

@@ -30,6 +30,10 @@
 //                                                       (core/energy.hpp) [J, W]
 //   loads               LOAD.fx LOAD.fy LOAD.fz         each applied load's force, world [N]
 //                                                       (core/applied_load.hpp)
+//   actuators           ACT.target ACT.effort ACT.saturated  each joint actuator's command,
+//                                                       its effort after saturation [N m or
+//                                                       N] and 1 while saturated, else 0
+//                                                       (core/joint_actuator.hpp)
 // Default: position, velocity, contact (what trajectory.csv always held).
 // A scene with automatic contacts has a pair for every two geometries that may touch: `pairs`
 // then writes three columns for each, and listing them costs time and memory quadratic in

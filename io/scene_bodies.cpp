@@ -4,12 +4,14 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <utility>
 
 #include "contact/shape_inertia.hpp"
 #include "io/mesh_loader.hpp"
 #include "io/package_paths.hpp"
 #include "io/scene_keys.hpp"
 #include "io/scene_reader.hpp"
+#include "io/scene_signal.hpp"
 #include "io/urdf_reader.hpp"
 
 namespace tribo::io::scene_detail {
@@ -24,7 +26,14 @@ void Loader::readBody(const Value& v) {
   body.orientation = orientation(m);
   body.velocity = m.vec3("velocity", Vec3::Zero());
   body.angular_velocity = m.vec3("angular_velocity", Vec3::Zero());
-  body.surface_velocity = m.vec3("surface_velocity", Vec3::Zero());
+  if (auto s = m.get("surface_velocity")) {
+    // Numbers as before; a signal in any component makes the surface's speed vary in time.
+    std::array<Signal, 3> signals = readSignals3(*s);
+    for (int i = 0; i < 3; ++i) body.surface_velocity[i] = signals[i].value(0.0);
+    if (std::any_of(signals.begin(), signals.end(),
+                    [](const Signal& c) { return c.kind() != Signal::Kind::kConstant; }))
+      body.surface_velocity_signal = std::move(signals);
+  }
   std::vector<GeometrySpec> geometries;
   if (auto g = m.get("geometry"))
     for (const Value& item : g->items("geometries", true)) geometries.push_back(readGeometry(item));

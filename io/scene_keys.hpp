@@ -18,10 +18,10 @@ namespace tribo::io::scene_keys {
 
 using List = std::vector<std::string>;
 
-inline const List kTop{"parameters", "simulation",    "bodies",    "robots",
-                       "joints",     "springs",       "bushings",  "torsional_springs",
-                       "loads",      "friction_laws", "materials", "contacts",
-                       "output"};
+inline const List kTop{"parameters", "simulation", "bodies",        "robots",
+                       "joints",     "springs",    "bushings",      "torsional_springs",
+                       "loads",      "actuators",  "friction_laws", "materials",
+                       "contacts",   "output"};
 inline const List kSimulation{"duration",  "time_step",      "integrator",  "gravity",
                               "baumgarte", "collision",      "rtol",        "atol",
                               "max_step",  "event_location", "constraints", "threads"};
@@ -63,6 +63,8 @@ inline const List kBushing{"name",
 inline const List kFrame{"position", "orientation", "rpy"};
 inline const List kTorsionalSpring{"name", "a", "b", "axis", "stiffness", "damping", "rest_angle"};
 inline const List kLoad{"name", "body", "force", "torque", "frame", "point"};
+inline const List kActuator{"name", "joint", "type",         "target",
+                            "kp",   "kd",    "effort_limit", "velocity_limit"};
 // A signal mapping's one key, its kind (io/scene_signal.hpp), and each kind's keys.
 inline const List kSignal{"ramp", "step", "smooth_step", "table", "sines"};
 inline const List kRampSignal{"rate", "start", "initial"};
@@ -87,6 +89,7 @@ inline const List kDriveModes{"position", "velocity"};
 inline const List kJointFrictionLoads{"reaction", "constant"};
 inline const List kSummaryCoordinates{"x", "y", "z"};
 inline const List kLoadFrames{"world", "body"};
+inline const List kActuatorTypes{"motor", "position", "velocity"};
 inline const List kOtherWords{"true", "false", "world", "auto", "tabulated"};
 
 // Every table above with the section it belongs to, for generators and tests.
@@ -114,6 +117,7 @@ inline const std::vector<Section>& sections() {
                                         {"bushings[].frame_a / frame_b", &kFrame},
                                         {"torsional_springs[]", &kTorsionalSpring},
                                         {"loads[]", &kLoad},
+                                        {"actuators[]", &kActuator},
                                         {"loads[] signal", &kSignal},
                                         {"loads[] signal.ramp", &kRampSignal},
                                         {"loads[] signal.step", &kStepSignal},
@@ -133,6 +137,7 @@ inline const std::vector<Section>& sections() {
                                         {"(words) joint friction load", &kJointFrictionLoads},
                                         {"(words) summary coordinate", &kSummaryCoordinates},
                                         {"(words) load frame", &kLoadFrames},
+                                        {"(words) actuator type", &kActuatorTypes},
                                         {"(words) other", &kOtherWords}};
   return all;
 }

@@ -9,17 +9,6 @@
 
 namespace tribo::io::scene_detail {
 
-namespace {
-
-std::array<Signal, 3> components(const Value& v) {
-  if (!v.node().IsSequence() || v.node().size() != 3)
-    v.fail("expected 3 components [x, y, z] (each a number or a signal), found " + v.found());
-  const std::vector<Value> items = v.items("components");
-  return {readSignal(items[0]), readSignal(items[1]), readSignal(items[2])};
-}
-
-}  // namespace
-
 void Loader::readLoad(const Value& v) {
   const Map m(v, scene_keys::kLoad);
   AppliedLoad load;
@@ -28,8 +17,8 @@ void Loader::readLoad(const Value& v) {
   const auto force = m.get("force");
   const auto torque = m.get("torque");
   if (!force && !torque) v.fail("load '" + load.name + "' needs a force, a torque or both");
-  if (force) load.force = components(*force);
-  if (torque) load.torque = components(*torque);
+  if (force) load.force = readSignals3(*force);
+  if (torque) load.torque = readSignals3(*torque);
   if (auto frame = m.get("frame"))
     load.frame = frame->choice(scene_keys::kLoadFrames) == 0 ? LoadFrame::kWorld : LoadFrame::kBody;
   load.point = m.vec3("point", Vec3::Zero());

@@ -62,6 +62,8 @@ Scene Loader::load(const std::vector<std::string>& overrides, const RunSettings&
     for (const Value& v : s->items("torsional_springs", true)) readTorsionalSpring(v);
   if (auto s = m.get("loads"))
     for (const Value& v : s->items("loads", true)) readLoad(v);
+  if (auto s = m.get("actuators"))
+    for (const Value& v : s->items("actuators", true)) readActuator(v);
   if (auto f = m.get("friction_laws")) readFrictionLaws(*f);
   readJointReferences();
   if (auto mat = m.get("materials"))

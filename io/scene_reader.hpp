@@ -9,6 +9,7 @@
 //   io/scene_joints.cpp     joints, joint references, constraint options, springs,
 //                           bushings, torsional springs
 //   io/scene_loads.cpp      applied loads (their signals: io/scene_signal.hpp)
+//   io/scene_actuators.cpp  joint actuators (motors, servos)
 //   io/scene_materials.cpp  friction laws, materials, normal laws, contacts
 // Internal to io/ (it includes yaml-cpp): io/scene_loader.cpp uses it; nothing outside io/
 // includes it.
@@ -96,6 +97,8 @@ class Loader {
 
   // io/scene_loads.cpp
   void readLoad(const Value& v);
+  // io/scene_actuators.cpp
+  void readActuator(const Value& v);
 
   // io/scene_materials.cpp
   std::shared_ptr<const friction::FrictionLaw> frictionLaw(const Value& name);

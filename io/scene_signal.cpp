@@ -68,4 +68,11 @@ Signal readSignal(const Value& v) {
   return guarded(body, [&] { return Signal::sines(std::move(terms)); });
 }
 
+std::array<Signal, 3> readSignals3(const Value& v) {
+  if (!v.node().IsSequence() || v.node().size() != 3)
+    v.fail("expected 3 components [x, y, z] (each a number or a signal), found " + v.found());
+  const std::vector<Value> items = v.items("components");
+  return {readSignal(items[0]), readSignal(items[1]), readSignal(items[2])};
+}
+
 }  // namespace tribo::io::scene_detail

@@ -8,11 +8,15 @@
 // Not here: expressions of t, tables from files.
 #pragma once
 
+#include <array>
+
 #include "core/signal.hpp"
 #include "io/scene_value.hpp"
 
 namespace tribo::io::scene_detail {
 
 Signal readSignal(const Value& v);
+// Three components [x, y, z], each a number or a signal.
+std::array<Signal, 3> readSignals3(const Value& v);
 
 }  // namespace tribo::io::scene_detail

@@ -256,6 +256,14 @@ UrdfModelResult addUrdfRobot(ModelBuilder& builder, const UrdfRobot& read,
     if (!scalar) continue;
     if (j.type != "continuous" && j.has_limits && j.upper >= j.lower)
       builder.setJointLimit(index, JointLimit{j.lower, j.upper, 0.0, 0.0});
+    if (j.has_limits) {
+      // <limit effort velocity>: the defaults of an actuator's saturation (a value of 0, which
+      // some files write for "not given", or one that is not finite rates nothing).
+      auto rated = [](double v) {
+        return std::isfinite(v) && v > 0.0 ? v : std::numeric_limits<double>::infinity();
+      };
+      builder.setJointRating(index, rated(j.effort), rated(j.velocity));
+    }
     if (j.damping > 0.0) builder.setJointDamping(index, j.damping);
     if (j.friction > 0.0) {
       JointFriction f;

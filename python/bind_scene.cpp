@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <cmath>
 #include <memory>
 
 #include "io/output_channels.hpp"
@@ -28,9 +29,7 @@ struct PyResult {
   std::string summary_text;
 };
 
-const char* statusName(const study::RunResult& r) {
-  return r.complete ? "complete" : r.interrupted ? "interrupted" : "diverged";
-}
+const char* statusName(const study::RunResult& r) { return study::runStatusName(r); }
 
 // A read-only array viewing column c of the result's recording; keeps the result alive.
 py::array columnArray(const py::object& owner, const PyResult& r, std::size_t c) {
@@ -74,7 +73,8 @@ io::RunSettings settingsFrom(const py::object& duration, const py::object& time_
 
 py::object runHandle(const SceneHandle& h, const py::object& duration, const py::object& time_step,
                      const py::object& integrator, const py::object& rtol, const py::object& atol,
-                     const py::object& output_interval) {
+                     const py::object& output_interval, const py::object& controller,
+                     double control_interval) {
   auto scene = std::make_shared<const io::Scene>(
       h.withSettings(settingsFrom(duration, time_step, integrator, rtol, atol, output_interval)));
   std::atomic<bool> stop{false};
@@ -90,6 +90,15 @@ py::object runHandle(const SceneHandle& h, const py::object& duration, const py:
       stop = true;
     }
   };
+  auto raised = std::make_shared<py::object>();
+  if (!controller.is_none()) {
+    if (!PyCallable_Check(controller.ptr()))
+      throw py::type_error("controller must be callable: f(control) -> None or dict");
+    if (!(control_interval >= 0.0) || !std::isfinite(control_interval))
+      throw py::value_error("control_interval must be finite and >= 0 (0: every step)");
+    options.controller = pythonController(controller, raised);
+    options.control_interval = control_interval;
+  }
   std::unique_ptr<PyResult> result;
   {
     py::gil_scoped_release release;
@@ -98,6 +107,11 @@ py::object runHandle(const SceneHandle& h, const py::object& duration, const py:
   raisePythonLawErrors(h.user_laws);  // a Python law's exception stopped the run
   result->summary_text = study::summaryJsonText(*scene, result->run);
   py::object owner = py::cast(std::move(result));
+  if (*raised && !raised->is_none()) {  // the controller's exception, with the partial result
+    raised->attr("result") = owner;
+    PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(raised->ptr())), raised->ptr());
+    throw py::error_already_set();
+  }
   if (by_signal) {
     py::object interrupt = py::reinterpret_borrow<py::object>(PyExc_KeyboardInterrupt)(
         "run interrupted; the partial result is this exception's `result`");
@@ -256,7 +270,12 @@ void bindScene(py::module_& m) {
       .def("run", &runHandle, py::arg("duration") = py::none(), py::arg("time_step") = py::none(),
            py::arg("integrator") = py::none(), py::arg("relative_tolerance") = py::none(),
            py::arg("absolute_tolerance") = py::none(), py::arg("output_interval") = py::none(),
-           "Runs the scene (settings given replace the scene's own) and returns a Result.")
+           py::arg("controller") = py::none(), py::arg("control_interval") = 0.0,
+           "Runs the scene (settings given replace the scene's own) and returns a Result. "
+           "controller: f(tribo.Control) called before the first step and every "
+           "control_interval [s] (0: every step) to command the scene's actuators; an "
+           "exception in it stops the run and is raised with the partial Result as its "
+           "`result`.")
       .def("__repr__", [](const SceneHandle& h) {
         return "<tribo.Scene " + h.scene.path + ", " +
                std::to_string(h.scene.model->bodies.size()) + " bodies>";

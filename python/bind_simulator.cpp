@@ -8,8 +8,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
+#include <string>
 
 #include "core/simulator.hpp"
 #include "python/bindings.hpp"
@@ -195,6 +197,17 @@ void bindSimulator(py::module_& m) {
                                for (const Body& b : s.model->bodies) names.push_back(b.name);
                                return names;
                              })
+      .def(
+          "set_actuator",
+          [](PySimulator& s, const std::string& name, double value) {
+            const auto joint = s.model->findActuator(name);
+            if (!joint) throw py::key_error("no actuator '" + name + "'");
+            if (std::isinf(value)) throw py::value_error("actuator command must be finite");
+            s.sim.setActuatorCommand(*joint, value);
+          },
+          py::arg("actuator"), py::arg("value"),
+          "Commands an actuator (its target: effort, position or rate) from the next step on, "
+          "in place of its target signal; NaN returns it to the signal.")
       .def(
           "contacts", [](PySimulator& s) { return contactsOf(*s.model, s.sim.current()); },
           "The contact points of the current state: position, normal (A into B), depth, "

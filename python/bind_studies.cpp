@@ -6,6 +6,7 @@
 // (study/tradeoff.hpp) and returns its rows. The GIL is released while they run. Not here:
 // plotting.
 #include <pybind11/complex.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <cerrno>
@@ -137,10 +138,19 @@ py::list runSweep(const py::object& scene, const py::dict& grid, const py::objec
 }
 
 // modes.json's document as a dict (study/modes/modes_report.hpp spells its fields).
-py::object runModes(const SceneHandle& scene, bool settle, double settle_time) {
+py::array_t<double> matrixArray(const Eigen::MatrixXd& m) {
+  py::array_t<double> a({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols())});
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      a.mutable_at(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = m(i, j);
+  return a;
+}
+
+py::object runModes(const SceneHandle& scene, bool settle, double settle_time, bool matrices) {
   study::ModesSpec spec;
   spec.steady.settle = settle;
   spec.steady.settle_time = settle_time;
+  spec.linear_model = matrices;
   study::ModesResult r;
   try {
     py::gil_scoped_release release;
@@ -150,7 +160,18 @@ py::object runModes(const SceneHandle& scene, bool settle, double settle_time) {
     throw;
   }
   raisePythonLawErrors(scene.user_laws);
-  return jsonToPython(study::modesJsonText(scene.scene, r));
+  py::object out = jsonToPython(study::modesJsonText(scene.scene, r));
+  if (r.linear) {
+    py::dict lm;
+    lm["A"] = matrixArray(r.linear->a);
+    lm["B"] = matrixArray(r.linear->b);
+    lm["K"] = matrixArray(r.linear->k);
+    lm["C"] = matrixArray(r.linear->c);
+    lm["states"] = r.linear->states;
+    lm["inputs"] = r.linear->inputs;
+    out["linear_model"] = lm;
+  }
+  return out;
 }
 
 py::list runTradeoff(const py::object& scene, const py::object& set,
@@ -213,11 +234,13 @@ void bindStudies(py::module_& m) {
         "results.csv (numbers as floats). out=None: a temporary folder, removed afterwards; "
         "with out, the folder `tribo sweep --out` writes (resumable). jobs=0: one per core.");
   m.def("modes", &runModes, py::arg("scene"), py::arg("settle") = false,
-        py::arg("settle_time") = 0.0,
+        py::arg("settle_time") = 0.0, py::arg("matrices") = false,
         "modes(scene, settle=False) -> dict: the linear stability of the scene's steady "
         "sliding, as `tribo modes` computes it: modes.json's document (modes sorted by "
         "decreasing growth rate, 'unstable_count' the unstable ones; a figure that is not "
-        "finite is None). Raises NoSteadyState, ModesError.");
+        "finite is None). matrices=True adds 'linear_model': the arrays A, B, K, C of y' = A y + "
+        "B w with the names of their 'states' and 'inputs' (the loads' components and the "
+        "actuators' targets). Raises NoSteadyState, ModesError.");
   m.def("tradeoff", &runTradeoff, py::arg("scene"), py::arg("set") = py::none(),
         py::arg("integrators") = std::vector<std::string>{}, py::arg("window") = 10.0,
         py::arg("repeat") = 1,

@@ -11,8 +11,14 @@
 
 #include <pybind11/pybind11.h>
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace tribo {
+class Simulator;
+}
 
 namespace tribo::python {
 
@@ -22,6 +28,7 @@ void bindErrors(py::module_& m);
 void bindFriction(py::module_& m);
 void bindScene(py::module_& m);
 void bindSimulator(py::module_& m);
+void bindControl(py::module_& m);
 void bindStudies(py::module_& m);
 
 // "NAME=VALUE" strings (the command line's --set) from a dict of name -> str, int, float or
@@ -29,6 +36,11 @@ void bindStudies(py::module_& m);
 std::vector<std::string> overridesFrom(const py::object& set);
 // A list of str / os.PathLike (or None) as strings.
 std::vector<std::string> pathsFrom(const py::object& paths);
+// The run's controller hook (study::RunOptions::controller) calling the Python callable `f`
+// with a tribo.Control (python/bind_control.cpp); an exception in `f` stops the run and is
+// kept in `raised` for the caller to raise again.
+std::function<std::string(Simulator&)> pythonController(py::object f,
+                                                        std::shared_ptr<py::object> raised);
 // Python's json.loads of a JSON text (the engine's own JSON, e.g. summary.json's).
 py::object jsonToPython(const std::string& text);
 

@@ -12,5 +12,6 @@ PYBIND11_MODULE(tribo, m) {
   tribo::python::bindFriction(m);
   tribo::python::bindScene(m);
   tribo::python::bindSimulator(m);
+  tribo::python::bindControl(m);
   tribo::python::bindStudies(m);
 }

@@ -89,7 +89,7 @@ std::string summaryJsonText(const io::Scene& scene, const RunResult& result) {
   const Model& model = *scene.model;
   const SimulationOptions& o = model.options;
   nlohmann::json j;
-  j["status"] = result.complete ? "complete" : result.interrupted ? "interrupted" : "diverged";
+  j["status"] = runStatusName(result);
   if (!result.complete && !result.interrupted) {
     j["error"] = result.message;
     // Where the run stopped: the trajectory ends at the last good state before this time.

@@ -165,6 +165,22 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   Simulator sim(scene.model);
   sim.setStopRequest(options.stop);
   const auto start = std::chrono::steady_clock::now();
+  double next_control = 0.0;
+  // The controller's turn before the step from the current state: false when it stopped the run.
+  const auto control = [&] {
+    if (!options.controller || sim.state().time < next_control - 0.5 * dt) return true;
+    next_control += std::max(options.control_interval, dt);
+    const std::string stop = options.controller(sim);
+    if (stop.empty()) return true;
+    result.complete = false;
+    result.message = stop;
+    result.stop.ok = false;
+    result.stop.message = stop;
+    result.stop.time = sim.state().time;
+    result.stop.quantity = "controller";
+    return false;
+  };
+  const bool controlled = control();
   result.trajectory.record(sim.state(), sim.current());
   // The profile is of the steps: the first row's evaluation (cold, outside any step) would
   // count in the stages and not in the step.
@@ -173,7 +189,7 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   // at the state the result reports and its rows are those of an uninterrupted run.
   State row_state = sim.state();
   double next_check = monitor.interval;
-  result.complete = true;
+  result.complete = controlled;
   bool at_row = true;  // the last row recorded is the current state
   const auto interrupt = [&] {
     if (!at_row) sim.setState(row_state);
@@ -183,11 +199,12 @@ RunResult runScene(const io::Scene& scene, const RunOptions& options) {
   };
   int since_clock = 0;
   auto last_progress = start;
-  for (long i = 0; i < steps; ++i) {
+  for (long i = 0; i < steps && controlled; ++i) {
     if (options.stop && options.stop->load(std::memory_order_relaxed)) {
       interrupt();
       break;
     }
+    if (i > 0 && !control()) break;
     const StepStatus status = sim.step();
     if (status.interrupted) {
       interrupt();

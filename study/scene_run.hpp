@@ -69,6 +69,13 @@ struct RunOptions {
   double progress_interval = 0.25;
   // Time each stage of the step into RunResult::stats.profile (core/stage_profile.hpp).
   bool profile = false;
+  // A controller outside the model: called before the first row and then before every step
+  // that starts at or after the next multiple of `control_interval` (every step when 0),
+  // with the simulator, to command its actuators (Simulator::setActuatorCommand; held over
+  // the steps until the next call). A non-empty return stops the run there, not complete,
+  // with that message as its status and every row so far kept.
+  std::function<std::string(Simulator&)> controller;
+  double control_interval = 0.0;  // [s]
 };
 
 // Throws OutputTooLarge (study/output_budget.hpp) when rows are kept and would not fit the
@@ -76,6 +83,13 @@ struct RunOptions {
 // when a scratch file cannot be written.
 RunResult runScene(const io::Scene& scene, const RunOptions& options);
 RunResult runScene(const io::Scene& scene, const RunMonitor& monitor = {});
+// A run's status in one word: complete, interrupted (the stop request), stopped (its
+// controller said so, RunOptions::controller) or diverged (a failed step).
+inline const char* runStatusName(const RunResult& r) {
+  if (r.complete) return "complete";
+  if (r.interrupted) return "interrupted";
+  return r.stop.quantity == "controller" ? "stopped" : "diverged";
+}
 
 // The oscillation summary of a recorded trajectory for a summary spec.
 OscillationSummary summarize(const TrajectoryRecorder& trajectory, const Model& model,

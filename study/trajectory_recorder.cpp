@@ -27,6 +27,10 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
   friction_states_ = io::hasGroup(groups, "friction_states");
   energy_ = io::hasGroup(groups, "energy");
   loads_ = io::hasGroup(groups, "loads");
+  if (io::hasGroup(groups, "actuators"))
+    for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
+      if (model.joints[static_cast<std::size_t>(j)].elements.actuator)
+        actuated_joints_.push_back(j);
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
     if (joints_ && hasScalarCoordinate(model.joints[static_cast<std::size_t>(j)].type))
       joints_recorded_.push_back({j, jointCoordinate(model.joints[static_cast<std::size_t>(j)])});
@@ -173,6 +177,12 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
   if (loads_)
     for (const Vec3& f : ws.load_force)
       for (int i = 0; i < 3; ++i) row_[col++] = f[i];
+  for (const int j : actuated_joints_) {
+    const ActuatorOutput& a = ws.actuator_output[static_cast<std::size_t>(j)];
+    row_[col++] = a.target;
+    row_[col++] = a.effort;
+    row_[col++] = a.saturated ? 1.0 : 0.0;
+  }
   for (RowSink* sink : sinks_) sink->row(row_);
   if (keep_rows_)
     for (std::size_t c = 0; c < row_.size(); ++c) data_[c].push_back(row_[c]);

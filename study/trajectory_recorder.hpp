@@ -77,6 +77,7 @@ class TrajectoryRecorder {
   bool position_ = false, orientation_ = false, rpy_ = false, velocity_ = false,
        angular_velocity_ = false, contact_ = false, friction_force_ = false, pairs_ = false,
        joints_ = false, friction_states_ = false, energy_ = false, loads_ = false;
+  std::vector<int> actuated_joints_;  // joints whose actuator is recorded, in model order
   struct RecordedJoint {
     int joint = -1;
     JointCoordinate coordinate;  // fixed per model: built once

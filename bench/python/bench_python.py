@@ -5,7 +5,10 @@
     against mu called once per speed from Python;
   - a friction law written in Python (roh_yoo as a Python function) against the built-in
     one on the belt (20 s): the extra time per law call (one call per contact point and
-    force evaluation: 4 corners).
+    force evaluation: 4 corners);
+  - a PD controller written in Python (run(controller=f), called every step) against the same
+    servo written in the scene (scenes/experiments/servo_stick_slip.yaml, 10 s, rk4 at
+    50 us): the extra time per controller call.
 Prints the figures; asserts nothing (timings are not tests).
 
     PYTHONPATH=build/python python3 bench/python/bench_python.py [--repeat N]
@@ -79,6 +82,23 @@ def main():
     print(f"belt 20 s: built-in roh_yoo {builtin * 1e3:.1f} ms, Python roh_yoo "
           f"{python * 1e3:.1f} ms: {(python - builtin) / calls * 1e9:.0f} ns added per law call "
           f"({calls} calls)")
+
+    servo_file = BELT.parent / "experiments" / "servo_stick_slip.yaml"
+    servo_scene = tribo.load_scene(servo_file, set={"duration": 10})
+    motor_text = servo_file.read_text().replace(
+        "type: position, target: {ramp: {rate: $v}}, kp: $kp, kd: $kd",
+        "type: motor, target: 0")
+    motor_scene = tribo.load_scene(motor_text, set={"duration": 10})
+
+    def pd(c):
+        c.set("servo", 2.0 * (0.1 * c.time - c.q[0]) + 0.0 * (0.1 - c.qd[0]))
+
+    in_scene = best(servo_scene.run, args.repeat)
+    in_python = best(lambda: motor_scene.run(controller=pd), args.repeat)
+    steps = servo_scene.run().summary["run"]["steps"]
+    print(f"servo 10 s ({steps} steps): in the scene {in_scene * 1e3:.1f} ms, as a Python "
+          f"controller {in_python * 1e3:.1f} ms: {(in_python - in_scene) / steps * 1e6:.2f} us "
+          f"added per controller call ({in_python / in_scene:.2f}x)")
 
 
 if __name__ == "__main__":

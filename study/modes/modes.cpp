@@ -177,6 +177,10 @@ ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
   out.warnings = lin.warnings;
   out.warnings.insert(out.warnings.end(), solved.warnings.begin(), solved.warnings.end());
   out.evaluations = out.steady.evaluations + lin.evaluations + 1;
+  if (spec.linear_model) {
+    out.linear = linearModel(dynamics, coords, x, lin);
+    out.evaluations += 2 * static_cast<int>(out.linear->inputs.size());
+  }
   for (const Mode& m : out.modes) out.unstable_count += m.unstable ? 1 : 0;
   return out;
 }

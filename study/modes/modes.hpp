@@ -26,10 +26,12 @@
 #pragma once
 
 #include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "io/scene_loader.hpp"
+#include "study/modes/input_matrix.hpp"
 #include "study/modes/linearization.hpp"
 #include "study/modes/modes_error.hpp"
 #include "study/modes/sparse_modes.hpp"
@@ -47,7 +49,8 @@ struct ModesSpec {
   double check_tolerance = 1e-4;   // finite-difference step check (study/modes/linearization.hpp)
   double growth_tolerance = 1e-6;  // sigma above this is unstable [1/s]
   EigenSolverChoice solver = EigenSolverChoice::kAuto;
-  int sparse_modes = 12;  // modes the sparse solver returns (a complex pair once)
+  int sparse_modes = 12;      // modes the sparse solver returns (a complex pair once)
+  bool linear_model = false;  // also the matrices A, B, K, C (study/modes/input_matrix.hpp)
 };
 
 // Which solver gave the modes, and the sparse one's figures (zero for the dense one).
@@ -89,9 +92,10 @@ struct ModesResult {
   double worst_disagreement = 0.0;
   std::vector<std::string> warnings;
   SolverReport solver;
-  double steady_seconds = 0.0;     // wall time of the steady-state search
-  double linearize_seconds = 0.0;  // wall time of the linearization and eigenvalues
-  int evaluations = 0;             // of Dynamics::evaluate, in all
+  double steady_seconds = 0.0;        // wall time of the steady-state search
+  double linearize_seconds = 0.0;     // wall time of the linearization and eigenvalues
+  int evaluations = 0;                // of Dynamics::evaluate, in all
+  std::optional<LinearModel> linear;  // with ModesSpec::linear_model
 
   // The mode with the largest growth rate (modes is never empty).
   const Mode& leading() const { return modes.front(); }
