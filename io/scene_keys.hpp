@@ -64,11 +64,14 @@ inline const List kFrame{"position", "orientation", "rpy"};
 inline const List kTorsionalSpring{"name", "a", "b", "axis", "stiffness", "damping", "rest_angle"};
 inline const List kLoad{"name", "body", "force", "torque", "frame", "point"};
 // A signal mapping's one key, its kind (io/scene_signal.hpp), and each kind's keys.
-inline const List kSignal{"ramp", "step", "smooth_step", "table", "sines"};
+inline const List kSignal{"ramp", "step", "smooth_step", "table", "sines", "expression"};
 inline const List kRampSignal{"rate", "start", "initial"};
 inline const List kStepSignal{"time", "before", "after"};
 inline const List kSmoothStepSignal{"start", "end", "before", "after"};
 inline const List kSineTerm{"amplitude", "frequency", "phase", "offset"};
+inline const List kTableSignal{"points", "file", "column", "interpolation"};
+inline const List kExpressionSignal{"value", "derivative", "time_scale"};
+inline const List kInterpolations{"linear", "cubic"};
 inline const List kMaterial{"name", "normal", "friction", "surfaces", "default"};
 inline const List kNormal{"law",       "stiffness",   "damping",     "exponent",
                           "max_depth", "restitution", "impact_speed"};
@@ -119,6 +122,8 @@ inline const std::vector<Section>& sections() {
                                         {"loads[] signal.step", &kStepSignal},
                                         {"loads[] signal.smooth_step", &kSmoothStepSignal},
                                         {"loads[] signal.sines[]", &kSineTerm},
+                                        {"loads[] signal.table", &kTableSignal},
+                                        {"loads[] signal.expression", &kExpressionSignal},
                                         {"materials[]", &kMaterial},
                                         {"materials[].normal", &kNormal},
                                         {"contacts[]", &kContact},
@@ -133,6 +138,7 @@ inline const std::vector<Section>& sections() {
                                         {"(words) joint friction load", &kJointFrictionLoads},
                                         {"(words) summary coordinate", &kSummaryCoordinates},
                                         {"(words) load frame", &kLoadFrames},
+                                        {"(words) table interpolation", &kInterpolations},
                                         {"(words) other", &kOtherWords}};
   return all;
 }
