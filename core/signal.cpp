@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/cubic_spline.hpp"
 #include "core/number_text.hpp"
 
 namespace tribo {
@@ -16,6 +17,25 @@ void checkFinite(const char* kind, const char* what, double x) {
   if (!std::isfinite(x))
     throw std::invalid_argument(std::string(kind) + ": " + what + " must be finite (got " +
                                 numberText(x) + ")");
+}
+
+void checkIncreasing(const char* kind, const std::vector<std::pair<double, double>>& points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    checkFinite(kind, "time", points[i].first);
+    checkFinite(kind, "value", points[i].second);
+    if (i > 0 && !(points[i].first > points[i - 1].first))
+      throw std::invalid_argument(std::string(kind) +
+                                  ": times must be strictly increasing (point " +
+                                  std::to_string(i) + " at t = " + numberText(points[i].first) +
+                                  " follows t = " + numberText(points[i - 1].first) + ")");
+  }
+}
+
+// The interval [t_i, t_{i+1}) holding t, for t_0 < t < t_n: i.
+std::size_t segment(const std::vector<std::pair<double, double>>& points, double t) {
+  const auto next = std::upper_bound(points.begin(), points.end(), t,
+                                     [](double x, const auto& p) { return x < p.first; });
+  return static_cast<std::size_t>(next - points.begin()) - 1;
 }
 
 }  // namespace
@@ -70,18 +90,61 @@ Signal Signal::smoothStep(double start, double before, double end, double after)
 
 Signal Signal::table(std::vector<std::pair<double, double>> points) {
   if (points.empty()) throw std::invalid_argument("table: needs at least one [t, v] point");
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    checkFinite("table", "time", points[i].first);
-    checkFinite("table", "value", points[i].second);
-    if (i > 0 && !(points[i].first > points[i - 1].first))
-      throw std::invalid_argument("table: times must be strictly increasing (point " +
-                                  std::to_string(i) + " at t = " + numberText(points[i].first) +
-                                  " follows t = " + numberText(points[i - 1].first) + ")");
-  }
+  checkIncreasing("table", points);
   Signal s;
   s.kind_ = Kind::kTable;
   s.points_ = std::move(points);
   return s;
+}
+
+Signal Signal::cubicTable(std::vector<std::pair<double, double>> points) {
+  if (points.size() < 2)
+    throw std::invalid_argument("cubic table: needs at least 2 points, found " +
+                                std::to_string(points.size()));
+  checkIncreasing("cubic table", points);
+  Signal s;
+  s.kind_ = Kind::kCubicTable;
+  s.curvatures_ = naturalSplineCurvatures(points);
+  s.points_ = std::move(points);
+  return s;
+}
+
+Signal Signal::function(std::function<double(double)> value,
+                        std::function<double(double)> derivative, std::vector<double> breakpoints,
+                        double time_scale) {
+  if (!value) throw std::invalid_argument("function: needs a value callable");
+  checkFinite("function", "time scale", time_scale);
+  if (!(time_scale > 0.0))
+    throw std::invalid_argument("function: time scale must be > 0 (got " + numberText(time_scale) +
+                                ")");
+  for (std::size_t i = 0; i < breakpoints.size(); ++i) {
+    checkFinite("function", "breakpoint", breakpoints[i]);
+    if (i > 0 && !(breakpoints[i] > breakpoints[i - 1]))
+      throw std::invalid_argument("function: breakpoints must be strictly increasing");
+  }
+  Signal s;
+  s.kind_ = Kind::kFunction;
+  s.function_ = std::move(value);
+  s.function_derivative_ = std::move(derivative);
+  s.breaks_ = std::move(breakpoints);
+  s.difference_step_ = 1e-3 * time_scale;
+  return s;
+}
+
+double Signal::numericDerivative(double t) const {
+  const double h = difference_step_;
+  const auto f = [&](int k) { return function_(t + k * h); };
+  // The breakpoint nearest t within (t - 2h, t + 2h], if any: stay on its right from it on
+  // (forward formula), on its left before it (backward formula).
+  const auto near = std::upper_bound(breaks_.begin(), breaks_.end(), t - 2.0 * h);
+  if (near != breaks_.end() && *near <= t + 2.0 * h) {
+    const double sign = t >= *near ? 1.0 : -1.0;
+    const int k = t >= *near ? 1 : -1;
+    return sign *
+           (-25.0 * f(0) + 48.0 * f(k) - 36.0 * f(2 * k) + 16.0 * f(3 * k) - 3.0 * f(4 * k)) /
+           (12.0 * h);
+  }
+  return (f(-2) - 8.0 * f(-1) + 8.0 * f(1) - f(2)) / (12.0 * h);
 }
 
 Signal Signal::sines(std::vector<Sine> terms) {
@@ -124,6 +187,12 @@ double Signal::value(double t) const {
       const auto& [t0, v0] = *(next - 1);
       return v0 + (v1 - v0) * ((t - t0) / (t1 - t0));
     }
+    case Kind::kCubicTable:
+      if (t <= points_.front().first) return points_.front().second;
+      if (t >= points_.back().first) return points_.back().second;
+      return splineValue(points_, curvatures_, segment(points_, t), t);
+    case Kind::kFunction:
+      return function_(t);
     case Kind::kSines: {
       double v = 0.0;
       for (const Sine& k : sines_)
@@ -155,6 +224,11 @@ double Signal::derivative(double t) const {
       const auto& [t0, v0] = *(next - 1);
       return (v1 - v0) / (t1 - t0);
     }
+    case Kind::kCubicTable:
+      if (t < points_.front().first || t >= points_.back().first) return 0.0;
+      return splineSlope(points_, curvatures_, segment(points_, t), t);
+    case Kind::kFunction:
+      return function_derivative_ ? function_derivative_(t) : numericDerivative(t);
     case Kind::kSines: {
       double d = 0.0;
       for (const Sine& k : sines_) {
@@ -175,7 +249,10 @@ std::vector<double> Signal::breakpoints() const {
       return {a_};
     case Kind::kSmoothStep:
       return {a_, c_};
-    case Kind::kTable: {
+    case Kind::kFunction:
+      return breaks_;
+    case Kind::kTable:
+    case Kind::kCubicTable: {
       std::vector<double> times;
       for (const auto& p : points_) times.push_back(p.first);
       return times;

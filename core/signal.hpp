@@ -10,13 +10,30 @@
 //                reference, "STEP"), continuous in value and slope
 //   table        piecewise linear through (t_i, v_i), t_i strictly increasing, held at v_0
 //                before t_0 and at v_n after t_n
+//   cubic table  the natural cubic spline through (t_i, v_i) (core/cubic_spline.hpp: C2,
+//                zero second derivative at both ends), held like the linear table outside
 //   sines        v(t) = sum_k offset_k + A_k sin(2 pi f_k t + phi_k)   (f in Hz, phi in rad)
+//   function     any callable v(t) (io/ builds one from an expression of t), with its
+//                derivative when the caller has one, else the five-point central difference
+//                f'(t) ~ (f(t-2h) - 8 f(t-h) + 8 f(t+h) - f(t+2h)) / (12 h), h = 1e-3 tau
+//                (Abramowitz & Stegun, Handbook of Mathematical Functions, 25.3.6), whose
+//                error is h^4 |f^(5)| / 30 plus rounding ~ 1.5 eps |f| / h + eps |t| |f'| / h.
+//                For A sin(2 pi t / P) relative to its slope's amplitude that is
+//                (2 pi h / P)^4 / 30 + 5e-17 P / h + 2e-16 |t| / h: 5e-11 at P = tau,
+//                5e-7 at P = tau / 10. tau is the signal's time scale, default 1 ms: 1e-6 or
+//                better for periods 1e-4 .. 1e3 s at |t| <= 1e3 s. Within 2 h of one of the
+//                function's breakpoints the stencil is one-sided, of the same order (the
+//                five-point forward or backward formula, A&S 25.3.6's companions), on the
+//                side that keeps the derivative right-continuous.
 // Derivatives at a breakpoint are right-continuous: the slope of what follows (a ramp's
 // rate at t0, a table's next segment's slope at t_i, 0 at a table's last time).
-// Not here: expressions of t, tables read from files, splines; honouring the breakpoints in
-// the adaptive integrators (a fixed step steps over them).
+// A function signal is as thread-safe as its callable: Signal copies it (std::function),
+// so a callable with mutable state must give each copy its own (io/time_expression.hpp).
+// Not here: reading expressions or files (io/), honouring the breakpoints in the adaptive
+// integrators (a fixed step steps over them), finding the kinks of a function by itself.
 #pragma once
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -24,7 +41,7 @@ namespace tribo {
 
 class Signal {
  public:
-  enum class Kind { kConstant, kRamp, kStep, kSmoothStep, kTable, kSines };
+  enum class Kind { kConstant, kRamp, kStep, kSmoothStep, kTable, kCubicTable, kSines, kFunction };
   struct Sine {
     double amplitude = 0.0;  // A
     double frequency = 0.0;  // f [Hz]
@@ -35,13 +52,21 @@ class Signal {
   Signal() = default;  // the constant 0
   // Each factory throws std::invalid_argument for a non-finite number, a smooth step whose
   // end is not after its start, a table with no point or with times not strictly increasing,
-  // a negative frequency.
+  // a negative frequency, a cubic table of fewer than 2 points, a function without a value
+  // callable, with breakpoints not strictly increasing or a time scale that is not > 0.
   static Signal constant(double value);
   static Signal ramp(double rate, double start = 0.0, double initial = 0.0);
   static Signal step(double time, double before, double after);
   static Signal smoothStep(double start, double before, double end, double after);
   static Signal table(std::vector<std::pair<double, double>> points);
+  static Signal cubicTable(std::vector<std::pair<double, double>> points);
   static Signal sines(std::vector<Sine> terms);
+  // v(t) = value(t); derivative(t) when given, else the five-point difference with
+  // h = 1e-3 time_scale (header comment). `breakpoints` are reported and keep the
+  // difference on one side of them.
+  static Signal function(std::function<double(double)> value,
+                         std::function<double(double)> derivative = {},
+                         std::vector<double> breakpoints = {}, double time_scale = 1e-3);
 
   Kind kind() const { return kind_; }
   // True for the constant 0 (a load component that is not there).
@@ -58,7 +83,13 @@ class Signal {
   // smooth step: a start, b before, c end, d after.
   double a_ = 0.0, b_ = 0.0, c_ = 0.0, d_ = 0.0;
   std::vector<std::pair<double, double>> points_;
+  std::vector<double> curvatures_;  // cubic table: the spline's second derivative at each t_i
   std::vector<Sine> sines_;
+  std::function<double(double)> function_, function_derivative_;
+  std::vector<double> breaks_;    // function: its breakpoints
+  double difference_step_ = 0.0;  // function: h of the five-point difference
+
+  double numericDerivative(double t) const;
 };
 
 }  // namespace tribo

@@ -172,4 +172,22 @@ double evaluateExpression(const std::string& text, const ParameterTable& paramet
   return Evaluator(parameters, where, key_path).value(text);
 }
 
+std::vector<std::pair<std::string, double>> referencedParameters(const std::string& text,
+                                                                 const ParameterTable& parameters,
+                                                                 const SourceLocation& where,
+                                                                 const std::string& key_path) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const std::string& name : references(text)) {
+    if (name.empty())
+      throw SceneError(where, key_path,
+                       "expression '" + text + "': '$' must be followed by a parameter name");
+    if (!parameters.find(name))
+      throw SceneError(where, key_path,
+                       "expression '" + text + "': unknown parameter '$" + name +
+                           "' (known: " + parameters.knownNames() + ")");
+    out.emplace_back(name, evaluateExpression("$" + name, parameters, where, key_path));
+  }
+  return out;
+}
+
 }  // namespace tribo::io

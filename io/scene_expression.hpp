@@ -16,6 +16,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/scene_parameters.hpp"
 
@@ -30,5 +32,13 @@ bool looksLikeExpression(const std::string& text);
 // between parameters, a non-finite result).
 double evaluateExpression(const std::string& text, const ParameterTable& parameters,
                           const SourceLocation& where, const std::string& key_path);
+
+// Each parameter `text` refers to as $name, with its value, in order of first appearance
+// (for expressions evaluated later, io/time_expression.hpp); the errors of
+// evaluateExpression for a '$' without a name, an unknown parameter or one that fails.
+std::vector<std::pair<std::string, double>> referencedParameters(const std::string& text,
+                                                                 const ParameterTable& parameters,
+                                                                 const SourceLocation& where,
+                                                                 const std::string& key_path);
 
 }  // namespace tribo::io

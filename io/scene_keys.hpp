@@ -66,11 +66,14 @@ inline const List kLoad{"name", "body", "force", "torque", "frame", "point"};
 inline const List kActuator{"name", "joint", "type",         "target",
                             "kp",   "kd",    "effort_limit", "velocity_limit"};
 // A signal mapping's one key, its kind (io/scene_signal.hpp), and each kind's keys.
-inline const List kSignal{"ramp", "step", "smooth_step", "table", "sines"};
+inline const List kSignal{"ramp", "step", "smooth_step", "table", "sines", "expression"};
 inline const List kRampSignal{"rate", "start", "initial"};
 inline const List kStepSignal{"time", "before", "after"};
 inline const List kSmoothStepSignal{"start", "end", "before", "after"};
 inline const List kSineTerm{"amplitude", "frequency", "phase", "offset"};
+inline const List kTableSignal{"points", "file", "column", "interpolation"};
+inline const List kExpressionSignal{"value", "derivative", "time_scale"};
+inline const List kInterpolations{"linear", "cubic"};
 inline const List kMaterial{"name", "normal", "friction", "surfaces", "default"};
 inline const List kNormal{"law",       "stiffness",   "damping",     "exponent",
                           "max_depth", "restitution", "impact_speed"};
@@ -123,6 +126,8 @@ inline const std::vector<Section>& sections() {
                                         {"loads[] signal.step", &kStepSignal},
                                         {"loads[] signal.smooth_step", &kSmoothStepSignal},
                                         {"loads[] signal.sines[]", &kSineTerm},
+                                        {"loads[] signal.table", &kTableSignal},
+                                        {"loads[] signal.expression", &kExpressionSignal},
                                         {"materials[]", &kMaterial},
                                         {"materials[].normal", &kNormal},
                                         {"contacts[]", &kContact},
@@ -138,6 +143,7 @@ inline const std::vector<Section>& sections() {
                                         {"(words) summary coordinate", &kSummaryCoordinates},
                                         {"(words) load frame", &kLoadFrames},
                                         {"(words) actuator type", &kActuatorTypes},
+                                        {"(words) table interpolation", &kInterpolations},
                                         {"(words) other", &kOtherWords}};
   return all;
 }

@@ -1,10 +1,14 @@
 #include "io/scene_signal.hpp"
 
+#include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "io/scene_keys.hpp"
+#include "io/signal_table_file.hpp"
+#include "io/time_expression.hpp"
 
 namespace tribo::io::scene_detail {
 
@@ -13,6 +17,80 @@ namespace {
 double optional(const Map& m, const char* key, double fallback) {
   const auto v = m.get(key);
   return v ? v->number() : fallback;
+}
+
+using Points = std::vector<std::pair<double, double>>;
+
+Signal tableSignal(const Value& at, Points points, bool cubic) {
+  return guarded(at, [&] {
+    return cubic ? Signal::cubicTable(std::move(points)) : Signal::table(std::move(points));
+  });
+}
+
+Points inlinePoints(const Value& v) {
+  Points points;
+  for (const Value& p : v.items("[t, v] points")) {
+    const auto tv = p.numbers({2}, "a point [t, v]");
+    points.emplace_back(tv[0], tv[1]);
+  }
+  return points;
+}
+
+// {table: [[t, v], ...]} or {table: {points | file, [column], [interpolation]}}.
+Signal readTable(const Value& body) {
+  if (!body.node().IsMap()) return tableSignal(body, inlinePoints(body), false);
+  const Map m(body, scene_keys::kTableSignal);
+  const auto points = m.get("points");
+  const auto file = m.get("file");
+  const auto column = m.get("column");
+  if (points.has_value() == file.has_value())
+    body.fail("expected one of 'points' and 'file', found " +
+              std::string(points ? "both" : "neither"));
+  if (column && !file) column->fail("'column' selects a column of a 'file'; there is none");
+  bool cubic = false;
+  if (const auto how = m.get("interpolation"))
+    cubic = how->choice(scene_keys::kInterpolations) == 1;
+  if (points) return tableSignal(*points, inlinePoints(*points), cubic);
+  SignalTableColumn which;
+  if (column) {
+    const std::string text = column->text();
+    if (const auto n = parseNumber(text)) {
+      which.position = column->integer(2);
+    } else {
+      which.name = text;
+    }
+  }
+  const std::string given = file->text();
+  std::filesystem::path path = given;
+  if (path.is_relative()) path = std::filesystem::path(body.file()).parent_path() / path;
+  const std::string shown = "table file '" + given + "': ";
+  Points read;
+  try {
+    read = readSignalTableFile(path.string(), which);
+  } catch (const SceneError& e) {
+    file->fail(shown + e.what());
+  }
+  try {
+    return cubic ? Signal::cubicTable(std::move(read)) : Signal::table(std::move(read));
+  } catch (const std::invalid_argument& e) {
+    file->fail(shown + path.string() + ": " + e.what());
+  }
+}
+
+// {expression: "text"} or {expression: {value, [derivative], [time_scale]}}.
+Signal readExpression(const Value& body) {
+  const auto compile = [](const Value& v) {
+    return TimeExpression(v.text(), v.parameters(), v.where(), v.path());
+  };
+  if (!body.node().IsMap()) return Signal::function(compile(body));
+  const Map m(body, scene_keys::kExpressionSignal);
+  TimeExpression value = compile(m.required("value"));
+  std::function<double(double)> derivative;
+  if (const auto d = m.get("derivative")) derivative = compile(*d);
+  const double time_scale = m.get("time_scale") ? m.get("time_scale")->positive() : 1e-3;
+  return guarded(body, [&] {
+    return Signal::function(std::move(value), std::move(derivative), {}, time_scale);
+  });
 }
 
 }  // namespace
@@ -46,14 +124,8 @@ Signal readSignal(const Value& v) {
     const double after = s.required("after").number();
     return guarded(body, [&] { return Signal::smoothStep(start, before, end, after); });
   }
-  if (kind == "table") {
-    std::vector<std::pair<double, double>> points;
-    for (const Value& p : body.items("[t, v] points")) {
-      const auto tv = p.numbers({2}, "a point [t, v]");
-      points.emplace_back(tv[0], tv[1]);
-    }
-    return guarded(body, [&] { return Signal::table(std::move(points)); });
-  }
+  if (kind == "table") return readTable(body);
+  if (kind == "expression") return readExpression(body);
   // sines (the key table admits no other)
   std::vector<Signal::Sine> terms;
   for (const Value& item : body.items("sine terms {amplitude, frequency, ...}")) {

@@ -44,6 +44,8 @@ class Value {
   }
   const YAML::Node& node() const { return node_; }
   const std::string& path() const { return path_; }
+  const std::string& file() const { return *file_; }  // the scene file, as it was named
+  const ParameterTable& parameters() const { return *params_; }
   SourceLocation where() const;
   [[noreturn]] void fail(const std::string& what) const;
 

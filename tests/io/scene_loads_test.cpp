@@ -81,7 +81,8 @@ TEST(SceneLoads, ErrorsNameTheirKey) {
            Case{"[[0, 0], [1, 2], [3, -2]]", "[[0, 0], [1, 2], [1, -2]]",
                 "loads[0].torque[2].table: table: times must be strictly increasing"},
            Case{"{step: {time: 1,", "{stair: {time: 1,",
-                "unknown key 'stair' (accepted keys: ramp, step, smooth_step, table, sines)"},
+                "unknown key 'stair' (accepted keys: ramp, step, smooth_step, table, sines, "
+                "expression)"},
            Case{"{ramp: {rate: 4, start: 0.5, initial: 1}}", "{}",
                 "loads[0].force[2]: expected a number or a mapping with one signal kind"},
            Case{"{ramp: {rate: 4, start: 0.5, initial: 1}}",
