@@ -3,9 +3,10 @@
 // one-degree-of-freedom equation integrated here, outside the engine:
 //   m x'' = -k x + mu(v_b(t) - x') m g   (classical RK4 at 10 us, the roh_yoo law).
 // The scene's box rests on penalty contacts at its static depth, which the reduced equation
-// does not have: the engine's distance to it is bounded by what the unmodulated belt shows
-// against the same reduction (the modulation adds no error of its own), and both are small
-// against the motion. Also: with dv = 0 the signal gives the belt scene's trajectory bit for
+// does not have: the steady belt's distance to it (6e-7 m at 1 ms) is that model floor. With
+// the modulation the distance at 1 ms is a few 1e-6 m (RK4's error across more stick-slip
+// transitions), and at 0.5 ms it falls back to the floor: the modulation adds no error of
+// its own. Also: with dv = 0 the signal gives the belt scene's trajectory bit for
 // bit (a constant signal and a number are the same surface).
 #include <gtest/gtest.h>
 
@@ -84,9 +85,15 @@ TEST(BeltModulated, FollowsTheReducedEquationAsCloselyAsTheSteadyBelt) {
   for (const auto& [dv, f] : {std::pair{0.5, 0.4}, {0.3, 1.1}, {1.0, 0.15}}) {
     const std::vector<double> ref = reference(dv, f);
     const Compared c = compare({"dv=" + std::to_string(dv), "f=" + std::to_string(f)}, ref);
-    std::printf("dv %g f %g: max |x - x_ref| %.3g m of a %.3g m range\n", dv, f, c.error, c.range);
-    EXPECT_LT(c.error, 2.0 * steady.error + 1e-6) << dv << " " << f;
-    EXPECT_LT(c.error, 1e-2 * c.range);
+    const Compared fine =
+        compare({"dv=" + std::to_string(dv), "f=" + std::to_string(f), "dt=5e-4"}, ref);
+    std::printf("dv %g f %g: max |x - x_ref| %.3g m (dt 5e-4: %.3g m) of a %.3g m range\n", dv, f,
+                c.error, fine.error, c.range);
+    // At 1 ms RK4's own error across the stick-slip transitions adds to the model's floor;
+    // halving the step brings the distance down to the floor the steady belt shows.
+    EXPECT_LT(c.error, 1e-4 * c.range) << dv << " " << f;
+    EXPECT_LT(fine.error, 0.5 * c.error) << dv << " " << f;
+    EXPECT_LT(fine.error, 2.0 * steady.error) << dv << " " << f;
     // The modulation changes the motion well beyond that error.
     double change = 0.0;
     for (std::size_t i = 0; i < std::min(ref.size(), steady.x.size()); ++i)
