@@ -35,10 +35,10 @@ SharedSweepFolder::SharedSweepFolder(const fs::path& dir, const std::string& man
       header_(csvLine(sweepColumns(grid, analysis))),
       lines_(grid.size()) {
   std::error_code ec;
-  fs::create_directories(rowsDir(dir), ec);
+  fs::create_directories(dir, ec);
   if (ec)
     throw SweepOutputError(Reason::kCannotWrite,
-                           "cannot create '" + rowsDir(dir).string() + "': " + ec.message());
+                           "cannot create '" + dir.string() + "': " + ec.message());
   try {
     lock_.emplace(dir, DirLock::Mode::kShared);
   } catch (const DirLockedError& e) {
@@ -108,6 +108,14 @@ std::vector<std::size_t> SharedSweepFolder::missingPoints() const {
 }
 
 void SharedSweepFolder::record(std::size_t index, const std::string& line) {
+  if (!have_rows_dir_) {
+    std::error_code ec;
+    fs::create_directories(rowsDir(dir_), ec);
+    if (ec)
+      throw SweepOutputError(Reason::kCannotWrite,
+                             "cannot create '" + rowsDir(dir_).string() + "': " + ec.message());
+    have_rows_dir_ = true;
+  }
   writePointRow(dir_, index, grid_.size(), line);
   lines_[index] = line;
 }
