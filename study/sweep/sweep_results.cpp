@@ -8,6 +8,7 @@
 #include "io/file_read.hpp"
 #include "study/csv_text.hpp"
 #include "study/file_commit.hpp"
+#include "study/sweep/sweep_rows.hpp"
 
 namespace tribo::study {
 
@@ -111,6 +112,22 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
   return out;
 }
 
+std::optional<std::size_t> sweepRowPoint(const std::string& line, const SweepGrid& grid,
+                                         SweepAnalysis analysis) {
+  const auto f = splitCsvLine(line);
+  const std::size_t n_axes = grid.axes().size();
+  if (f.size() != sweepColumns(grid, analysis).size() || f[0].empty()) return std::nullopt;
+  std::size_t index = 0;
+  const auto r = std::from_chars(f[0].data(), f[0].data() + f[0].size(), index);
+  if (r.ec != std::errc() || r.ptr != f[0].data() + f[0].size() || index >= grid.size() ||
+      !isStatus(f[1 + n_axes]))
+    return std::nullopt;
+  const auto values = grid.values(index);
+  for (std::size_t a = 0; a < n_axes; ++a)
+    if (f[1 + a] != values[a]) return std::nullopt;
+  return index;
+}
+
 SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manifest,
                                    const SweepGrid& grid, SweepAnalysis analysis)
     : dir_(dir), results_(dir / "results.csv"), done_(grid.size(), false), lines_(grid.size()) {
@@ -151,8 +168,6 @@ SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manif
                              "'" + results_.string() +
                                  "' does not start with this sweep's header; remove it to restart");
     std::size_t pos = header_.size();
-    const std::size_t n_columns = sweepColumns(grid, analysis).size();
-    const std::size_t n_axes = grid.axes().size();
     while (pos < text.size()) {
       const std::size_t end = text.find('\n', pos);
       if (end == std::string::npos) {  // cut off by a kill: no line end
@@ -161,30 +176,31 @@ SweepResultsFile::SweepResultsFile(const fs::path& dir, const std::string& manif
       }
       const std::string line = text.substr(pos, end - pos);
       pos = end + 1;
-      const auto f = splitCsvLine(line);
-      std::size_t index = 0;
-      bool valid = f.size() == n_columns && !f[0].empty();
-      if (valid) {
-        const auto r = std::from_chars(f[0].data(), f[0].data() + f[0].size(), index);
-        valid = r.ec == std::errc() && r.ptr == f[0].data() + f[0].size() && index < grid.size() &&
-                !done_[index] && isStatus(f[1 + n_axes]);
-      }
-      if (valid) {
-        const auto values = grid.values(index);
-        for (std::size_t a = 0; a < n_axes && valid; ++a) valid = f[1 + a] == values[a];
-      }
-      if (!valid) {
+      const auto index = sweepRowPoint(line, grid, analysis);
+      if (!index || done_[*index]) {
         ++dropped_;
         continue;
       }
-      done_[index] = true;
-      lines_[index] = line + '\n';
-      written_order_.push_back(index);
+      done_[*index] = true;
+      lines_[*index] = line + '\n';
+      written_order_.push_back(*index);
       ++done_count_;
     }
   }
+  // Rows of slices of this sweep (tribo sweep --slice) not yet in results.csv.
+  bool added = false;
+  std::vector<std::string> rows(grid.size());
+  readPointRows(dir, grid, analysis, rows);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].empty() || done_[i]) continue;
+    done_[i] = true;
+    lines_[i] = std::move(rows[i]);
+    written_order_.push_back(i);
+    ++done_count_;
+    added = true;
+  }
   // Start from a file holding exactly the header and the kept lines, then append.
-  if (!have_results || dropped_ > 0) rewrite(written_order_);
+  if (!have_results || dropped_ > 0 || added) rewrite(written_order_);
   file_ = std::fopen(results_.c_str(), "ab");
   if (!file_)
     throw SweepOutputError(Reason::kCannotWrite,

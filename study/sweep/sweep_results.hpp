@@ -17,6 +17,8 @@
 // the kill), and skips those points; a different sweep.json is refused. When the last point
 // is in, finish() rewrites results.csv in point order, so an interrupted and resumed sweep
 // ends with the same bytes as an uninterrupted one (rows hold no wall times).
+// Rows that slices of the sweep left in DIR/rows/ (study/sweep/sweep_rows.hpp) count as done
+// too: they are added to results.csv on opening, so a plain run completes a sliced sweep.
 // A lock (study/dir_lock.hpp: flock on DIR/.lock) keeps a second sweep or run from writing
 // the same folder.
 // Not here: running points, distributing them.
@@ -61,6 +63,11 @@ std::string formatSweepRow(std::size_t index, const SweepGrid& grid, const Point
 // Fields of one CSV line (without its '\n'); quoted fields unquoted. Empty on a malformed
 // line (an unclosed quote).
 std::vector<std::string> splitCsvLine(const std::string& line);
+
+// The point a results line (without its '\n') is the row of, when it is a whole row of this
+// sweep: the columns' count, a point index in the grid, that point's values and a status.
+std::optional<std::size_t> sweepRowPoint(const std::string& line, const SweepGrid& grid,
+                                         SweepAnalysis analysis = SweepAnalysis::kRun);
 
 class SweepResultsFile {
  public:

@@ -38,7 +38,7 @@ const std::map<std::string, std::vector<std::string>> kOptions = {
     {"info", {"FILE", "--package-path", "--strict", "--verbose"}},
     {"sweep",
      {"SCENE", "--out", "--grid", "--list", "--set", "--settle", "--settle-every", "--jobs",
-      "--keep-trajectories", "--quiet", "--analysis"}},
+      "--keep-trajectories", "--quiet", "--analysis", "--slice", "--merge"}},
     {"tradeoff", {"SCENE", "--set", "--out", "--window", "--repeat", "--integrators"}},
     {"modes",
      {"SCENE", "--out", "--set", "--settle", "--boundary", "--growth-tolerance",

@@ -1,5 +1,7 @@
 """Bad input raises the library's exception with the message the command line prints
 (file, line, key, expected vs found), as a subclass of the Python error a caller expects."""
+import re
+
 import pytest
 
 import tribo
@@ -80,6 +82,11 @@ def test_run_settings_of_the_wrong_type_name_the_argument(belt, setting, value):
         tribo.load_scene(belt).run(**{setting: value})
 
 
-def test_version():
+def test_version(source_dir):
     major, minor, patch = (int(x) for x in tribo.__version__.split("."))
     assert (major, minor, patch) >= (0, 1, 0)
+    # The one version number: the CMake project's (top-level CMakeLists.txt).
+    project = re.search(r"^project\(tribo VERSION ([0-9.]+)",
+                        (source_dir / "CMakeLists.txt").read_text(), re.MULTILINE)
+    assert project, "no project(tribo VERSION ...) in CMakeLists.txt"
+    assert tribo.__version__ == project.group(1)
