@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The figure of docs/experiments.md (gnuplot; build/apps/tribo runs each scene of
 # scenes/experiments/): docs/figures/experiments.png, four panels from the engine's runs:
-#   break_away_ramp: the push F = rate t and the block's x (micrometres) against time;
+#   break_away_ramp: the push F = rate t and the block's x (millimetres) against time;
 #   servo_stick_slip: the slide's x, the servo's target and its effort against time;
 #   arm_hold_pose: the shoulder's and elbow's angles and targets against time;
 #   belt_modulated: the box's x and the belt's speed against time.
@@ -37,11 +37,11 @@ set multiplot layout 2,2
 set title 'break_away_ramp: push F = t N/s, block x'
 set xlabel 't [s]'
 set ylabel 'F [N]'
-set y2label 'x [um]'
+set y2label 'x [mm]'
 set y2tics
 set ytics nomirror
 plot '$work/break_away_ramp/trajectory.csv' every ::1 using 1:$(col break_away_ramp push.fx) with lines lw 2 title 'push.fx', \
-     '' every ::1 using 1:(1e6*\$$(col break_away_ramp block.x)) axes x1y2 with lines lw 2 title 'block.x'
+     '' every ::1 using 1:(1e3*\$$(col break_away_ramp block.x)) axes x1y2 with lines lw 2 title 'block.x'
 set title 'servo_stick_slip: LuGre guide, servo target at 0.1 m/s'
 set ylabel 'x [m]'
 set y2label 'effort [N]'
