@@ -14,17 +14,6 @@ namespace tribo::study {
 
 namespace {
 
-// The reduced accelerations, then the internal states' rates, at `x`.
-Eigen::VectorXd response(Dynamics& dynamics, const ReducedCoordinates& coords, const State& x) {
-  const Workspace& ws = dynamics.evaluate(x);
-  const Eigen::VectorXd a = coords.reducedAcceleration(ws);
-  Eigen::VectorXd out(a.size() + static_cast<Eigen::Index>(x.friction_values.size()));
-  out.head(a.size()) = a;
-  for (std::size_t i = 0; i < x.friction_values.size(); ++i)
-    out(a.size() + static_cast<Eigen::Index>(i)) = ws.friction_state_rate[i];
-  return out;
-}
-
 std::string coordinateName(const ReducedCoordinates& coords, int j) {
   if (coords.size() == coords.fullSize()) return coords.fullName(j);
   Eigen::Index i = 0;
@@ -85,9 +74,9 @@ LinearModel linearModel(Dynamics& dynamics, const ReducedCoordinates& coords, co
   auto difference = [&](const auto& set) {  // set(+h), set(-h), then restore with set(0)
     const double h = 1.0;
     set(h);
-    const Eigen::VectorXd plus = response(dynamics, coords, at);
+    const Eigen::VectorXd plus = reducedResponse(dynamics, coords, at, true);
     set(-h);
-    const Eigen::VectorXd minus = response(dynamics, coords, at);
+    const Eigen::VectorXd minus = reducedResponse(dynamics, coords, at, true);
     set(0.0);
     Eigen::VectorXd col = Eigen::VectorXd::Zero(rows);
     col.segment(n, plus.size()) = (plus - minus) / (2 * h);

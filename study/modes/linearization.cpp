@@ -6,6 +6,18 @@
 
 namespace tribo::study {
 
+Eigen::VectorXd reducedResponse(Dynamics& dynamics, const ReducedCoordinates& coords,
+                                const State& x, bool with_states) {
+  const Workspace& ws = dynamics.evaluate(x);
+  const Eigen::VectorXd a = coords.reducedAcceleration(ws);
+  if (!with_states) return a;
+  Eigen::VectorXd out(a.size() + static_cast<Eigen::Index>(x.friction_values.size()));
+  out.head(a.size()) = a;
+  for (std::size_t i = 0; i < x.friction_values.size(); ++i)
+    out(a.size() + static_cast<Eigen::Index>(i)) = ws.friction_state_rate[i];
+  return out;
+}
+
 DifferenceSteps chooseSteps(Dynamics& dynamics, const State& at) {
   DifferenceSteps steps;
   const Workspace& ws = dynamics.evaluate(at);
@@ -21,19 +33,6 @@ DifferenceSteps chooseSteps(Dynamics& dynamics, const State& at) {
 
 namespace {
 
-// The reduced accelerations, then the internal states' rates, at `x`.
-Eigen::VectorXd response(Dynamics& dynamics, const ReducedCoordinates& coords, const State& x,
-                         bool with_states) {
-  const Workspace& ws = dynamics.evaluate(x);
-  const Eigen::VectorXd a = coords.reducedAcceleration(ws);
-  if (!with_states) return a;
-  Eigen::VectorXd out(a.size() + static_cast<Eigen::Index>(x.friction_values.size()));
-  out.head(a.size()) = a;
-  for (std::size_t i = 0; i < x.friction_values.size(); ++i)
-    out(a.size() + static_cast<Eigen::Index>(i)) = ws.friction_state_rate[i];
-  return out;
-}
-
 // Central difference of the response along coordinate j (configuration when !velocity) with
 // step h.
 Eigen::VectorXd column(Dynamics& dynamics, const ReducedCoordinates& coords, const State& at, int j,
@@ -43,10 +42,10 @@ Eigen::VectorXd column(Dynamics& dynamics, const ReducedCoordinates& coords, con
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   step(j) = h;
   coords.perturb(at, velocity ? zero : step, velocity ? step : zero, scratch);
-  const Eigen::VectorXd plus = response(dynamics, coords, scratch, with_states);
+  const Eigen::VectorXd plus = reducedResponse(dynamics, coords, scratch, with_states);
   coords.perturb(at, velocity ? zero : Eigen::VectorXd(-step),
                  velocity ? Eigen::VectorXd(-step) : zero, scratch);
-  const Eigen::VectorXd minus = response(dynamics, coords, scratch, with_states);
+  const Eigen::VectorXd minus = reducedResponse(dynamics, coords, scratch, with_states);
   return (plus - minus) / (2 * h);
 }
 
@@ -55,9 +54,9 @@ Eigen::VectorXd stateColumn(Dynamics& dynamics, const ReducedCoordinates& coords
                             std::size_t i, double h, State& scratch) {
   scratch = at;
   scratch.friction_values[i] = at.friction_values[i] + h;
-  const Eigen::VectorXd plus = response(dynamics, coords, scratch, true);
+  const Eigen::VectorXd plus = reducedResponse(dynamics, coords, scratch, true);
   scratch.friction_values[i] = at.friction_values[i] - h;
-  const Eigen::VectorXd minus = response(dynamics, coords, scratch, true);
+  const Eigen::VectorXd minus = reducedResponse(dynamics, coords, scratch, true);
   scratch = at;
   return (plus - minus) / (2 * h);
 }

@@ -35,6 +35,11 @@ struct DifferenceSteps {
   double velocity = 1e-6;  // [m/s or rad/s]
 };
 
+// The reduced accelerations at `x`, followed by the internal states' rates when
+// `with_states` (what the columns of K, C and the state blocks difference).
+Eigen::VectorXd reducedResponse(Dynamics& dynamics, const ReducedCoordinates& coords,
+                                const State& x, bool with_states);
+
 // Steps for the state `at` (see the header comment); evaluates it once.
 DifferenceSteps chooseSteps(Dynamics& dynamics, const State& at);
 
