@@ -4,12 +4,18 @@
 // the recording (no copy) and the summary as the dict of the summary.json `tribo run` writes
 // (study/result_writer.hpp: the same text, so the same numbers). The GIL is released during
 // the run; Ctrl-C stops it at once, back at the last output row, and raises KeyboardInterrupt
-// carrying the partial Result as its `result` attribute.
+// carrying the partial Result as its `result` attribute. Result.save writes the run folder
+// `tribo run` writes; Result._view_page gives the replay page's HTML (study/view/view_page.hpp)
+// for the notebook display of python/tribo/_notebook.py.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "io/output_channels.hpp"
@@ -19,6 +25,7 @@
 #include "python/scene_handle.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
+#include "study/view/view_page.hpp"
 
 namespace tribo::python {
 namespace {
@@ -150,6 +157,28 @@ py::list jointsOf(const Model& model) {
   return out;
 }
 
+// The replay page of a result: written with its scene into a scratch folder (the page reads
+// trajectory.csv and summary.json, as `tribo view` does), read back, the folder removed.
+std::string viewPageOf(const PyResult& r, std::size_t frame_cap) {
+  std::string pattern = (std::filesystem::temp_directory_path() / "tribo-view-XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr)
+    throw std::runtime_error("cannot create a temporary folder: " +
+                             std::string(std::strerror(errno)));
+  const std::filesystem::path dir = pattern;
+  try {
+    study::writeResults(dir, *r.scene, r.run);
+    study::ViewOptions options;
+    options.frame_cap = frame_cap;
+    std::string page = study::runViewPage(*r.scene, dir, options);
+    std::filesystem::remove_all(dir);
+    return page;
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+    throw;
+  }
+}
+
 py::dict settingsOf(const io::Scene& s) {
   const SimulationOptions& o = s.model->options;
   py::dict d;
@@ -233,6 +262,26 @@ void bindScene(py::module_& m) {
           "summary", [](const PyResult& r) { return jsonToPython(r.summary_text); },
           "The summary as `tribo run` writes it to summary.json, as a dict.")
       .def_property_readonly("summary_json", [](const PyResult& r) { return r.summary_text; })
+      .def(
+          "save",
+          [](const PyResult& r, const py::object& folder) {
+            const std::string dir =
+                py::module_::import("os").attr("fspath")(folder).cast<std::string>();
+            py::gil_scoped_release release;
+            study::writeResults(dir, *r.scene, r.run);
+          },
+          py::arg("folder"),
+          "save(folder): writes trajectory.csv and summary.json into folder (created if "
+          "missing), the files `tribo run --out folder` writes; `tribo view folder` then draws "
+          "it (for a scene loaded from a file).")
+      .def(
+          "_view_page",
+          [](const PyResult& r, std::size_t frame_cap) {
+            py::gil_scoped_release release;
+            return viewPageOf(r, frame_cap);
+          },
+          py::arg("frame_cap") = 20000,
+          "The replay page (`tribo view`'s view.html) of this result as one HTML text.")
       .def("__repr__", [](const PyResult& r) {
         return "<tribo.Result " + std::string(statusName(r.run)) + ", " +
                std::to_string(r.run.trajectory.rows()) + " rows>";

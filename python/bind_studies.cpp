@@ -1,7 +1,6 @@
-// Studies from Python: tribo.sweep runs a parameter sweep on the local cores as `tribo sweep`
-// does (study/sweep/sweep_runner.hpp: the same plan, the same results.csv) and returns its
-// rows as a list of dicts; tribo.modes analyses a scene's linear stability as `tribo modes`
-// does (study/modes/modes.hpp) and returns the steady state's figures and the modes as a dict.
+// Studies from Python (sweeps are python/bind_sweep.cpp's): tribo.modes analyses a scene's
+// linear stability as `tribo modes` does (study/modes/modes.hpp) and returns the steady
+// state's figures and the modes as a dict.
 // tribo.tradeoff measures the speed-accuracy ladder as `tribo tradeoff` does
 // (study/tradeoff.hpp) and returns its rows. The GIL is released while they run. Not here:
 // plotting.
@@ -9,133 +8,17 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <cerrno>
-#include <charconv>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include "python/bindings.hpp"
 #include "python/python_law.hpp"
 #include "python/scene_handle.hpp"
 #include "study/modes/modes.hpp"
 #include "study/modes/modes_report.hpp"
-#include "study/sweep/sweep_results.hpp"
-#include "study/sweep/sweep_runner.hpp"
 #include "study/tradeoff.hpp"
 
 namespace tribo::python {
 namespace {
-
-// The scene's YAML text and path for a sweep: a path, or a Scene loaded from a file or text.
-std::pair<std::string, std::string> sweepSceneText(const py::object& scene) {
-  if (py::isinstance<SceneHandle>(scene)) {
-    const auto& h = scene.cast<const SceneHandle&>();
-    if (h.source == SceneHandle::Source::kUrdf)
-      throw py::value_error(
-          "sweep: a URDF scene cannot be swept; write a scene file with a "
-          "robots: entry");
-    if (!h.user_laws.empty())
-      throw py::value_error(
-          "sweep: a scene with laws given in Python cannot be swept (each "
-          "sweep thread loads the scene from its text)");
-    if (!h.overrides.empty())
-      throw py::value_error("sweep: give the scene's overrides as sweep(..., set=...)");
-    if (h.source == SceneHandle::Source::kText) return {h.origin, h.scene.path};
-    return {study::readSceneText(h.origin), h.origin};
-  }
-  const std::string path = py::module_::import("os").attr("fspath")(scene).cast<std::string>();
-  return {study::readSceneText(path), path};
-}
-
-// One axis from a "START:STOP:COUNT" string or a sequence of values.
-study::SweepAxis axisFrom(const std::string& name, const py::handle& values) {
-  if (py::isinstance<py::str>(values))
-    return study::parseGridAxis(name + "=" + values.cast<std::string>());
-  std::string list;
-  for (const py::handle v : values) {
-    if (!list.empty()) list += ",";
-    list += py::str(v).cast<std::string>();
-  }
-  return study::parseListAxis(name + "=" + list);
-}
-
-// A field as a float when it is a whole number's text, else the text (empty: None).
-py::object fieldValue(const std::string& text) {
-  if (text.empty()) return py::none();
-  double v = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec == std::errc() && end == text.data() + text.size()) return py::float_(v);
-  return py::str(text);
-}
-
-py::list readResults(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read '" + file.string() + "'");
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = study::splitCsvLine(line);
-  py::list rows;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    const std::vector<std::string> fields = study::splitCsvLine(line);
-    py::dict row;
-    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i)
-      row[py::str(header[i])] = fieldValue(fields[i]);
-    rows.append(row);
-  }
-  return rows;
-}
-
-// A new empty folder under the system's temporary folder.
-std::filesystem::path temporaryFolder() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "tribo-sweep-XXXXXX").string();
-  if (::mkdtemp(pattern.data()) == nullptr)
-    throw std::runtime_error("cannot create a temporary folder: " + std::string(strerror(errno)));
-  return pattern;
-}
-
-py::list runSweep(const py::object& scene, const py::dict& grid, const py::object& set,
-                  unsigned jobs, const std::string& analysis, const py::object& out,
-                  bool keep_trajectories, bool progress) {
-  study::SweepSpec spec;
-  const auto [text, path] = sweepSceneText(scene);
-  spec.scene_path = path;
-  spec.fixed_overrides = overridesFrom(set);
-  for (const auto& [name, values] : grid)
-    spec.axes.push_back(axisFrom(name.cast<std::string>(), values));
-  if (analysis == "modes")
-    spec.analysis = study::SweepAnalysis::kModes;
-  else if (analysis != "run")
-    throw py::value_error("sweep: analysis must be 'run' or 'modes' (got '" + analysis + "')");
-  spec.keep_trajectories = keep_trajectories;
-  const study::SweepPlan plan = study::planSweep(spec, text);
-  const bool temporary = out.is_none();
-  if (temporary && keep_trajectories)
-    throw py::value_error("sweep: keep_trajectories needs an out folder");
-  const std::filesystem::path dir =
-      temporary ? temporaryFolder()
-                : std::filesystem::path(
-                      py::module_::import("os").attr("fspath")(out).cast<std::string>());
-  study::LocalRunOptions options;
-  options.jobs = jobs;
-  options.progress = progress ? stderr : nullptr;
-  try {
-    {
-      py::gil_scoped_release release;
-      study::runSweepLocally(plan, dir, options);
-    }
-    py::list rows = readResults(dir / "results.csv");
-    if (temporary) std::filesystem::remove_all(dir);
-    return rows;
-  } catch (...) {
-    if (temporary) {
-      std::error_code ec;
-      std::filesystem::remove_all(dir, ec);
-    }
-    throw;
-  }
-}
 
 // modes.json's document as a dict (study/modes/modes_report.hpp spells its fields).
 py::array_t<double> matrixArray(const Eigen::MatrixXd& m) {
@@ -226,13 +109,6 @@ py::list runTradeoff(const py::object& scene, const py::object& set,
 }  // namespace
 
 void bindStudies(py::module_& m) {
-  m.def("sweep", &runSweep, py::arg("scene"), py::arg("grid"), py::arg("set") = py::none(),
-        py::arg("jobs") = 0u, py::arg("analysis") = "run", py::arg("out") = py::none(),
-        py::arg("keep_trajectories") = false, py::arg("progress") = false,
-        "sweep(scene, grid={name: 'START:STOP:COUNT' or [values]}, set={...}, jobs=0, "
-        "analysis='run'|'modes', out=None) -> list of dicts, one per grid point, the rows of "
-        "results.csv (numbers as floats). out=None: a temporary folder, removed afterwards; "
-        "with out, the folder `tribo sweep --out` writes (resumable). jobs=0: one per core.");
   m.def("modes", &runModes, py::arg("scene"), py::arg("settle") = false,
         py::arg("settle_time") = 0.0, py::arg("matrices") = false,
         "modes(scene, settle=False) -> dict: the linear stability of the scene's steady "

@@ -1,6 +1,8 @@
 // The parts of the `tribo` Python module, one function per concern, called in this order by
 // module.cpp: exceptions first (the others' docstrings name them), then friction laws,
-// scenes and runs, the step-by-step simulator, and the studies (sweep, modes).
+// scenes and runs, the step-by-step simulator, and the studies (modes, tradeoff, sweeps).
+// The extension is the package's `tribo._core`; python/tribo/ re-exports it and adds the
+// parts written in Python (notebook display, sweeps on executors).
 // Conventions shared by all parts (docs/python.md):
 //   - arrays of per-body vectors are (n, 3) float64, quaternions (n, 4) in (x, y, z, w) order
 //     (Eigen's and scipy's), world frame, SI units;
@@ -30,6 +32,7 @@ void bindScene(py::module_& m);
 void bindSimulator(py::module_& m);
 void bindControl(py::module_& m);
 void bindStudies(py::module_& m);
+void bindSweep(py::module_& m);
 
 // "NAME=VALUE" strings (the command line's --set) from a dict of name -> str, int, float or
 // bool; floats in Python's shortest round-trip spelling, so a value crosses exactly.

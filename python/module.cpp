@@ -1,7 +1,8 @@
-// The `tribo` Python module: its entry point (python/bindings.hpp lists the parts).
+// The `tribo._core` extension, the compiled part of the `tribo` package (python/tribo/
+// re-exports it): its entry point (python/bindings.hpp lists the parts).
 #include "python/bindings.hpp"
 
-PYBIND11_MODULE(tribo, m) {
+PYBIND11_MODULE(_core, m) {
   m.doc() =
       "Tribo: rigid multibody dynamics with swappable friction laws (docs/python.md).\n"
       "load_scene/load_urdf -> Scene; Scene.run -> Result (trajectory as NumPy arrays, summary "
@@ -14,4 +15,5 @@ PYBIND11_MODULE(tribo, m) {
   tribo::python::bindSimulator(m);
   tribo::python::bindControl(m);
   tribo::python::bindStudies(m);
+  tribo::python::bindSweep(m);
 }

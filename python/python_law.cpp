@@ -19,7 +19,8 @@ py::array_t<double> arrayOf(const double* v, int n) {
 
 }  // namespace
 
-PythonCalls::PythonCalls(std::string name, const py::object& law) : name_(std::move(name)) {
+PythonCalls::PythonCalls(std::string name, const py::object& law)
+    : name_(std::move(name)), object_(law) {
   if (py::hasattr(law, "mu")) {
     mu_ = law.attr("mu");
   } else if (PyCallable_Check(law.ptr())) {
@@ -42,7 +43,7 @@ PythonCalls::~PythonCalls() {
   // The engine may drop its last reference to a law without the GIL.
   if (!Py_IsInitialized()) return;
   py::gil_scoped_acquire hold;
-  mu_ = slope_ = max_ = py::object();
+  object_ = mu_ = slope_ = max_ = py::object();
   methods_.clear();
   error_.reset();
 }
@@ -253,6 +254,22 @@ std::map<std::string, std::shared_ptr<const friction::FrictionLaw>> userLawsFrom
       out[name] = std::make_shared<PythonDynamicLaw>(name, law);
     else
       out[name] = std::make_shared<PythonLaw>(name, law);
+  }
+  return out;
+}
+
+py::dict lawObjectsOf(
+    const std::map<std::string, std::shared_ptr<const friction::FrictionLaw>>& laws) {
+  py::dict out;
+  for (const auto& [name, law] : laws) {
+    const PythonCalls* calls = nullptr;
+    if (const auto* p = dynamic_cast<const PythonLaw*>(law.get())) calls = &p->calls();
+    if (const auto* p = dynamic_cast<const PythonDynamicLaw*>(law.get())) calls = &p->calls();
+    if (calls == nullptr)
+      throw py::type_error("law '" + name +
+                           "' is a tribo.FrictionLaw built in Python, which cannot be sent to "
+                           "other processes: give it as a friction_laws: entry of the scene");
+    out[py::str(name)] = calls->object();
   }
   return out;
 }

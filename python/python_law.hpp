@@ -51,6 +51,8 @@ class PythonCalls {
   double maxCoefficient(double v_max) const;
   double stickSpeed() const { return stick_speed_; }
   const std::string& name() const { return name_; }
+  // The Python object the law was made from (to send it to other processes).
+  const py::object& object() const { return object_; }
   // The law's method `key` (None when it has none): rate, force, stable_step,
   // state_stiffness, looked up once.
   const py::object& method(const std::string& key) const;
@@ -62,6 +64,7 @@ class PythonCalls {
 
  private:
   std::string name_;
+  py::object object_;
   py::object mu_, slope_, max_;  // slope_, max_: None when the object has none
   std::map<std::string, py::object> methods_;
   double stick_speed_ = 1e-3;
@@ -122,6 +125,10 @@ class PythonDynamicLaw final : public PythonCurveLaw<friction::DynamicFrictionLa
 // The laws given to load_scene(laws={name: law}) as engine laws.
 std::map<std::string, std::shared_ptr<const friction::FrictionLaw>> userLawsFrom(
     const py::object& laws);
+// The Python objects userLawsFrom made `laws` from, by name (to pickle them for other
+// processes). Raises TypeError naming a law that is not one (a tribo.FrictionLaw).
+py::dict lawObjectsOf(
+    const std::map<std::string, std::shared_ptr<const friction::FrictionLaw>>& laws);
 // Raises (as a Python exception) the first error any of the Python laws caught.
 void raisePythonLawErrors(
     const std::map<std::string, std::shared_ptr<const friction::FrictionLaw>>& laws);

@@ -15,6 +15,9 @@ PACKAGES=(build-essential cmake pkg-config clang-format
           openmpi-bin libopenmpi-dev
           pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/)
           python3-matplotlib  # examples/fig4_belt.py
+          python3-setuptools python3-wheel python3-venv python3-build  # pip install . (pyproject.toml)
+          python3-pandas python3-nbclient python3-nbformat python3-ipykernel  # notebooks (examples/*.ipynb)
+          python3-distributed  # tribo.sweep(executor=) on a Dask cluster, tested
           clang libclang-rt-14-dev  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
           libomp-dev)  # OpenMP for the clang build (threads of one evaluation)
 

@@ -35,9 +35,9 @@ PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& p
   try {
     std::vector<std::string> overrides = setup.fixed_overrides;
     overrides.insert(overrides.end(), point_overrides.begin(), point_overrides.end());
-    const io::Scene scene =
-        document ? document->load(overrides)
-                 : io::loadSceneFromString(setup.scene_text, setup.scene_path, overrides);
+    const io::Scene scene = document ? document->load(overrides, {}, {}, setup.user_laws)
+                                     : io::loadSceneFromString(setup.scene_text, setup.scene_path,
+                                                               overrides, {}, {}, setup.user_laws);
     if (setup.analysis == SweepAnalysis::kModes) {
       const ModesResult m = analyzeModes(scene);
       out.status = PointStatus::kComplete;

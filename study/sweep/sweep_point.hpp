@@ -9,6 +9,8 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +18,9 @@
 #include "friction/name_table.hpp"
 #include "study/sweep/sweep_settle.hpp"
 
+namespace tribo::friction {
+class FrictionLaw;
+}
 namespace tribo::io {
 class SceneDocument;
 }
@@ -36,6 +41,9 @@ struct SweepSetup {
   std::vector<std::string> fixed_overrides;  // NAME=VALUE (--set), applied before the point's
   std::optional<SettleRule> settle;          // run each point until settled (duration: cap)
   SweepAnalysis analysis = SweepAnalysis::kRun;
+  // Laws the caller adds (io::UserLaws: the Python module's laws written in Python, which a
+  // material's `friction:` may select); empty for the command line.
+  std::map<std::string, std::shared_ptr<const friction::FrictionLaw>> user_laws = {};
 };
 
 enum class PointStatus { kComplete, kDiverged, kError };

@@ -104,7 +104,8 @@ SweepPlan planSweep(const SweepSpec& spec, const std::string& scene_text) {
     throw io::SceneError("scene file path '" + io::printableText(spec.scene_path) +
                          "': expected UTF-8 text, found " +
                          io::badUtf8Reason(spec.scene_path, bad));
-  SweepPlan plan{{spec.scene_path, scene_text, spec.fixed_overrides, spec.settle, spec.analysis},
+  SweepPlan plan{{spec.scene_path, scene_text, spec.fixed_overrides, spec.settle, spec.analysis,
+                  spec.user_laws},
                  SweepGrid(spec.axes),
                  "",
                  spec.keep_trajectories};
@@ -114,10 +115,13 @@ SweepPlan planSweep(const SweepSpec& spec, const std::string& scene_text) {
   try {
     auto with_point = spec.fixed_overrides;
     for (auto& o : plan.grid.overrides(0)) with_point.push_back(std::move(o));
-    scene = io::loadSceneFromString(scene_text, spec.scene_path, with_point);
+    scene =
+        io::loadSceneFromString(scene_text, spec.scene_path, with_point, {}, {}, spec.user_laws);
   } catch (const io::SceneError&) {
   }
-  if (!scene) scene = io::loadSceneFromString(scene_text, spec.scene_path, spec.fixed_overrides);
+  if (!scene)
+    scene = io::loadSceneFromString(scene_text, spec.scene_path, spec.fixed_overrides, {}, {},
+                                    spec.user_laws);
   for (const auto& axis : plan.grid.axes()) {
     const auto p = std::find_if(scene->parameters.begin(), scene->parameters.end(),
                                 [&](const auto& nv) { return nv.first == axis.name; });

@@ -27,6 +27,8 @@ struct SweepSpec {
   std::optional<SettleRule> settle;              // --settle
   bool keep_trajectories = false;                // DIR/points/<point>/{trajectory.csv,summary.json}
   SweepAnalysis analysis = SweepAnalysis::kRun;  // --analysis
+  // Laws the scene may select besides its own (SweepSetup::user_laws); none on the command line.
+  std::map<std::string, std::shared_ptr<const friction::FrictionLaw>> user_laws = {};
 };
 
 // A checked sweep, ready to run anywhere.

@@ -69,19 +69,31 @@ std::filesystem::path threeJsPath(const ViewOptions& options) {
   return "/usr/share/javascript/three/three.min.js";
 }
 
-ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOptions& options) {
+namespace {
+
+nlohmann::json readSummary(const std::filesystem::path& run_dir) {
+  try {
+    return nlohmann::json::parse(readText(run_dir / "summary.json", "run summary"));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error("'" + (run_dir / "summary.json").string() + "': " + e.what());
+  }
+}
+
+// three.js's path; throws when it is missing (checked first: a set-up problem).
+std::filesystem::path requireThreeJs(const ViewOptions& options) {
   const std::filesystem::path three_path = threeJsPath(options);
   if (!std::filesystem::exists(three_path))
     throw std::runtime_error("three.js not found at '" + three_path.string() +
                              "': install Debian's libjs-three (scripts/setup.sh) or set "
                              "TRIBO_THREE_JS");
-  const nlohmann::json summary = [&] {
-    try {
-      return nlohmann::json::parse(readText(run_dir / "summary.json", "run summary"));
-    } catch (const nlohmann::json::exception& e) {
-      throw std::runtime_error("'" + (run_dir / "summary.json").string() + "': " + e.what());
-    }
-  }();
+  return three_path;
+}
+
+}  // namespace
+
+ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOptions& options) {
+  requireThreeJs(options);
+  const nlohmann::json summary = readSummary(run_dir);
   const std::string scene_path = summary.value("scene", "");
   std::vector<std::string> overrides;
   if (summary.contains("parameters") && summary["parameters"].is_object())
@@ -109,11 +121,22 @@ ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOption
     throw std::runtime_error("cannot reload the run's scene '" + scene_path + "' (" + e.what() +
                              "); run tribo view from the folder the run was started in");
   }
+  ViewPageInfo info;
+  const std::string page = runViewPage(scene, run_dir, options, &info);
+  info.file = run_dir / "view.html";
+  writeFileWhole(info.file, page);
+  return info;
+}
+
+std::string runViewPage(const io::Scene& scene, const std::filesystem::path& run_dir,
+                        const ViewOptions& options, ViewPageInfo* info_out) {
+  const std::filesystem::path three_path = requireThreeJs(options);
+  const nlohmann::json summary = readSummary(run_dir);
+  const std::string scene_path = summary.value("scene", "");
   const ViewTrajectory traj =
       readViewTrajectory(run_dir / "trajectory.csv", options.frame_cap, options.value_budget);
 
   ViewPageInfo info;
-  info.file = run_dir / "view.html";
   info.frames = traj.frames();
   info.rows = traj.rows;
   info.orientation = false;
@@ -151,9 +174,9 @@ ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOption
   std::string js;
   for (std::string_view part : view_assets::kScripts) js += std::string(part) + "\n";
   replaceOnce(page, "/*TRIBO_JS*/", scriptSafe(js));
-  writeFileWhole(info.file, page);
   info.bytes = page.size();
-  return info;
+  if (info_out) *info_out = info;
+  return page;
 }
 
 }  // namespace tribo::study

@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+namespace tribo::io {
+struct Scene;
+}
+
 namespace tribo::study {
 
 struct ViewOptions {
@@ -35,5 +39,12 @@ std::filesystem::path threeJsPath(const ViewOptions& options);
 // Reads RUN_DIR/summary.json and trajectory.csv, reloads the scene and writes
 // RUN_DIR/view.html (whole or not at all). Throws std::runtime_error naming what is missing.
 ViewPageInfo writeRunView(const std::filesystem::path& run_dir, const ViewOptions& options = {});
+
+// The page's text for RUN_DIR's summary.json and trajectory.csv, drawing `scene`, the scene
+// the run ran, given already loaded (a Python Result's, which may come from YAML text that no
+// file holds) instead of reloaded. `info` (optional) gets the frames, rows and size; its file
+// is left empty. Throws std::runtime_error naming what is missing.
+std::string runViewPage(const io::Scene& scene, const std::filesystem::path& run_dir,
+                        const ViewOptions& options = {}, ViewPageInfo* info = nullptr);
 
 }  // namespace tribo::study
