@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The package installs the way Python users install things, offline: a wheel made by
-# `python3 -m build --no-isolation --wheel` installs into a fresh virtual environment
-# (--system-site-packages: NumPy from Debian), so does `pip install --no-build-isolation .`
-# from the checkout into another, and each imports from its environment (not the build
+# The package installs the way Python users install things, offline (--no-index: nothing may
+# come from PyPI; the builds are isolated, as pip and build make them by default): a wheel
+# made by `python3 -m build --wheel` installs into a fresh virtual environment
+# (--system-site-packages: NumPy from Debian), so does `pip install .` from the checkout into
+# another, and each imports from its environment (not the build
 # tree), has the CMake project's version and runs a scene from a folder outside the source
 # tree. Both reuse BUILD's CMake build (TRIBO_CMAKE_BUILD_DIR, setup.py), so the test takes
 # seconds; a build from nothing is the same commands without it (docs/python.md).
@@ -31,7 +32,7 @@ PY
   )
 }
 
-"$python" -m build --no-isolation --wheel --outdir "$work/dist" "$src" > "$work/build.log" 2>&1 ||
+"$python" -m build --wheel --outdir "$work/dist" "$src" > "$work/build.log" 2>&1 ||
   { cat "$work/build.log"; exit 1; }
 wheel=$(ls "$work"/dist/tribo-"$version"-*.whl)
 "$python" -m venv --system-site-packages "$work/wheel-env"
@@ -39,5 +40,5 @@ wheel=$(ls "$work"/dist/tribo-"$version"-*.whl)
 check "$work/wheel-env"
 
 "$python" -m venv --system-site-packages "$work/pip-env"
-"$work/pip-env/bin/python" -m pip install -q --no-index --no-deps --no-build-isolation "$src"
+"$work/pip-env/bin/python" -m pip install -q --no-index "$src"
 check "$work/pip-env"
