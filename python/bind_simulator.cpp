@@ -4,12 +4,16 @@
 // memory ((n, 3) and (n, 4), writable: edit them, then assign the State back). A State
 // also carries the friction laws' internal states, so state get/set round-trips bit for
 // bit. contacts() gives the current contact points and forces as arrays; status the last
-// step's outcome with the same message the command line prints.
+// step's outcome with the same message the command line prints. set_parameters changes
+// scene parameters in the middle of a run: the model is built again with the new values
+// (a built Model is never edited) and the run goes on from the same state, when the state's
+// layout (bodies, friction states, contact pairs) is unchanged.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -94,15 +98,85 @@ py::dict contactsOf(const Model& model, const Workspace& ws) {
 // Steps between two looks for a pending signal (Ctrl-C) in step(n).
 constexpr long kSignalSteps = 1024;
 
-// The Python-side simulator: the core one and the status of its last step.
+// The Python-side simulator: the scene it runs, the core simulator and the status of its
+// last step.
 struct PySimulator {
+  SceneHandle scene;
   std::shared_ptr<const Model> model;
   io::UserLaws user_laws;  // the scene's Python laws, for their exceptions
-  Simulator sim;
+  std::unique_ptr<Simulator> sim;
   StepStatus status;
-  explicit PySimulator(const SceneHandle& scene)
-      : model(scene.scene.model), user_laws(scene.user_laws), sim(model) {}
+  std::map<int, double> commands;  // actuator commands given (joint -> value), kept across
+                                   // set_parameters
+  explicit PySimulator(const SceneHandle& handle)
+      : scene(handle),
+        model(scene.scene.model),
+        user_laws(scene.user_laws),
+        sim(std::make_unique<Simulator>(model)) {}
 };
+
+// A friction law's part of the state's layout: -1 without memory, 0 for stick anchors, the
+// internal state's size for a dynamic law (with its tangent vectors, which are rotated).
+std::pair<int, int> memoryOf(const friction::FrictionLaw& law) {
+  if (const friction::DynamicFrictionLaw* d = law.dynamic())
+    return {d->stateSize(), d->tangentVectors()};
+  return {law.stateful() ? 0 : -1, 0};
+}
+
+// Why a state of `from` cannot go on in `to`, or empty: the parts of the state a step reads
+// by position (bodies, joints) or sizes by each material's and joint's friction law.
+std::string layoutDifference(const Model& from, const Model& to) {
+  auto count = [](const char* what, std::size_t a, std::size_t b) {
+    return std::string(what) + " " + std::to_string(a) + " -> " + std::to_string(b);
+  };
+  if (from.bodies.size() != to.bodies.size())
+    return count("bodies", from.bodies.size(), to.bodies.size());
+  if (from.joints.size() != to.joints.size())
+    return count("joints", from.joints.size(), to.joints.size());
+  if (from.materials.size() != to.materials.size())
+    return count("contact materials", from.materials.size(), to.materials.size());
+  for (std::size_t i = 0; i < from.materials.size(); ++i) {
+    const auto a = memoryOf(*from.materials[i].friction), b = memoryOf(*to.materials[i].friction);
+    if (a != b)
+      return "the friction memory of contact material " + std::to_string(i) + ": " +
+             std::string(from.materials[i].friction->name()) + " -> " +
+             std::string(to.materials[i].friction->name());
+  }
+  for (std::size_t j = 0; j < from.joints.size(); ++j) {
+    const auto& fa = from.joints[j].elements.friction;
+    const auto& fb = to.joints[j].elements.friction;
+    const std::pair<int, int> none{-1, 0};
+    if ((fa ? memoryOf(*fa->law) : none) != (fb ? memoryOf(*fb->law) : none))
+      return "the friction memory of joint '" + from.joints[j].name + "'";
+  }
+  return "";
+}
+
+// set_parameters: the scene with `set` merged into its overrides (a name given again takes
+// the new value), the model built again, the run continued from the current state.
+void setParameters(PySimulator& s, const py::object& set) {
+  const std::vector<std::string> more = overridesFrom(set);
+  if (more.empty()) return;
+  std::vector<std::string> merged = s.scene.overrides;
+  for (const std::string& o : more) {
+    const std::string name = o.substr(0, o.find('='));
+    std::erase_if(merged, [&](const std::string& m) { return m.rfind(name + "=", 0) == 0; });
+    merged.push_back(o);
+  }
+  SceneHandle next = s.scene;
+  next.overrides = merged;
+  next.scene = next.reload();
+  const State state = s.sim->state();
+  if (const std::string d = layoutDifference(*s.model, *next.scene.model); !d.empty())
+    throw py::value_error("set_parameters: the new values change the state's layout (" + d +
+                          "); load the scene again with them and start a new run");
+  auto sim = std::make_unique<Simulator>(next.scene.model);
+  sim->setState(state);
+  for (const auto& [joint, value] : s.commands) sim->setActuatorCommand(joint, value);
+  s.scene = std::move(next);
+  s.model = s.scene.scene.model;
+  s.sim = std::move(sim);
+}
 
 }  // namespace
 
@@ -153,13 +227,13 @@ void bindSimulator(py::module_& m) {
           [](PySimulator& s, long n) {
             if (n < 1) throw py::value_error("step(n): n must be >= 1");
             if (n == 1) {  // no GIL hand-over for one step: it costs more than the call
-              s.status = s.sim.step();
+              s.status = s.sim->step();
             } else {
               bool interrupted = false;
               {
                 py::gil_scoped_release release;
                 for (long i = 0; i < n && !interrupted; ++i) {
-                  s.status = s.sim.step();
+                  s.status = s.sim->step();
                   if (!s.status.ok) break;
                   // Every kSignalSteps steps (a few ms on the belt) a pending Ctrl-C stops
                   // here, after a whole step: the state is that step's.
@@ -181,14 +255,14 @@ void bindSimulator(py::module_& m) {
       .def_property_readonly(
           "status", [](const PySimulator& s) { return statusDict(s.status); },
           "The last step's outcome: ok, message, time, body, quantity.")
-      .def_property_readonly("time", [](const PySimulator& s) { return s.sim.state().time; })
+      .def_property_readonly("time", [](const PySimulator& s) { return s.sim->state().time; })
       .def_property(
-          "state", [](const PySimulator& s) { return State(s.sim.state()); },
+          "state", [](const PySimulator& s) { return State(s.sim->state()); },
           [](PySimulator& s, const State& state) {
             if (state.bodies.size() != s.model->bodies.size())
               throw py::value_error("state has " + std::to_string(state.bodies.size()) +
                                     " bodies, the scene " + std::to_string(s.model->bodies.size()));
-            s.sim.setState(state);
+            s.sim->setState(state);
           },
           "A copy of the current state; assigning one restarts from it.")
       .def_property_readonly("body_names",
@@ -203,19 +277,37 @@ void bindSimulator(py::module_& m) {
             const auto joint = s.model->findActuator(name);
             if (!joint) throw py::key_error("no actuator '" + name + "'");
             if (std::isinf(value)) throw py::value_error("actuator command must be finite");
-            s.sim.setActuatorCommand(*joint, value);
+            s.sim->setActuatorCommand(*joint, value);
+            if (std::isnan(value))
+              s.commands.erase(*joint);
+            else
+              s.commands[*joint] = value;
           },
           py::arg("actuator"), py::arg("value"),
           "Commands an actuator (its target: effort, position or rate) from the next step on, "
           "in place of its target signal; NaN returns it to the signal.")
+      .def("set_parameters", &setParameters, py::arg("set"),
+           "set_parameters({name: value}): changes scene parameters from the next step on "
+           "(the model is built again with them; the state, the time and the actuator "
+           "commands go on). Raises SceneError for a bad value and ValueError when the new "
+           "values change the state's layout (bodies, joints, friction states). The run "
+           "statistics start again.")
+      .def_property_readonly(
+          "parameters",
+          [](const PySimulator& s) {
+            py::dict d;
+            for (const auto& [name, value] : s.scene.scene.parameters) d[py::str(name)] = value;
+            return d;
+          },
+          "The scene's parameters now (name -> text as the scene reads it).")
       .def(
-          "contacts", [](PySimulator& s) { return contactsOf(*s.model, s.sim.current()); },
+          "contacts", [](PySimulator& s) { return contactsOf(*s.model, s.sim->current()); },
           "The contact points of the current state: position, normal (A into B), depth, "
           "normal_force, friction_force (on B), slip (B rel. A), mu, body_a, body_b.")
       .def_property_readonly(
           "stats",
           [](const PySimulator& s) {
-            return jsonToPython(study::stepStatsJsonText(s.sim.stats()));
+            return jsonToPython(study::stepStatsJsonText(s.sim->stats()));
           },
           "The run statistics so far, as summary.json's \"run\" block names them.");
 }

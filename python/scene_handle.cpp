@@ -16,8 +16,14 @@ bool anySetting(const io::RunSettings& s) {
 
 }  // namespace
 
+io::Scene SceneHandle::reload() const { return loadWith({}); }
+
 io::Scene SceneHandle::withSettings(const io::RunSettings& settings) const {
   if (!anySetting(settings)) return scene;
+  return loadWith(settings);
+}
+
+io::Scene SceneHandle::loadWith(const io::RunSettings& settings) const {
   switch (source) {
     case Source::kFile:
       return io::loadScene(origin, overrides, package_paths, settings, user_laws);

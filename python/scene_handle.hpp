@@ -24,6 +24,11 @@ struct SceneHandle {
 
   // The same scene with `settings` replacing its own (itself when none is given).
   io::Scene withSettings(const io::RunSettings& settings) const;
+  // The scene loaded again from its origin with the current overrides (and its run settings).
+  io::Scene reload() const;
+
+ private:
+  io::Scene loadWith(const io::RunSettings& settings) const;
 };
 
 SceneHandle loadSceneHandle(const std::string& source, std::vector<std::string> overrides,

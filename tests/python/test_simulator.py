@@ -133,3 +133,49 @@ def test_ctrl_c_stops_a_long_step_after_a_whole_step(belt):
     assert t / 1e-3 == pytest.approx(round(t / 1e-3), abs=1e-6)  # a whole number of steps
     assert np.isfinite(sim.state.positions).all()
     assert sim.step(10)  # and it goes on from there
+
+
+def test_set_parameters_goes_on_from_the_state(belt):
+    """A parameter changed mid-run: the steps after it are those of a simulator loaded with
+    the new value and started from the same state, bit for bit."""
+    sim = tribo.Simulator(tribo.load_scene(belt))
+    assert sim.step(3000)
+    sim.set_parameters({"v_b": 0.8, "k": 250})
+    assert sim.parameters["v_b"] == "0.8" and sim.parameters["k"] == "250"
+    fresh = tribo.Simulator(tribo.load_scene(belt, set={"v_b": 0.8, "k": 250}))
+    fresh.state = sim.state
+    for _ in range(2000):
+        assert sim.step() and fresh.step()
+    assert sim.state == fresh.state
+    sim.set_parameters({"v_b": 0.8})  # the same value again: nothing changes
+    assert sim.parameters["k"] == "250"
+
+
+def test_a_belt_slowed_mid_run_carries_the_sticking_block_at_its_new_speed(belt):
+    """While the block sticks it moves with the belt (to within the law's stick speed
+    v_s = 0.01 m/s): at 1.5 m/s before the change, at the new speed after it."""
+    sim = tribo.Simulator(tribo.load_scene(belt))
+
+    def fastest(seconds):
+        top = -math.inf
+        for _ in range(int(seconds / 1e-3)):
+            assert sim.step()
+            top = max(top, sim.state.velocities[1, 0])
+        return top
+
+    assert fastest(20) == pytest.approx(1.5, abs=0.01)
+    for v_b in (0.6, 0.25):
+        sim.set_parameters({"v_b": v_b})
+        fastest(5)  # the transient of the change
+        assert fastest(10) == pytest.approx(v_b, abs=0.01)
+
+
+def test_set_parameters_refuses_what_cannot_go_on(belt):
+    sim = tribo.Simulator(tribo.load_scene(belt))
+    assert sim.step(100)
+    with pytest.raises(ValueError, match="friction memory of contact material 0: roh_yoo -> lugre"):
+        sim.set_parameters({"friction": "lugre"})  # bristle states the run does not have
+    with pytest.raises(tribo.SceneError, match="v_b"):
+        sim.set_parameters({"v_b": "fast"})
+    assert sim.parameters["v_b"] == "1.5"  # a refused change leaves the run as it was
+    assert sim.step(100)
