@@ -8,6 +8,7 @@
 #include "apps/command.hpp"
 #include "apps/info_command.hpp"
 #include "apps/modes_command.hpp"
+#include "apps/orbit_command.hpp"
 #include "apps/run_command.hpp"
 #include "apps/sweep_command.hpp"
 #include "apps/tradeoff_command.hpp"
@@ -23,7 +24,8 @@ int main(int argc, char** argv) {
   tribo.footer("Run 'tribo COMMAND --help' for a command's options.");
   const std::vector<app::Command> commands = {
       app::addRunCommand(tribo),      app::addInfoCommand(tribo),  app::addSweepCommand(tribo),
-      app::addTradeoffCommand(tribo), app::addModesCommand(tribo), app::addViewCommand(tribo)};
+      app::addTradeoffCommand(tribo), app::addModesCommand(tribo), app::addOrbitCommand(tribo),
+      app::addViewCommand(tribo)};
   // `tribo help`: the same as `tribo --help` (not listed).
   CLI::App* help = tribo.add_subcommand("help", "")->group("");
   try {

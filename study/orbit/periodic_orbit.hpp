@@ -1,0 +1,75 @@
+// Periodic orbits of a scene (the limit cycle of stick-slip, its period, amplitude and
+// stability) by shooting on the engine's own step, as circuit simulators find a periodic
+// steady state on their transient integrator (Telichevesky, Kundert & White, "Efficient
+// steady-state analysis based on matrix-free Krylov-subspace methods", DAC 1995; the
+// formulation and the phase condition as in Seydel, "Practical Bifurcation and Stability
+// Analysis", 3rd ed., Springer 2010, sec. 7.3). Unknowns: the state y0 on the orbit
+// (study/orbit/orbit_coordinates.hpp: the dynamic bodies and the friction laws' internal
+// states) and the period T:
+//   phi_T(y0) - y0 = 0    phi: the scene's integrator at its step, the last step shortened
+//                         so that the flow ends at T exactly
+//   v_obs(y0)      = 0    phase: the orbit starts where the observed coordinate (the scene's
+//                         summary body and coordinate) turns from rising to falling
+// solved by Newton's method with the Jacobian from finite differences of the flow (one column
+// per unknown, the columns shared over the cores) and least squares (QR with column
+// pivoting: directions the joints' constraints remove make it singular). The Floquet
+// multipliers are the eigenvalues of the monodromy matrix d phi_T / d y0 at the orbit; one is
+// 1 (the direction along the orbit) and its distance from 1 is reported as a quality check.
+// On a stick-slip orbit the stick phase collapses phase space: the other multipliers come out
+// near zero. The first guess is the settled tail of a run of the scene: its last two maxima.
+// Limits: autonomous scenes (no loads, actuators, drives, moving kinematic bodies or surface
+// velocities that vary: a forced orbit has the forcing's period); fixed-step integrators (rk4,
+// semi_implicit_euler); friction memory on contacts that stay the same along the orbit.
+// Not here: continuation in a parameter and the bifurcations along a branch, a start from a
+// Hopf point of `tribo modes`, matrix-free Krylov solves for large states.
+#pragma once
+
+#include <Eigen/Dense>
+#include <complex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/scene_loader.hpp"
+
+namespace tribo::study {
+
+// A scene that has no orbit to shoot for (not autonomous, no oscillation, a failed step,
+// Newton not converging): what() says which and what to change.
+class OrbitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct OrbitSpec {
+  double settle = 0.0;      // [s] the run that gives the first guess; 0: the scene's duration
+  int max_iterations = 12;  // Newton iterations at most
+  double tolerance = 1e-9;  // converged when |F| <= tolerance (1 + |y0|)
+  double fd_step = 1e-7;    // finite-difference step, relative to each unknown's scale
+  unsigned threads = 0;     // for the Jacobian's columns; 0: one per core
+};
+
+struct OrbitResult {
+  std::string observed;                             // "box.x": the summary body's coordinate
+  double period = 0;                                // [s]
+  double x_max = 0, x_min = 0, amplitude_pp = 0;    // of the observed coordinate on the orbit
+  double guess_period = 0, guess_amplitude_pp = 0;  // from the settled run
+  int iterations = 0;
+  double residual = 0;                            // |F| at the end, relative to 1 + |y0|
+  std::vector<std::complex<double>> multipliers;  // by decreasing modulus
+  int trivial = -1;                               // which one is the trivial multiplier (nearest 1)
+  double trivial_error = 0;                       // |mu_trivial - 1|
+  bool stable = false;                            // every other multiplier inside the unit circle
+  std::vector<std::string> coordinates;           // names of y0's entries
+  Eigen::VectorXd start;                          // y0
+  std::vector<double> t, x;  // the observed coordinate over one period, per step
+  double seconds = 0;        // wall time
+};
+
+// Throws OrbitError (and SceneError never: the scene is loaded).
+OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec = {});
+
+// orbit.json's text: the scene, the figures, the multipliers and the start state.
+std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const OrbitResult& r);
+
+}  // namespace tribo::study
