@@ -11,7 +11,8 @@
 // account as a source (core/energy.hpp), like the joint elements.
 // Not here: loads on kinematic bodies or between two bodies (no reaction is applied
 // anywhere: the load comes from outside the model), loads depending on the state
-// (actuators with feedback), time signals driving kinematic bodies or surface velocities.
+// (actuators with feedback), time signals driving kinematic bodies or surface velocities;
+// evaluating it in the step (core/applied_loads.hpp).
 #pragma once
 
 #include <array>
@@ -32,27 +33,5 @@ struct AppliedLoad {
   LoadFrame frame = LoadFrame::kWorld;
   Vec3 point = Vec3::Zero();  // where the force acts, body frame from the origin [m]
 };
-
-// The load at time t on the body moving as `body`, world.
-struct LoadWrench {
-  Vec3 force = Vec3::Zero();   // F [N]
-  Vec3 point = Vec3::Zero();   // where F acts, world [m]
-  Vec3 torque = Vec3::Zero();  // tau_W, the pure torque (without r x F) [N m]
-};
-
-inline LoadWrench appliedLoadWrench(const AppliedLoad& load, double t, const BodyKinematics& body) {
-  auto at = [t](const std::array<Signal, 3>& s) {
-    return Vec3(s[0].value(t), s[1].value(t), s[2].value(t));
-  };
-  LoadWrench w;
-  w.force = at(load.force);
-  w.torque = at(load.torque);
-  if (load.frame == LoadFrame::kBody) {
-    w.force = body.rotation * w.force;
-    w.torque = body.rotation * w.torque;
-  }
-  w.point = body.position + body.rotation * load.point;
-  return w;
-}
 
 }  // namespace tribo

@@ -53,6 +53,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
       detector_(makeModelDetector(model_)),
       solver_(*model_),
       joint_forces_(*model_),
+      loads_(*model_),
       projection_(*model_),
       friction_(*model_, joint_forces_) {
   const std::size_t nb = model_->bodies.size();
@@ -71,7 +72,9 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   ws_.surface_velocity.clear();
   for (const Body& b : model_->bodies) {
     ws_.surface_velocity.push_back(b.surface_velocity);
-    if (b.surface_velocity_signal) varying_surfaces_.push_back(ws_.surface_velocity.size() - 1);
+    if (b.surface_velocity_signal)
+      varying_surfaces_.emplace_back(ws_.surface_velocity.size() - 1,
+                                     SignalVectorMemo(*b.surface_velocity_signal));
   }
   ws_.constraint_wrench.assign(nb, {});
   ws_.load_wrench.assign(nb, {});
@@ -149,8 +152,7 @@ const Workspace& Dynamics::evaluate(const State& state) {
 
 void Dynamics::updatePoses(const State& state) {
   const Model& m = *model_;
-  for (const std::size_t b : varying_surfaces_)
-    ws_.surface_velocity[b] = m.bodies[b].surfaceVelocityAt(state.time);
+  for (auto& [b, memo] : varying_surfaces_) ws_.surface_velocity[b] = memo.at(state.time);
   parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
     ws_.rotation[b] = r;
@@ -254,27 +256,8 @@ void Dynamics::assemble(const State& state) {
   }
   accumulateSprings(state);
   accumulateBushingsAndTorsion(state);
-  accumulateLoads(state);
+  if (!loads_.empty()) loads_.accumulate(state, ws_);  // core/applied_loads.hpp
   joint_forces_.accumulate(state, ws_);
-}
-
-void Dynamics::accumulateLoads(const State& state) {
-  if (model_->loads.empty()) return;
-  for (Wrench& w : ws_.load_wrench) w.setZero();
-  for (std::size_t i = 0; i < model_->loads.size(); ++i) {
-    const AppliedLoad& load = model_->loads[i];
-    const BodyKinematics kinematics = bodyKinematics(state, ws_.rotation, load.body);
-    LoadWrench w = appliedLoadWrench(load, state.time, kinematics);
-    if (!load_offsets_.empty()) {  // an input perturbed from outside (study/modes)
-      const Mat3 r = load.frame == LoadFrame::kBody ? kinematics.rotation : Mat3::Identity();
-      w.force += r * load_offsets_[i].force;
-      w.torque += r * load_offsets_[i].torque;
-    }
-    Wrench& on = ws_.load_wrench[load.body.value];
-    applyAt(on, state.bodies[load.body.value].position, w.point, w.force);
-    on.torque += w.torque;
-    ws_.load_force[i] = w.force;
-  }
 }
 
 void Dynamics::accumulateSprings(const State& state) {

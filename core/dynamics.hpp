@@ -24,6 +24,7 @@
 
 #include "contact/collision_detector.hpp"
 #include "contact/contact_force.hpp"
+#include "core/applied_loads.hpp"
 #include "core/constraint_projection.hpp"
 #include "core/constraint_solver.hpp"
 #include "core/friction_states.hpp"
@@ -50,8 +51,7 @@ class Dynamics {
   // Added to load i's force and torque (in its frame) from now on: the input matrix's
   // perturbation (study/modes/input_matrix.hpp); zero offsets restore the load.
   void setLoadOffset(std::size_t load, const Vec3& force, const Vec3& torque) {
-    if (load_offsets_.empty()) load_offsets_.assign(model_->loads.size(), {});
-    load_offsets_.at(load) = {force, torque};
+    loads_.setOffset(load, force, torque);
   }
   // A command for a joint's actuator from outside (JointForces::setActuatorCommand).
   bool setActuatorCommand(int joint, double command) {
@@ -98,12 +98,12 @@ class Dynamics {
 
   void accumulateSprings(const State& state);
   void accumulateBushingsAndTorsion(const State& state);  // core/bushing.hpp, torsional_spring.hpp
-  void accumulateLoads(const State& state);               // core/applied_load.hpp
 
   std::shared_ptr<const Model> model_;
   contact::CollisionDetector detector_;
   ConstraintSolver solver_;
   JointForces joint_forces_;
+  AppliedLoads loads_;
   mutable ConstraintProjection projection_;  // scratch only; initialState() uses it
   Workspace ws_;
   std::vector<Mat3> inv_inertia_body_;                    // per body, zero for kinematic bodies
@@ -112,9 +112,9 @@ class Dynamics {
   const ContactPair& pairOf(const contact::ContactRecord& rec) const {
     return ws_.contact_pair[static_cast<std::size_t>(&rec - ws_.contacts.data())];
   }
-  std::vector<char> at_body_origin_;           // per geometry: its local pose is the identity
-  std::vector<std::size_t> varying_surfaces_;  // bodies whose surface velocity is a signal
-  std::vector<Wrench> load_offsets_;           // per load, setLoadOffset's (empty: none ever set)
+  std::vector<char> at_body_origin_;  // per geometry: its local pose is the identity
+  // Bodies whose surface velocity is a signal, each with its memo (core/signal_memo.hpp).
+  std::vector<std::pair<std::size_t, SignalVectorMemo>> varying_surfaces_;
   FrictionStates friction_;
   bool profiling_ = false;
   StageProfile profile_;

@@ -14,7 +14,9 @@
 //   bdf:    CVODE variable-order (1-5) BDF with Newton iterations on a dense
 //           difference-quotient Jacobian; implicit, for very stiff contacts.
 // Both locate friction regime changes (slip speed crossing zero or a friction law's
-// breakpoints) by root finding and restart there, when the model asks for event location.
+// breakpoints) by root finding and restart there, when the model asks for event location,
+// and end a step exactly at each breakpoint of the model's input signals and restart there
+// (core/input_breakpoints.hpp).
 // `start_is_evaluated` lets the caller say the Dynamics workspace already holds the
 // evaluation at `state` (it was needed for output), so it is not done twice.
 // Not here: divergence checks (core/simulator.hpp), the a-priori step limit

@@ -110,6 +110,8 @@ JointForces::JointForces(const Model& model) {
     e.joint = j;
     e.coordinate = jointCoordinate(joint);
     e.elements = &joint.elements;
+    if (const auto& a = joint.elements.actuator)
+      e.target = SignalMemo(a->target, a->kind == ActuatorKind::kPositionServo);
     if (fixed_step && model.options.time_step > 0.0)
       e.max_slope = kDissipativeSlopeShare * coordinateInertia(model, j, joint_of_child) /
                     model.options.time_step;
@@ -198,10 +200,11 @@ void JointForces::accumulate(const State& state, Workspace& ws) {
       if (ql < l.lower) tau += std::max(0.0, l.stiffness * (l.lower - ql) - l.damping * rate);
     }
     if (el.actuator) {
-      const ActuatorOutput out =
-          std::isnan(e.command)
-              ? actuatorEffort(*el.actuator, state.time, q, rate, e.coordinate.angular)
-              : actuatorEffortFor(*el.actuator, e.command, 0.0, q, rate, e.coordinate.angular);
+      // actuatorEffort with the signal sampled through the memo, or the command.
+      const SignalMemo::Sample target =
+          std::isnan(e.command) ? e.target.at(state.time) : SignalMemo::Sample{e.command, 0.0};
+      const ActuatorOutput out = actuatorEffortFor(*el.actuator, target.value, target.derivative, q,
+                                                   rate, e.coordinate.angular);
       ws.actuator_output[static_cast<std::size_t>(e.joint)] = out;
       tau += out.effort;
     }

@@ -42,6 +42,7 @@
 #include "core/constraint_rows.hpp"
 #include "core/constraint_solver.hpp"
 #include "core/model.hpp"
+#include "core/signal_memo.hpp"
 #include "core/state.hpp"
 #include "core/workspace.hpp"
 #include "friction/dynamic_law.hpp"
@@ -116,6 +117,7 @@ class JointForces {
     double* z_rate = nullptr;   // and its rate in the workspace
     double load = 0.0;          // the friction's load at the last evaluation [N]
     double command = std::numeric_limits<double>::quiet_NaN();  // the actuator's, if set
+    SignalMemo target;  // the actuator's target (and a position servo's its rate), if any
   };
   // Holds a dissipative torque within c_max |q'| (see the header comment).
   static double capped(double tau, double rate, double max_slope) {

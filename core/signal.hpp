@@ -30,7 +30,8 @@
 // A function signal is as thread-safe as its callable: Signal copies it (std::function),
 // so a callable with mutable state must give each copy its own (io/time_expression.hpp).
 // Not here: reading expressions or files (io/), honouring the breakpoints in the adaptive
-// integrators (a fixed step steps over them), finding the kinks of a function by itself.
+// integrators (core/input_breakpoints.hpp, core/sundials_stepper.hpp; a fixed step steps over
+// them), finding the kinks of a function by itself.
 #pragma once
 
 #include <functional>

@@ -57,9 +57,15 @@ class ArkodeDopri5 final : public SundialsStepper {
     error_ = weight_ = nullptr;
   }
 
-  Advance advance(double tout, double& t) override {
+  Advance advance(double tout, double stop, double& t) override {
+    if (stop != kNoStop && ERKStepSetStopTime(memory_, stop) != ARK_SUCCESS) {
+      last_flag_ = ARK_ILL_INPUT;
+      if (last_error_.empty()) last_error_ = "ERKStepSetStopTime failed";
+      return Advance::kFailed;
+    }
     last_flag_ = ERKStepEvolve(memory_, tout, y_, &t, ARK_NORMAL);
     if (last_flag_ == ARK_SUCCESS) return Advance::kReached;
+    if (last_flag_ == ARK_TSTOP_RETURN) return Advance::kStop;
     if (last_flag_ == ARK_ROOT_RETURN) return Advance::kRoot;
     if (last_error_.empty()) last_error_ = ERKStepGetReturnFlagName(last_flag_);
     return Advance::kFailed;

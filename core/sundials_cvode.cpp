@@ -76,9 +76,15 @@ class CvodeBdf final : public SundialsStepper {
     error_ = weight_ = nullptr;
   }
 
-  Advance advance(double tout, double& t) override {
+  Advance advance(double tout, double stop, double& t) override {
+    if (stop != kNoStop && CVodeSetStopTime(memory_, stop) != CV_SUCCESS) {
+      last_flag_ = CV_ILL_INPUT;
+      if (last_error_.empty()) last_error_ = "CVodeSetStopTime failed";
+      return Advance::kFailed;
+    }
     last_flag_ = CVode(memory_, tout, y_, &t, CV_NORMAL);
     if (last_flag_ == CV_SUCCESS) return Advance::kReached;
+    if (last_flag_ == CV_TSTOP_RETURN) return Advance::kStop;
     if (last_flag_ == CV_ROOT_RETURN) return Advance::kRoot;
     if (last_error_.empty()) last_error_ = CVodeGetReturnFlagName(last_flag_);
     return Advance::kFailed;

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/input_breakpoints.hpp"
+
 namespace tribo {
 
 namespace {
@@ -41,7 +43,8 @@ bool sameState(const State& a, const State& b) {
 SundialsStepper::SundialsStepper(const Model& model, std::string name)
     : options_(model.options),
       system_(model, model.options.event_location),
-      name_(std::move(name)) {
+      name_(std::move(name)),
+      breakpoints_(inputBreakpoints(model)) {
   if (SUNContext_Create(nullptr, &context_) != 0 || !context_)
     throw std::runtime_error(name_ + ": cannot create the SUNDIALS context");
   y_ = N_VNew_Serial(static_cast<sunindextype>(system_.size()), context_);
@@ -105,6 +108,15 @@ void SundialsStepper::restart(double t0, bool at_event) {
   start(t0, initial_step);
 }
 
+double SundialsStepper::nextStop(double now, double tout) const {
+  if (breakpoints_.empty()) return kNoStop;
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double near_now = 64.0 * eps * std::max(std::abs(now), std::abs(tout));
+  const auto next = std::upper_bound(breakpoints_.begin(), breakpoints_.end(), now + near_now);
+  if (next == breakpoints_.end()) return std::numeric_limits<double>::max();
+  return *next >= tout - near_now && *next <= tout + near_now ? tout : *next;
+}
+
 IntegratorStatus SundialsStepper::failure(double t, const std::string& what) {
   running_ = false;
   IntegratorStatus status;
@@ -159,10 +171,23 @@ IntegratorStatus SundialsStepper::step(Dynamics& dynamics, State& state, double 
   IntegratorStatus status;
   setMaxSteps(maxInternalSteps(h));
   interrupted_ = false;
+  double now = state.time;
   for (;;) {
-    double t = state.time;
-    const Advance result = advance(tout, t);
+    double t = now;
+    const double stop = nextStop(now, tout);
+    const Advance result = advance(tout, stop, t);
+    if (stop == tout && (result == Advance::kReached || result == Advance::kStop)) {
+      system_.normalizeQuaternions(y);  // an input's breakpoint at tout: restart there
+      restart(tout, true);
+      break;
+    }
     if (result == Advance::kReached) break;
+    if (result == Advance::kStop) {  // at an input's breakpoint, before tout
+      system_.normalizeQuaternions(y);
+      restart(t, true);
+      now = t;
+      continue;
+    }
     if (interrupted_) {
       running_ = false;
       last_error_.clear();
@@ -192,6 +217,7 @@ IntegratorStatus SundialsStepper::step(Dynamics& dynamics, State& state, double 
     counters_.last_event_time = t;
     system_.normalizeQuaternions(y);
     restart(t, true);
+    now = t;
     if (++restarts_here >= kMaxEventRestarts) system_.suspendEvents(true);
   }
   if (status.ok) {

@@ -6,6 +6,9 @@
 //   otherwise (first call, setState, a failed step, |q| drifted by > 1e-6, or stick anchors
 //   re-set by a stateful friction law after the last step) restart there;
 //   integrate to t + h in the method's normal mode (it may step past t + h and interpolate);
+//   with the model's input breakpoints (core/input_breakpoints.hpp) as stop times: no internal
+//   step crosses one; the method ends a step exactly at it and restarts there (like at an
+//   event), also when it falls on t + h (within 64 eps |t|: then at t + h);
 //   at a located event, restart at the event (the method's history does not cross a kink of
 //   the friction law) with the last step size as the first (the methods' own first-step
 //   estimate is unreliable at a kink); after kMaxEventRestarts events within one call (a
@@ -23,7 +26,9 @@
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "core/integrator.hpp"
 #include "core/sundials_system.hpp"
@@ -46,7 +51,7 @@ class SundialsStepper : public Integrator {
   int evaluationsPerStep() const final { return 0; }
 
  protected:
-  enum class Advance { kReached, kRoot, kFailed };
+  enum class Advance { kReached, kStop, kRoot, kFailed };
   struct Stats {
     long steps = 0;
     long rejected = 0;
@@ -59,8 +64,10 @@ class SundialsStepper : public Integrator {
   virtual void discard() = 0;
   // The last internal step taken [s] (0 before the first).
   virtual double lastStep() = 0;
-  // Integrates towards tout; y_ then holds y(t).
-  virtual Advance advance(double tout, double& t) = 0;
+  // Integrates towards tout, no internal step passing `stop` (a stop time: kStop when reached
+  // before tout) unless it is kNoStop; y_ then holds y(t).
+  virtual Advance advance(double tout, double stop, double& t) = 0;
+  static constexpr double kNoStop = std::numeric_limits<double>::infinity();
   // Internal steps allowed per advance() call.
   virtual void setMaxSteps(long steps) = 0;
   // Statistics since the last start().
@@ -88,6 +95,10 @@ class SundialsStepper : public Integrator {
 
  private:
   void restart(double t0, bool at_event);
+  // The stop time for a call from `now` to `tout`: the first breakpoint after now (within
+  // 64 eps of tout: tout itself), or kNoStop. The method's stop time is set at every advance
+  // once the model has a breakpoint (past the last one: the largest double).
+  double nextStop(double now, double tout) const;
   IntegratorStatus failure(double t, const std::string& what);
 
   const std::string name_;
@@ -95,6 +106,7 @@ class SundialsStepper : public Integrator {
   State last_out_;
   Stats done_;  // accumulated over earlier starts
   std::string setup_error_;
+  std::vector<double> breakpoints_;  // the model's input breakpoints, increasing
 };
 
 }  // namespace tribo
