@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -53,14 +54,16 @@ inline long lines(const fs::path& p) {
   return std::count(s.begin(), s.end(), '\n');
 }
 
-// A fixture whose dir_ is a folder named `prefix` + the running test's name, removed before
-// and after the test. It is not created: a test may check that nothing was written.
+// A fixture whose dir_ is a folder named `prefix` + the running test's name + the process
+// id (two test runs at once, e.g. of two build trees, never share one), removed before and
+// after the test. It is not created: a test may check that nothing was written.
 class CliTest : public ::testing::Test {
  protected:
   explicit CliTest(std::string prefix) : prefix_(std::move(prefix)) {}
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           (prefix_ + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           (prefix_ + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+            std::to_string(::getpid()));
     fs::remove_all(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
