@@ -13,6 +13,7 @@
 #include "python/bindings.hpp"
 #include "study/modes/modes.hpp"
 #include "study/modes/steady_state.hpp"
+#include "study/orbit/periodic_orbit.hpp"
 #include "study/output_budget.hpp"
 #include "study/sweep/sweep_grid.hpp"
 
@@ -66,6 +67,9 @@ void bindErrors(py::module_& m) {
   static py::object* output =
       new py::object(newError(m, "OutputTooLarge", py::make_tuple(base, runtime_error),
                               "A run whose recording would not fit the memory cap."));
+  static py::object* orbit = new py::object(
+      newError(m, "OrbitError", py::make_tuple(base, runtime_error),
+               "No periodic orbit: a forced scene, no oscillation, or Newton not converging."));
 
   py::register_exception_translator([](std::exception_ptr p) {
     try {
@@ -94,6 +98,8 @@ void bindErrors(py::module_& m) {
       raise(*modes, e.what());
     } catch (const study::OutputTooLarge& e) {
       raise(*output, e.what());
+    } catch (const study::OrbitError& e) {
+      raise(*orbit, e.what());
     }
   });
 }

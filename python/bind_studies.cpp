@@ -2,7 +2,9 @@
 // linear stability as `tribo modes` does (study/modes/modes.hpp) and returns the steady
 // state's figures and the modes as a dict.
 // tribo.tradeoff measures the speed-accuracy ladder as `tribo tradeoff` does
-// (study/tradeoff.hpp) and returns its rows. The GIL is released while they run. Not here:
+// (study/tradeoff.hpp) and returns its rows. tribo.orbit finds the periodic orbit as
+// `tribo orbit` does (study/orbit/periodic_orbit.hpp) and returns orbit.json's document with
+// the sampled period as arrays. The GIL is released while they run. Not here:
 // plotting.
 #include <pybind11/complex.h>
 #include <pybind11/numpy.h>
@@ -15,6 +17,7 @@
 #include "python/scene_handle.hpp"
 #include "study/modes/modes.hpp"
 #include "study/modes/modes_report.hpp"
+#include "study/orbit/periodic_orbit.hpp"
 #include "study/tradeoff.hpp"
 
 namespace tribo::python {
@@ -106,6 +109,27 @@ py::list runTradeoff(const py::object& scene, const py::object& set,
   return rows;
 }
 
+py::object runOrbit(const SceneHandle& scene, double settle, double tolerance) {
+  study::OrbitSpec spec;
+  spec.settle = settle;
+  spec.tolerance = tolerance;
+  if (!(settle >= 0.0) || !(tolerance > 0.0))
+    throw py::value_error("orbit: settle must be >= 0 and tolerance > 0");
+  if (!scene.user_laws.empty())
+    throw py::value_error(
+        "orbit: a scene with laws written in Python cannot be shot for an orbit (the flows "
+        "run on several threads)");
+  study::OrbitResult r;
+  {
+    py::gil_scoped_release release;
+    r = study::findPeriodicOrbit(scene.scene, spec);
+  }
+  py::object out = jsonToPython(study::orbitJsonText(scene.scene, spec, r));
+  out["t"] = py::array_t<double>(static_cast<py::ssize_t>(r.t.size()), r.t.data());
+  out["x"] = py::array_t<double>(static_cast<py::ssize_t>(r.x.size()), r.x.data());
+  return out;
+}
+
 }  // namespace
 
 void bindStudies(py::module_& m) {
@@ -117,6 +141,11 @@ void bindStudies(py::module_& m) {
         "finite is None). matrices=True adds 'linear_model': the arrays A, B, K, C of y' = A y + "
         "B w with the names of their 'states' and 'inputs' (the loads' components and the "
         "actuators' targets). Raises NoSteadyState, ModesError.");
+  m.def("orbit", &runOrbit, py::arg("scene"), py::arg("settle") = 0.0, py::arg("tolerance") = 1e-9,
+        "orbit(scene, settle=0, tolerance=1e-9) -> dict: the periodic orbit as `tribo orbit` "
+        "finds it (orbit.json's document: period, amplitude_pp, stable, multipliers, newton, "
+        "start...) with 't' and 'x', the observed coordinate over one period as arrays. "
+        "Raises OrbitError (not autonomous, no oscillation, no convergence).");
   m.def("tradeoff", &runTradeoff, py::arg("scene"), py::arg("set") = py::none(),
         py::arg("integrators") = std::vector<std::string>{}, py::arg("window") = 10.0,
         py::arg("repeat") = 1,

@@ -113,3 +113,18 @@ def test_tradeoff_rows_equal_the_cli(cli, belt, tmp_path):
     assert all(r["setting"] == "dt" for r in done)
     assert done[-1]["value"] < done[0]["value"]
     assert done[-1]["trajectory_error"] < done[0]["trajectory_error"]
+
+
+def test_orbit_is_the_cli_orbit_json(cli, belt, tmp_path):
+    """tribo.orbit gives the document `tribo orbit` writes (the same numbers), with the
+    sampled period as arrays that start and end on the orbit's maximum."""
+    subprocess.run([cli, "orbit", belt, "--out", str(tmp_path), "--set", "duration=30"],
+                   check=True, capture_output=True)
+    theirs = json.loads((tmp_path / "orbit.json").read_text())
+    ours = tribo.orbit(tribo.load_scene(belt, set={"duration": 30}))
+    for key in ("period", "amplitude_pp", "stable", "multipliers", "start", "newton"):
+        assert ours[key] == theirs[key], key
+    assert ours["t"][0] == 0 and ours["t"][-1] == pytest.approx(ours["period"], abs=1e-12)
+    assert ours["x"][0] == pytest.approx(ours["x"][-1], abs=1e-7)
+    with pytest.raises(tribo.OrbitError, match="no oscillation"):
+        tribo.orbit(tribo.load_scene(belt, set={"v_b": 0, "duration": 3}))
