@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The figure of docs/experiments.md (gnuplot; build/apps/tribo runs each scene of
-# scenes/experiments/): docs/figures/experiments.png, four panels from the engine's runs:
+# scenes/experiments/): docs/figures/experiments.png, five panels from the engine's runs:
 #   break_away_ramp: the push F = rate t and the block's x (millimetres) against time;
 #   servo_stick_slip: the slide's x, the servo's target and its effort against time;
 #   arm_hold_pose: the shoulder's and elbow's angles and targets against time;
-#   belt_modulated: the box's x and the belt's speed against time.
+#   belt_modulated: the box's x and the belt's speed against time;
+#   presliding_drift: the block's x (micrometres) under lugre and under elasto_plastic.
 # Usage: scripts/plot_experiments.sh [OUT_DIR]   (default docs/figures)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,14 +27,17 @@ run break_away_ramp
 run servo_stick_slip --set duration=25
 run arm_hold_pose
 run belt_modulated --set duration=20 --set 'output.channels=[position, velocity]'
+run presliding_drift
+"$tribo" run scenes/experiments/presliding_drift.yaml --set friction=elasto_plastic \
+  --out "$work/presliding_drift_ep" --quiet > /dev/null
 
 gnuplot <<GP
-set terminal pngcairo noenhanced size 1200,860 font 'Helvetica,10'
+set terminal pngcairo noenhanced size 1200,1260 font 'Helvetica,10'
 set output '$out/experiments.png'
 set datafile separator ','
 set key top left
 set grid
-set multiplot layout 2,2
+set multiplot layout 3,2
 set title 'break_away_ramp: push F = t N/s, block x'
 set xlabel 't [s]'
 set ylabel 'F [N]'
@@ -62,6 +66,13 @@ set y2label 'speed [m/s]'
 plot '$work/belt_modulated/trajectory.csv' every ::1 using 1:$(col belt_modulated box.x) with lines lw 2 title 'box.x', \
      '' every ::1 using 1:$(col belt_modulated box.vx) axes x1y2 with lines title 'box.vx', \
      '' every ::1 using 1:(1.5 + 0.5*sin(2*pi*0.4*\$1)) axes x1y2 with lines dt 2 title 'belt speed'
+set title 'presliding_drift: push 0.35 + 0.3 sin(2 pi 2 t) N, mu_c F_n = 1 N'
+set ylabel 'x [um]'
+unset y2label
+unset y2tics
+set ytics mirror
+plot '$work/presliding_drift/trajectory.csv' every ::1 using 1:(1e6*\$$(col presliding_drift block.x)) with lines lw 2 title 'lugre: walks', \
+     '$work/presliding_drift_ep/trajectory.csv' every ::1 using 1:(1e6*\$$(col presliding_drift block.x)) with lines lw 2 title 'elasto_plastic: stays'
 unset multiplot
 GP
 echo "wrote $out/experiments.png"
