@@ -19,6 +19,12 @@ void AppliedLoads::setOffset(std::size_t load, const Vec3& force, const Vec3& to
   offsets_.at(load) = {force, torque};
 }
 
+void AppliedLoads::setCommand(std::size_t load, const std::optional<Vec3>& force,
+                              const std::optional<Vec3>& torque) {
+  if (commands_.empty()) commands_.assign(entries_.size(), {});
+  commands_.at(load) = {force, torque};
+}
+
 void AppliedLoads::accumulate(const State& state, Workspace& ws) {
   for (const int b : loaded_bodies_) ws.load_wrench[static_cast<std::size_t>(b)].setZero();
   const double t = state.time;
@@ -30,16 +36,20 @@ void AppliedLoads::accumulate(const State& state, Workspace& ws) {
     const Mat3& r = ws.rotation[b];
     const bool follower = load.frame == LoadFrame::kBody;
     Wrench& on = ws.load_wrench[b];
-    if (!offsets_.empty()) {  // an input perturbed from outside (study/modes): in full
-      Vec3 force = e.force.at(t), torque = e.torque.at(t);
+    if (!offsets_.empty() || !commands_.empty()) {  // commanded or perturbed: in full
+      const Command* command = commands_.empty() ? nullptr : &commands_[i];
+      Vec3 force = command && command->force ? *command->force : e.force.at(t);
+      Vec3 torque = command && command->torque ? *command->torque : e.torque.at(t);
       if (follower) {
         force = r * force;
         torque = r * torque;
       }
       const Vec3 point = origin + r * load.point;
       const Mat3 frame = follower ? r : Mat3::Identity();
-      force += frame * offsets_[i].force;
-      torque += frame * offsets_[i].torque;
+      if (!offsets_.empty()) {
+        force += frame * offsets_[i].force;
+        torque += frame * offsets_[i].torque;
+      }
       on.force += force;
       on.torque += (point - origin).cross(force);
       on.torque += torque;

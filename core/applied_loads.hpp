@@ -4,12 +4,14 @@
 // What it saves over evaluating every load in full: its signals are sampled through a memo
 // (core/signal_memo.hpp: once per distinct time, constants once), a force or torque whose
 // components are all the constant 0 adds nothing, a force at the body origin adds no moment,
-// and only loaded bodies' wrenches are zeroed. The sums are those of the full evaluation, bit
+// and only loaded bodies' wrenches are zeroed. A load commanded from outside (setCommand) or
+// perturbed (setOffset) takes the full path. The sums are those of the full evaluation, bit
 // for bit (a zero added to a sum that starts at +0 changes no bit; a non-finite force may
 // leave a different non-finite torque, which the guards stop either way).
 // Not here: the loads' power in the energy account (core/energy.hpp), reading them (io/).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/model.hpp"
@@ -28,6 +30,11 @@ class AppliedLoads {
   void accumulate(const State& state, Workspace& ws);
   // Added to load i's force and torque (in its frame) from now on (Dynamics::setLoadOffset).
   void setOffset(std::size_t load, const Vec3& force, const Vec3& torque);
+  // Load i's force and/or torque (in its frame) held at these values in place of its signals
+  // from now on: a command from outside the model (a controller; Simulator::setLoadCommand).
+  // std::nullopt gives that part back to its signals.
+  void setCommand(std::size_t load, const std::optional<Vec3>& force,
+                  const std::optional<Vec3>& torque);
 
  private:
   struct Entry {
@@ -38,6 +45,10 @@ class AppliedLoads {
   std::vector<Entry> entries_;
   std::vector<int> loaded_bodies_;  // each body with a load, once
   std::vector<Wrench> offsets_;     // per load (empty: none ever set)
+  struct Command {
+    std::optional<Vec3> force, torque;
+  };
+  std::vector<Command> commands_;  // per load (empty: none ever given)
 };
 
 }  // namespace tribo

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "contact/collision_detector.hpp"
 #include "contact/contact_force.hpp"
@@ -52,6 +53,11 @@ class Dynamics {
   // perturbation (study/modes/input_matrix.hpp); zero offsets restore the load.
   void setLoadOffset(std::size_t load, const Vec3& force, const Vec3& torque) {
     loads_.setOffset(load, force, torque);
+  }
+  // Load i held at these values in place of its signals (AppliedLoads::setCommand).
+  void setLoadCommand(std::size_t load, const std::optional<Vec3>& force,
+                      const std::optional<Vec3>& torque) {
+    loads_.setCommand(load, force, torque);
   }
   // A command for a joint's actuator from outside (JointForces::setActuatorCommand).
   bool setActuatorCommand(int joint, double command) {

@@ -109,6 +109,8 @@ struct Model {
   std::optional<BodyIndex> findBody(const std::string& name) const;
   // The joint carrying the actuator named `name` (core/joint_actuator.hpp).
   std::optional<int> findActuator(const std::string& name) const;
+  // The index of the load named `name` in `loads`.
+  std::optional<std::size_t> findLoad(const std::string& name) const;
   int dynamicBodyCount() const;
   // The pair a contact point's `pair` id names (listed or automatic).
   ContactPair contactPair(int id) const {

@@ -26,6 +26,12 @@ std::optional<int> Model::findActuator(const std::string& name) const {
   return std::nullopt;
 }
 
+std::optional<std::size_t> Model::findLoad(const std::string& name) const {
+  for (std::size_t i = 0; i < loads.size(); ++i)
+    if (loads[i].name == name) return i;
+  return std::nullopt;
+}
+
 std::optional<BodyIndex> Model::findBody(const std::string& name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == name) return BodyIndex{static_cast<int>(i)};

@@ -32,6 +32,18 @@ void Simulator::setActuatorCommand(int joint, double command) {
   evaluated_ = false;
 }
 
+void Simulator::setLoadCommand(std::size_t load, const std::optional<Vec3>& force,
+                               const std::optional<Vec3>& torque) {
+  if (load >= model().loads.size())
+    throw std::invalid_argument("load " + std::to_string(load) + " of " +
+                                std::to_string(model().loads.size()));
+  if ((force && !force->allFinite()) || (torque && !torque->allFinite()))
+    throw std::invalid_argument("load '" + model().loads[load].name +
+                                "': a commanded force or torque must be finite");
+  dynamics_.setLoadCommand(load, force, torque);
+  evaluated_ = false;
+}
+
 const Workspace& Simulator::current() {
   if (!evaluated_) {
     dynamics_.evaluate(state_);

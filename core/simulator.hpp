@@ -24,6 +24,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/dynamics.hpp"
@@ -93,6 +94,12 @@ class Simulator {
   // signal; the current evaluation is dropped. Throws std::invalid_argument when the joint
   // has no actuator or the command is infinite.
   void setActuatorCommand(int joint, double command);
+  // Holds load `load`'s force and/or torque (3 numbers in the load's frame) at these values
+  // from now on, in place of its signals (zero-order, as an actuator command); std::nullopt
+  // gives that part back to the signals. Throws std::invalid_argument for a load index out of
+  // range or a value that is not finite.
+  void setLoadCommand(std::size_t load, const std::optional<Vec3>& force,
+                      const std::optional<Vec3>& torque);
 
   // Advances by the model's time step.
   StepStatus step();

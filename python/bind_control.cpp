@@ -44,7 +44,27 @@ struct PyControl {
                             std::to_string(value));
     sim->setActuatorCommand(*joint, value);
   }
+  void setLoad(const std::string& name, const py::object& force, const py::object& torque) {
+    if (sim == nullptr)
+      throw py::value_error("this Control was used after its controller call returned");
+    setLoadFromPython(*sim, name, force, torque);
+  }
 };
+
+std::optional<Vec3> vectorFrom(const std::string& what, const py::object& v) {
+  if (v.is_none()) return std::nullopt;
+  std::vector<double> values;
+  try {
+    for (const py::handle x : v) values.push_back(x.cast<double>());
+  } catch (const std::exception&) {
+    throw py::value_error(what + ": expected 3 numbers");
+  }
+  if (values.size() != 3)
+    throw py::value_error(what + ": expected 3 numbers, got " + std::to_string(values.size()));
+  const Vec3 out(values[0], values[1], values[2]);
+  if (!out.allFinite()) throw py::value_error(what + ": expected finite numbers");
+  return out;
+}
 
 // q and q' of every revolute and prismatic joint at the simulator's state, with the
 // rotations the engine itself derives from it (Dynamics::updatePoses), so the values are
@@ -70,6 +90,20 @@ std::pair<py::array_t<double>, py::array_t<double>> coordinates(const Simulator&
 }
 
 }  // namespace
+
+LoadCommand setLoadFromPython(Simulator& sim, const std::string& name, const py::object& force,
+                              const py::object& torque) {
+  const auto load = sim.model().findLoad(name);
+  if (!load) {
+    std::string known;
+    for (const AppliedLoad& l : sim.model().loads) known += (known.empty() ? "" : ", ") + l.name;
+    throw py::key_error("no load '" + name + "' (loads: " + (known.empty() ? "none" : known) + ")");
+  }
+  LoadCommand command{*load, vectorFrom("load '" + name + "' force", force),
+                      vectorFrom("load '" + name + "' torque", torque)};
+  sim.setLoadCommand(command.load, command.force, command.torque);
+  return command;
+}
 
 std::function<std::string(Simulator&)> pythonController(py::object f,
                                                         std::shared_ptr<py::object> raised) {
@@ -136,7 +170,12 @@ void bindControl(py::module_& m) {
           "A copy of the state.")
       .def("set", &PyControl::set, py::arg("actuator"), py::arg("value"),
            "Commands an actuator (its target: an effort, a position or a rate) from now until "
-           "the next call, in place of its target signal.");
+           "the next call, in place of its target signal.")
+      .def("set_load", &PyControl::setLoad, py::arg("load"), py::arg("force") = py::none(),
+           py::arg("torque") = py::none(),
+           "Holds a load's force and/or torque (3 numbers or an array each, in the load's "
+           "frame) in place of its signals from now on; a part given as None goes back to "
+           "its signals.");
 }
 
 }  // namespace tribo::python

@@ -108,6 +108,7 @@ struct PySimulator {
   StepStatus status;
   std::map<int, double> commands;  // actuator commands given (joint -> value), kept across
                                    // set_parameters
+  std::map<std::size_t, LoadCommand> load_commands;  // likewise, the loads' (by index)
   explicit PySimulator(const SceneHandle& handle)
       : scene(handle),
         model(scene.scene.model),
@@ -133,6 +134,8 @@ std::string layoutDifference(const Model& from, const Model& to) {
     return count("bodies", from.bodies.size(), to.bodies.size());
   if (from.joints.size() != to.joints.size())
     return count("joints", from.joints.size(), to.joints.size());
+  if (from.loads.size() != to.loads.size())
+    return count("loads", from.loads.size(), to.loads.size());
   if (from.materials.size() != to.materials.size())
     return count("contact materials", from.materials.size(), to.materials.size());
   for (std::size_t i = 0; i < from.materials.size(); ++i) {
@@ -173,6 +176,7 @@ void setParameters(PySimulator& s, const py::object& set) {
   auto sim = std::make_unique<Simulator>(next.scene.model);
   sim->setState(state);
   for (const auto& [joint, value] : s.commands) sim->setActuatorCommand(joint, value);
+  for (const auto& [load, c] : s.load_commands) sim->setLoadCommand(load, c.force, c.torque);
   s.scene = std::move(next);
   s.model = s.scene.scene.model;
   s.sim = std::move(sim);
@@ -286,6 +290,22 @@ void bindSimulator(py::module_& m) {
           py::arg("actuator"), py::arg("value"),
           "Commands an actuator (its target: effort, position or rate) from the next step on, "
           "in place of its target signal; NaN returns it to the signal.")
+      .def(
+          "set_load",
+          [](PySimulator& s, const std::string& name, const py::object& force,
+             const py::object& torque) {
+            const LoadCommand c = setLoadFromPython(*s.sim, name, force, torque);
+            if (c.force || c.torque)
+              s.load_commands[c.load] = c;
+            else
+              s.load_commands.erase(c.load);
+          },
+          py::arg("load"), py::arg("force") = py::none(), py::arg("torque") = py::none(),
+          "set_load(name, force=None, torque=None): holds the load's force and/or torque (3 "
+          "numbers or a NumPy array each, in the load's frame: world or body) at these values "
+          "from the next step on, in place of its signals (a zero-order hold); a part given as "
+          "None goes back to its signals, so set_load(name) releases the load. Raises KeyError "
+          "naming the scene's loads, ValueError for a vector that is not 3 finite numbers.")
       .def("set_parameters", &setParameters, py::arg("set"),
            "set_parameters({name: value}): changes scene parameters from the next step on "
            "(the model is built again with them; the state, the time and the actuator "

@@ -15,8 +15,11 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/math.hpp"
 
 namespace tribo {
 class Simulator;
@@ -44,6 +47,17 @@ std::vector<std::string> pathsFrom(const py::object& paths);
 // kept in `raised` for the caller to raise again.
 std::function<std::string(Simulator&)> pythonController(py::object f,
                                                         std::shared_ptr<py::object> raised);
+// Simulator.set_load and Control.set_load: load `name`'s force and torque held at the given
+// 3-vectors (sequences or NumPy arrays, in the load's frame) in place of its signals; a part
+// given as None goes back to its signals. Raises KeyError naming the loads, ValueError for a
+// vector that is not 3 finite numbers.
+// Returns what it commanded.
+struct LoadCommand {
+  std::size_t load = 0;
+  std::optional<Vec3> force = std::nullopt, torque = std::nullopt;
+};
+LoadCommand setLoadFromPython(Simulator& sim, const std::string& name, const py::object& force,
+                              const py::object& torque);
 // Python's json.loads of a JSON text (the engine's own JSON, e.g. summary.json's).
 py::object jsonToPython(const std::string& text);
 

@@ -116,3 +116,65 @@ def test_simulator_set_actuator_commands_between_steps():
     assert sim.state.velocities[0, 0] == pytest.approx(0.2, rel=1e-12)
     with pytest.raises(KeyError):
         sim.set_actuator("missing", 1.0)
+
+
+FREE_BODY = """
+simulation: {duration: 10, time_step: 0.001, integrator: rk4, gravity: [0, 0, 0]}
+bodies:
+  - {name: block, mass: 2, inertia: [0.3, 0.3, 0.4]}
+loads:
+  - {name: push, body: block, force: [{ramp: {rate: 1}}, 0, 0], frame: world}
+  - {name: spin, body: block, torque: [0, 0, 0], frame: body}
+"""
+
+
+def test_a_load_set_from_python_moves_the_body_as_the_closed_form_says():
+    """A free 2 kg body pushed by F = t (its signal); from t1 on, set_load holds F = 3 N
+    (constant acceleration 1.5 m/s^2), then set_load(name) gives the ramp back (a = t / m).
+    RK4 integrates these polynomials exactly, so x and v follow the closed forms to
+    round-off; a torque held on the spin load turns it at tau / I_z."""
+    m, h = 2.0, 1e-3
+    sim = tribo.Simulator(tribo.load_scene(FREE_BODY))
+    assert sim.step(1000)  # t1 = 1 s under the ramp: v = t^2 / 2m, x = t^3 / 6m
+    t1 = sim.time
+    x1, v1 = t1 ** 3 / (6 * m), t1 ** 2 / (2 * m)
+    assert sim.state.positions[0, 0] == pytest.approx(x1, rel=1e-12)
+    sim.set_load("push", force=np.array([3.0, 0.0, 0.0]))
+    sim.set_load("spin", torque=[0.0, 0.0, 0.2])
+    assert sim.step(500)
+    tau = sim.time - t1
+    x2, v2 = x1 + v1 * tau + 0.75 * tau ** 2, v1 + 1.5 * tau
+    assert sim.state.positions[0, 0] == pytest.approx(x2, rel=1e-12)
+    assert sim.state.velocities[0, 0] == pytest.approx(v2, rel=1e-12)
+    assert sim.state.angular_velocities[0, 2] == pytest.approx(0.2 / 0.4 * tau, rel=1e-12)
+    t2 = sim.time
+    sim.set_load("push")  # the ramp again: a = t / m
+    assert sim.step(700)
+    t3 = sim.time
+    v3 = v2 + (t3 ** 2 - t2 ** 2) / (2 * m)
+    x3 = x2 + v2 * (t3 - t2) + (t3 ** 3 - t2 ** 3) / (6 * m) - t2 ** 2 / (2 * m) * (t3 - t2)
+    assert sim.state.velocities[0, 0] == pytest.approx(v3, rel=1e-12)
+    assert sim.state.positions[0, 0] == pytest.approx(x3, rel=1e-12)
+
+
+def test_a_controller_setting_a_load_is_the_scene_with_that_load():
+    """F = 3 N held by a controller from the first step gives the trajectory of the scene
+    whose load is the constant 3 N, to the last bit."""
+    scene = FREE_BODY.replace("{ramp: {rate: 1}}", "0")
+    held = tribo.load_scene(scene).run(duration=1, controller=lambda c: c.set_load(
+        "push", force=[3, 0, 0]))
+    written = tribo.load_scene(scene.replace("force: [0, 0, 0]", "force: [3, 0, 0]")).run(
+        duration=1)
+    np.testing.assert_array_equal(held["block.x"], written["block.x"])
+    assert held["block.x"][-1] == pytest.approx(0.75, rel=1e-12)  # x = F t^2 / 2m at t = 1
+
+
+def test_set_load_errors_name_what_is_wrong():
+    sim = tribo.Simulator(tribo.load_scene(FREE_BODY))
+    with pytest.raises(KeyError, match=r"no load 'pull' \(loads: push, spin\)"):
+        sim.set_load("pull", force=[1, 0, 0])
+    with pytest.raises(ValueError, match="force: expected 3 numbers, got 2"):
+        sim.set_load("push", force=[1, 0])
+    with pytest.raises(ValueError, match="torque: expected finite numbers"):
+        sim.set_load("spin", torque=[0, 0, float("nan")])
+    assert sim.step(10)  # a refused command leaves the run as it was
