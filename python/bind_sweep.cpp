@@ -223,15 +223,9 @@ py::list mergeSweep(const py::object& folder) {
 // axes, analysis and Python laws; the plan is made again (checked again) where it lands.
 class SweepTask {
  public:
-  SweepTask(std::string text, std::string path, std::vector<std::string> fixed,
-            std::vector<study::SweepAxis> axes, std::string analysis, py::dict laws)
-      : text_(std::move(text)),
-        path_(std::move(path)),
-        fixed_(std::move(fixed)),
-        axes_(std::move(axes)),
-        analysis_(std::move(analysis)),
-        laws_(std::move(laws)),
-        plan_(makePlan(text_, path_, fixed_, axes_, analysis_, laws_)) {}
+  SweepTask(const std::string& text, const std::string& path, const std::vector<std::string>& fixed,
+            const std::vector<study::SweepAxis>& axes, const std::string& analysis, py::dict laws)
+      : laws_(std::move(laws)), plan_(makePlan(text, path, fixed, axes, analysis, laws_)) {}
 
   const study::SweepPlan& plan() const { return plan_; }
   std::size_t points() const { return plan_.grid.size(); }
@@ -258,8 +252,12 @@ class SweepTask {
 
   py::tuple state() const {
     py::list axes;
-    for (const study::SweepAxis& a : axes_) axes.append(py::make_tuple(a.name, a.values));
-    return py::make_tuple(text_, path_, fixed_, axes, analysis_, laws_);
+    // What the plan was made from, read back from it (the plan keeps all of it).
+    for (const study::SweepAxis& a : plan_.grid.axes())
+      axes.append(py::make_tuple(a.name, a.values));
+    const study::SweepSetup& setup = plan_.setup;
+    return py::make_tuple(setup.scene_text, setup.scene_path, setup.fixed_overrides, axes,
+                          study::kSweepAnalysisNames.name(setup.analysis), laws_);
   }
   static study::SweepPlan makePlan(const std::string& text, const std::string& path,
                                    const std::vector<std::string>& fixed,
@@ -287,11 +285,7 @@ class SweepTask {
   const py::dict& laws() const { return laws_; }
 
  private:
-  std::string text_, path_;
-  std::vector<std::string> fixed_;
-  std::vector<study::SweepAxis> axes_;
-  std::string analysis_;
-  py::dict laws_;
+  py::dict laws_;  // the Python objects (setup.user_laws wraps them), to pickle
   study::SweepPlan plan_;
 };
 
