@@ -79,4 +79,3 @@ def attach(result_class):
     result_class._repr_html_ = result_html
     result_class.view = view
     result_class.to_pandas = to_pandas
-    result_class.view.__doc__ = view.__doc__
