@@ -141,7 +141,7 @@ std::vector<ConstraintRow> constraintRows(const Model& model, bool include_dropp
     row.joint = ji;
     row.equation = ConstraintRow::kDriveEquation;
     row.coordinate = jointCoordinate(j);
-    row.drive = j.elements.drive;
+    row.drive = &*j.elements.drive;
     addBody(model, j.parent, row);
     addBody(model, j.child, row);
     rows.push_back(row);

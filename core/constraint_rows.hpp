@@ -82,7 +82,7 @@ struct ConstraintRow {
   Vec3 anchor_child = Vec3::Zero();   // child frame
   // kCoordinate (a drive) and kCoupling (the follower; the leader below).
   JointCoordinate coordinate;
-  std::optional<JointDrive> drive;
+  const JointDrive* drive = nullptr;  // the model's, which outlives its rows
   JointCoordinate leader;
   double multiplier = 1.0;
   double offset = 0.0;

@@ -43,4 +43,22 @@ double splineSlope(const std::vector<std::pair<double, double>>& p, const std::v
          (3.0 * b * b - 1.0) * h * m[i + 1] / 6.0;
 }
 
+double splineCurvature(const std::vector<std::pair<double, double>>& p,
+                       const std::vector<double>& m, std::size_t i, double t) {
+  const double a = (p[i + 1].first - t) / (p[i + 1].first - p[i].first);
+  return a * m[i] + (1.0 - a) * m[i + 1];
+}
+
+double splineIntegral(const std::vector<std::pair<double, double>>& p, const std::vector<double>& m,
+                      std::size_t i, double t) {
+  const double h = p[i + 1].first - p[i].first;
+  const double a = (p[i + 1].first - t) / h, b = 1.0 - a;
+  const double a2 = a * a, b2 = b * b;
+  return h * ((1.0 - a2) * p[i].second + b2 * p[i + 1].second) / 2.0 +
+         h * h * h *
+             (m[i] * ((1.0 - a2 * a2) / 4.0 - (1.0 - a2) / 2.0) +
+              m[i + 1] * (b2 * b2 / 4.0 - b2 / 2.0)) /
+             6.0;
+}
+
 }  // namespace tribo

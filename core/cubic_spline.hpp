@@ -3,6 +3,10 @@
 // (core/signal.hpp). On [t_i, t_{i+1}], h = t_{i+1} - t_i, A = (t_{i+1} - t) / h, B = 1 - A:
 //   s(t)  = A v_i + B v_{i+1} + ((A^3 - A) M_i + (B^3 - B) M_{i+1}) h^2 / 6
 //   s'(t) = (v_{i+1} - v_i) / h - (3 A^2 - 1) h M_i / 6 + (3 B^2 - 1) h M_{i+1} / 6
+//   s''(t) = A M_i + B M_{i+1}
+//   int_{t_i}^t s = h ((1 - A^2) v_i + B^2 v_{i+1}) / 2
+//                   + h^3 (M_i ((1 - A^4) / 4 - (1 - A^2) / 2) + M_{i+1} (B^4 / 4 - B^2 / 2)) / 6
+//   (over the whole interval: h (v_i + v_{i+1}) / 2 - h^3 (M_i + M_{i+1}) / 24)
 // with the second derivatives M_i solving, for 0 < i < n,
 //   h_{i-1} M_{i-1} + 2 (h_{i-1} + h_i) M_i + h_i M_{i+1}
 //       = 6 ((v_{i+1} - v_i) / h_i - (v_i - v_{i-1}) / h_{i-1}),   M_0 = M_n = 0
@@ -28,5 +32,10 @@ double splineValue(const std::vector<std::pair<double, double>>& points,
                    const std::vector<double>& curvatures, std::size_t i, double t);
 double splineSlope(const std::vector<std::pair<double, double>>& points,
                    const std::vector<double>& curvatures, std::size_t i, double t);
+// s''(t) and int_{t_i}^t s on the same interval.
+double splineCurvature(const std::vector<std::pair<double, double>>& points,
+                       const std::vector<double>& curvatures, std::size_t i, double t);
+double splineIntegral(const std::vector<std::pair<double, double>>& points,
+                      const std::vector<double>& curvatures, std::size_t i, double t);
 
 }  // namespace tribo

@@ -92,11 +92,7 @@ EnergyGuard::EnergyGuard(const Model& model, double modified_step)
   }
   for (const Joint& j : model.joints) {
     if (!j.elements.drive) continue;
-    const DriveFunction& f = j.elements.drive->function;
-    const double t = model.options.duration;
-    const double rate = j.elements.drive->mode == DriveMode::kPosition
-                            ? std::abs(f.slope) + std::abs(f.amplitude * f.frequency)
-                            : std::abs(f.constant) + std::abs(f.slope) * t + std::abs(f.amplitude);
+    const double rate = j.elements.drive->speedBound(model.options.duration);
     (j.type == JointType::kPrismatic ? speed : spin) =
         std::max(j.type == JointType::kPrismatic ? speed : spin, rate);
   }

@@ -14,8 +14,10 @@ std::vector<double> inputBreakpoints(const Model& model) {
     for (const Signal& s : load.force) add(s);
     for (const Signal& s : load.torque) add(s);
   }
-  for (const Joint& joint : model.joints)
+  for (const Joint& joint : model.joints) {
     if (joint.elements.actuator) add(joint.elements.actuator->target);
+    if (joint.elements.drive && joint.elements.drive->signal) add(*joint.elements.drive->signal);
+  }
   for (const Body& body : model.bodies)
     if (body.surface_velocity_signal)
       for (const Signal& s : *body.surface_velocity_signal) add(s);

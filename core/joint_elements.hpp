@@ -12,13 +12,17 @@
 //   actuator: a motor or a position or velocity servo commanded by a time signal, saturated
 //             at its effort limit (core/joint_actuator.hpp)
 //   drive:    a rheonomic constraint q = f(t) (position) or q' = f(t) (velocity), with
-//             f(t) = c0 + c1 t + A sin(w t + phi)
+//             f(t) = c0 + c1 t + A sin(w t + phi) or any time signal (core/signal.hpp: its
+//             derivatives, and in velocity mode its integral from 0, give the rest; a step
+//             in a velocity drive is a jump of the prescribed rate that Baumgarte or the
+//             velocity projection, core/constraint_options.hpp, catches up with)
 // and couplings (URDF mimic): q_follower = multiplier q_leader + offset, a constraint.
 // q = 0 where the joint frames coincide (the initial configuration for scene joints);
 // angles are wrapped to (-pi, pi], so limits and springs see |q| <= pi.
 // Not here: evaluating any of it (core/joint_forces.hpp, core/constraint_rows.hpp).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -26,6 +30,7 @@
 #include <string>
 
 #include "core/joint_actuator.hpp"
+#include "core/signal.hpp"
 #include "friction/friction_law.hpp"
 
 namespace tribo {
@@ -83,16 +88,37 @@ enum class DriveMode { kPosition, kVelocity };
 struct JointDrive {
   DriveMode mode = DriveMode::kPosition;
   DriveFunction function;
+  std::optional<Signal> signal = std::nullopt;  // when set, f(t) in place of `function`
 
   // Prescribed q(t), q'(t), q''(t); in velocity mode q(0) = 0.
   double position(double t) const {
+    if (signal) return mode == DriveMode::kPosition ? signal->value(t) : signal->integral(t);
     return mode == DriveMode::kPosition ? function.value(t) : function.integral(t);
   }
   double velocity(double t) const {
+    if (signal) return mode == DriveMode::kPosition ? signal->derivative(t) : signal->value(t);
     return mode == DriveMode::kPosition ? function.rate(t) : function.value(t);
   }
   double acceleration(double t) const {
+    if (signal)
+      return mode == DriveMode::kPosition ? signal->secondDerivative(t) : signal->derivative(t);
     return mode == DriveMode::kPosition ? function.acceleration(t) : function.rate(t);
+  }
+  // The largest |q'| over [0, duration]: the function's bound, or the signal's largest at
+  // 1001 even samples and at its breakpoints.
+  double speedBound(double duration) const {
+    if (!signal) {
+      const DriveFunction& f = function;
+      return mode == DriveMode::kPosition
+                 ? std::abs(f.slope) + std::abs(f.amplitude * f.frequency)
+                 : std::abs(f.constant) + std::abs(f.slope) * duration + std::abs(f.amplitude);
+    }
+    double bound = 0.0;
+    auto at = [&](double t) { bound = std::max(bound, std::abs(velocity(t))); };
+    for (int i = 0; i <= 1000; ++i) at(duration * i / 1000.0);
+    for (double t : signal->breakpoints())
+      if (t >= 0.0 && t <= duration) at(t);
+    return bound;
   }
 };
 

@@ -313,6 +313,11 @@ std::shared_ptr<const Model> ModelBuilder::build() const {
   auto model = std::make_shared<Model>(model_);
   model->options = options_;
   finishJoints(*model);
+  // A velocity drive along a function signal sums its integral panel by panel as the run
+  // goes: room for the whole run now, so that warm steps do not allocate.
+  for (const Joint& j : model->joints)
+    if (j.elements.drive && j.elements.drive->signal)
+      j.elements.drive->signal->reserveIntegral(o.duration);
   model->constraint_equations = static_cast<int>(constraintRows(*model).size());
   if (model->contact_pairs.empty() && (default_material_ >= 0 || !surface_materials_.empty())) {
     addAutomaticContacts(*model);

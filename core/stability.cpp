@@ -293,7 +293,10 @@ StabilityReport estimateStableStep(const Model& model) {
   }
   for (const Joint& joint : model.joints)  // a slider driven along its axis
     if (joint.type == JointType::kPrismatic && joint.elements.drive)
-      drive_speed = std::max(drive_speed, std::abs(joint.elements.drive->velocity(0.0)));
+      drive_speed =
+          std::max(drive_speed, joint.elements.drive->signal
+                                    ? joint.elements.drive->speedBound(model.options.duration)
+                                    : std::abs(joint.elements.drive->velocity(0.0)));
   std::optional<TurnCheck> turns;  // built at the first box pair
   for (const ContactPair& pair : contactPairsToCheck(model)) {
     const Geometry& ga = model.geometries[pair.geometry_a];

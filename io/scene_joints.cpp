@@ -7,6 +7,7 @@
 
 #include "io/scene_keys.hpp"
 #include "io/scene_reader.hpp"
+#include "io/scene_signal.hpp"
 
 namespace tribo::io::scene_detail {
 
@@ -90,8 +91,18 @@ void Loader::readJoint(const Value& v) {
       const auto n = d.get(key);
       return n ? n->number() : 0.0;
     };
-    drive.function = {number("constant"), number("slope"), number("amplitude"), number("frequency"),
-                      number("phase")};
+    if (auto signal = d.get("signal")) {
+      for (const char* key : {"constant", "slope", "amplitude", "frequency", "phase"})
+        if (d.get(key))
+          signal->fail(std::string("a drive takes either `signal` or the function's keys "
+                                   "(constant, slope, amplitude, frequency, phase), not both; "
+                                   "found `") +
+                       key + "` too");
+      drive.signal = readSignal(*signal);
+    } else {
+      drive.function = {number("constant"), number("slope"), number("amplitude"),
+                        number("frequency"), number("phase")};
+    }
     guarded(*x, [&] { builder_.setJointDrive(joint, drive); });
   }
   // Friction names a law and mimic a joint, possibly defined later: resolved once all

@@ -46,7 +46,8 @@ inline const List kJoint{"name",  "type",   "parent",  "child",  "anchor",   "ax
                          "limit", "spring", "damping", "effort", "friction", "drive", "mimic"};
 inline const List kJointLimit{"lower", "upper", "stiffness", "damping"};
 inline const List kJointSpring{"stiffness", "reference"};
-inline const List kJointDrive{"mode", "constant", "slope", "amplitude", "frequency", "phase"};
+inline const List kJointDrive{"mode",      "constant", "slope", "amplitude",
+                              "frequency", "phase",    "signal"};
 inline const List kJointFriction{"law", "load", "normal_force", "radius"};
 inline const List kJointMimic{"joint", "multiplier", "offset"};
 inline const List kSpring{"name",    "a",         "point_a", "b",
@@ -72,7 +73,7 @@ inline const List kStepSignal{"time", "before", "after"};
 inline const List kSmoothStepSignal{"start", "end", "before", "after"};
 inline const List kSineTerm{"amplitude", "frequency", "phase", "offset"};
 inline const List kTableSignal{"points", "file", "column", "interpolation"};
-inline const List kExpressionSignal{"value", "derivative", "time_scale"};
+inline const List kExpressionSignal{"value", "derivative", "time_scale", "breakpoints"};
 inline const List kInterpolations{"linear", "cubic"};
 inline const List kMaterial{"name", "normal", "friction", "surfaces", "default"};
 inline const List kNormal{"law",       "stiffness",   "damping",     "exponent",

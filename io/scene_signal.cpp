@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/number_text.hpp"
 #include "io/scene_keys.hpp"
 #include "io/signal_table_file.hpp"
 #include "io/time_expression.hpp"
@@ -77,7 +78,7 @@ Signal readTable(const Value& body) {
   }
 }
 
-// {expression: "text"} or {expression: {value, [derivative], [time_scale]}}.
+// {expression: "text"} or {expression: {value, [derivative], [time_scale], [breakpoints]}}.
 Signal readExpression(const Value& body) {
   const auto compile = [](const Value& v) {
     return TimeExpression(v.text(), v.parameters(), v.where(), v.path());
@@ -88,8 +89,18 @@ Signal readExpression(const Value& body) {
   std::function<double(double)> derivative;
   if (const auto d = m.get("derivative")) derivative = compile(*d);
   const double time_scale = m.get("time_scale") ? m.get("time_scale")->positive() : 1e-3;
+  std::vector<double> breakpoints;
+  if (const auto b = m.get("breakpoints")) {
+    for (const Value& item : b->items("a sequence of times [s]")) {
+      breakpoints.push_back(item.number());
+      if (breakpoints.size() > 1 && !(breakpoints.back() > breakpoints[breakpoints.size() - 2]))
+        item.fail("breakpoints must increase strictly: " + item.text() + " follows " +
+                  numberText(breakpoints[breakpoints.size() - 2]));
+    }
+  }
   return guarded(body, [&] {
-    return Signal::function(std::move(value), std::move(derivative), {}, time_scale);
+    return Signal::function(std::move(value), std::move(derivative), std::move(breakpoints),
+                            time_scale);
   });
 }
 

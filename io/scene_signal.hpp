@@ -6,7 +6,8 @@
 //            [interpolation: linear | cubic]}}
 //   {sines: [{amplitude, frequency, [phase], [offset]}, ...]}
 //   {expression: "0.5 * sin(2*pi*3*t) + $F0"}
-//   {expression: {value: "...", [derivative: "..."], [time_scale: 1e-3]}}
+//   {expression: {value: "...", [derivative: "..."], [time_scale: 1e-3],
+//                 [breakpoints: [t1, t2, ...]]}}   (the times of its kinks and jumps)
 // A table file is a CSV named relative to the scene file's folder (io/signal_table_file.hpp);
 // an expression of t is compiled and checked at load (io/time_expression.hpp), its
 // derivative the given expression or the signal's five-point difference at the time scale
@@ -14,8 +15,9 @@
 // a CSV problem, an expression that does not parse) is a SceneError at the offending value
 // (file:line:column and key path), naming the CSV file, line and column where there is one.
 // Internal to io/ (it includes yaml-cpp through io/scene_value.hpp).
-// Not here: the CSV format and the expression syntax (the files above), breakpoints of an
-// expression (none are reported: a kink in `t > 1 ? ...` is not seen).
+// Not here: the CSV format and the expression syntax (the files above), finding the
+// breakpoints of an expression (only those listed are reported: a kink in `t > 1 ? ...` is
+// not seen by itself).
 #pragma once
 
 #include <array>

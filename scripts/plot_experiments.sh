@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The figure of docs/experiments.md (gnuplot; build/apps/tribo runs each scene of
-# scenes/experiments/): docs/figures/experiments.png, five panels from the engine's runs:
+# scenes/experiments/): docs/figures/experiments.png, six panels from the engine's runs:
 #   break_away_ramp: the push F = rate t and the block's x (millimetres) against time;
 #   servo_stick_slip: the slide's x, the servo's target and its effort against time;
 #   arm_hold_pose: the shoulder's and elbow's angles and targets against time;
 #   belt_modulated: the box's x and the belt's speed against time;
-#   presliding_drift: the block's x (micrometres) under lugre and under elasto_plastic.
+#   presliding_drift: the block's x (micrometres) under lugre and under elasto_plastic;
+#   velocity_steps: the friction coefficient under the aging and the slip law, and the speed.
 # Usage: scripts/plot_experiments.sh [OUT_DIR]   (default docs/figures)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,6 +31,9 @@ run belt_modulated --set duration=20 --set 'output.channels=[position, velocity]
 run presliding_drift
 "$tribo" run scenes/experiments/presliding_drift.yaml --set friction=elasto_plastic \
   --out "$work/presliding_drift_ep" --quiet > /dev/null
+run velocity_steps
+"$tribo" run scenes/experiments/velocity_steps.yaml --set evolution=slip \
+  --out "$work/velocity_steps_slip" --quiet > /dev/null
 
 gnuplot <<GP
 set terminal pngcairo noenhanced size 1200,1260 font 'Helvetica,10'
@@ -73,6 +77,14 @@ unset y2tics
 set ytics mirror
 plot '$work/presliding_drift/trajectory.csv' every ::1 using 1:(1e6*\$$(col presliding_drift block.x)) with lines lw 2 title 'lugre: walks', \
      '$work/presliding_drift_ep/trajectory.csv' every ::1 using 1:(1e6*\$$(col presliding_drift block.x)) with lines lw 2 title 'elasto_plastic: stays'
+set title 'velocity_steps: rate-and-state, speed 1e-5 -> 1e-4 -> 1e-5 m/s'
+set ylabel 'mu = friction / normal force'
+set y2label 'speed [mm/s]'
+set y2tics
+set ytics nomirror
+plot '$work/velocity_steps/trajectory.csv' every ::1 using 1:(\$$(col velocity_steps block.friction_force)/\$$(col velocity_steps block.normal_force)) with lines lw 2 title 'aging law', \
+     '$work/velocity_steps_slip/trajectory.csv' every ::1 using 1:(\$$(col velocity_steps block.friction_force)/\$$(col velocity_steps block.normal_force)) with lines lw 2 title 'slip law', \
+     '$work/velocity_steps/trajectory.csv' every ::1 using 1:(1e3*\$$(col velocity_steps block.vx)) axes x1y2 with lines dt 2 title 'speed'
 unset multiplot
 GP
 echo "wrote $out/experiments.png"

@@ -6,9 +6,13 @@
 // the same load as a ramp; CSV tables (header or not, by column name or position, linear or
 // cubic, relative to the scene's folder) and inline cubic tables against their points; and
 // every refusal with its message: the scene's file:line, the key and, for a CSV, its
-// file:line:column.
+// file:line:column. An expression's listed breakpoints (reported, splitting its integral,
+// refused when they do not increase) and a joint drive given as a signal (velocity: the
+// table, its area and slope; position: a sine and its second derivative; `signal` with the
+// function's keys refused).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -129,6 +133,70 @@ TEST(ExpressionSignal, RefusalsNameTheExpression) {
     const std::string e = sceneErrorOf(sceneWith(c.signal), "e.yaml");
     EXPECT_NE(e.find(c.says), std::string::npos) << c.signal << "\n -> " << e;
   }
+}
+
+TEST(ExpressionSignal, ListedBreakpointsAreReportedAndSplitTheIntegral) {
+  // A speed step up at 1 s and down at 3 s: the integral is the step function's area.
+  const Scene s = loadSceneFromString(
+      sceneWith("{expression: {value: \"t < 1 ? $F0 : (t < 3 ? 3 * $F0 : $F0)\", "
+                "derivative: \"0\", breakpoints: [1, '3 * $F0 / 2']}}"),
+      "e.yaml");
+  const Signal& f = forceX(s);
+  EXPECT_EQ(f.breakpoints(), (std::vector<double>{1.0, 3.0}));
+  for (double t : {0.5, 1.0, 2.2, 3.0, 7.5})
+    // Rounding of the running sum over t / tau = 1000 t panels: 1e-13 relative.
+    EXPECT_NEAR(f.integral(t), 2.0 * t + 4.0 * std::clamp(t - 1.0, 0.0, 2.0), 1e-13 * (1 + 4 * t))
+        << t;
+  struct Case {
+    std::string signal, says;
+  };
+  for (const Case& c : {
+           Case{"{expression: {value: \"t\", breakpoints: [2, 1]}}",
+                "loads[0].force[0].expression.breakpoints[1]: breakpoints must increase "
+                "strictly: 1 follows 2"},
+           Case{"{expression: {value: \"t\", breakpoints: 1}}", "a sequence of times"},
+           Case{"{expression: {value: \"t\", breakpoints: [a]}}", "breakpoints[0]"},
+       }) {
+    const std::string e = sceneErrorOf(sceneWith(c.signal), "e.yaml");
+    EXPECT_NE(e.find(c.says), std::string::npos) << c.signal << "\n -> " << e;
+  }
+}
+
+// A slider on a rail along x, velocity-driven by `drive`.
+std::string drivenSlider(const std::string& drive) {
+  return "simulation: {duration: 1, time_step: 0.001, gravity: [0, 0, 0]}\n"
+         "bodies:\n  - {name: block, mass: 2, inertia: [0.1, 0.1, 0.1]}\n"
+         "joints:\n  - {name: rail, type: prismatic, parent: world, child: block, axis: [1, 0, "
+         "0],\n"
+         "     drive: " +
+         drive + "}\n";
+}
+
+TEST(DriveSignal, ADriveTakesAnySignalAndRefusesTwoForms) {
+  const Scene s = loadSceneFromString(
+      drivenSlider("{mode: velocity, signal: {table: [[0, 0], [1, 2]]}}"), "d.yaml");
+  const JointDrive& d = *s.model->joints.at(0).elements.drive;
+  ASSERT_TRUE(d.signal);
+  EXPECT_EQ(d.mode, DriveMode::kVelocity);
+  EXPECT_DOUBLE_EQ(d.velocity(0.5), 1.0);      // the table
+  EXPECT_DOUBLE_EQ(d.position(0.5), 0.25);     // its area, t^2
+  EXPECT_DOUBLE_EQ(d.acceleration(0.5), 2.0);  // its slope
+  const Scene p = loadSceneFromString(
+      drivenSlider("{signal: {sines: [{amplitude: 0.1, frequency: 2}]}}"), "d.yaml");
+  const JointDrive& q = *p.model->joints.at(0).elements.drive;
+  EXPECT_EQ(q.mode, DriveMode::kPosition);
+  EXPECT_NEAR(q.position(0.1), 0.1 * std::sin(0.4 * kPi), 1e-15);
+  EXPECT_NEAR(q.acceleration(0.1), -0.1 * 16 * kPi * kPi * std::sin(0.4 * kPi), 1e-12);
+  const std::string e =
+      sceneErrorOf(drivenSlider("{mode: velocity, constant: 1, signal: 2}"), "d.yaml");
+  EXPECT_NE(e.find("joints[0].drive.signal: a drive takes either `signal` or the function's "
+                   "keys (constant, slope, amplitude, frequency, phase), not both; found "
+                   "`constant` too"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(sceneErrorOf(drivenSlider("{signal: {step: {time: 1}}}"), "d.yaml")
+                .find("joints[0].drive.signal.step"),
+            std::string::npos);
 }
 
 // A folder with the scene's CSV files, removed at the end.
