@@ -1,7 +1,8 @@
 // `tribo orbit` end to end: the exit status scripts branch on (0 a stable orbit, 11 no orbit,
 // 2 bad scene, 1 usage), the files it writes (orbit.json whole, its period and amplitude
 // those orbit.csv shows: the samples span one period and return to the start). The figures
-// themselves are checked at library level (tests/study/periodic_orbit_test.cpp).
+// themselves are checked at library level (tests/study/periodic_orbit_test.cpp). With
+// --continue: branch.csv's columns and rows, branch.json's events, the usage errors.
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -52,6 +53,68 @@ TEST_F(OrbitCli, NoOrbitElevenBadSceneTwoUsageOne) {
   EXPECT_EQ(runTribo("orbit " + kBelt + " --set nosuch=1 --out " + dir_.string()).status, 2);
   EXPECT_EQ(runTribo("orbit " + kBelt).status, 1);
   EXPECT_EQ(runTribo("orbit " + kBelt + " --out " + dir_.string() + " --settle -1").status, 1);
+}
+
+TEST_F(OrbitCli, ContinueWritesTheBranchsCsvAndEventsAndReportsEachPoint) {
+  const Result r = runTribo("orbit " + kBelt + " --set duration=30 --out " + dir_.string() +
+                            " --continue v_b=1.4:1.5 --step 0.1 --max-points 4");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("point 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("point 1"), std::string::npos) << r.output;
+  std::ifstream csv(dir_ / "branch.csv");
+  std::string line;
+  std::getline(csv, line);
+  for (const char* column : {"parameter", "period", "amplitude_pp", "largest_multiplier", "stable",
+                             "stick_fraction", "event"})
+    EXPECT_NE(line.find(column), std::string::npos) << column << " in " << line;
+  EXPECT_EQ(line.rfind("index,parameter,period,amplitude_pp,largest_multiplier,stable,", 0), 0u)
+      << line;
+  int rows = 0;
+  double v_b = 0;
+  while (std::getline(csv, line)) {
+    std::istringstream fields(line);
+    std::string index, value;
+    std::getline(fields, index, ',');
+    std::getline(fields, value, ',');
+    v_b = std::stod(value);
+    if (rows == 0) {
+      EXPECT_EQ(v_b, 1.4) << line;
+    }
+    ++rows;
+  }
+  EXPECT_GE(rows, 2);
+  EXPECT_LE(rows, 4);
+  EXPECT_GE(v_b, 1.5);  // the last point reached TO
+  const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_EQ(j["parameter"].get<std::string>(), "v_b");
+  EXPECT_EQ(j["status"].get<std::string>(), "reached_end");
+  EXPECT_TRUE(j["events"].is_array());
+  EXPECT_TRUE(j["events"].empty());  // stick-slip all the way: nothing crosses
+  EXPECT_EQ(j["branch"].size(), static_cast<std::size_t>(rows));
+}
+
+TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
+  auto refused = [&](const std::string& spec, const std::string& words) {
+    const Result r = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue " + spec);
+    EXPECT_EQ(r.status, 1) << spec << ": " << r.output;
+    EXPECT_NE(r.output.find(words), std::string::npos) << spec << ": " << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "branch.csv")) << spec;
+  };
+  refused("nosuch=1:2", "'nosuch'");
+  refused("nosuch=1:2", "v_b");  // the names it expected
+  refused("friction=1:2", "expected a numeric parameter");
+  refused("v_b=1:1", "expected FROM and TO to differ");
+  refused("v_b=one:2", "expected a number for FROM");
+  refused("v_b=1:2x", "expected a number for TO");
+  refused("v_b1:2", "expected NAME=FROM:TO");
+  refused("v_b=1", "expected NAME=FROM:TO");
+  const Result points =
+      runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue v_b=1:2 --max-points 1");
+  EXPECT_EQ(points.status, 1) << points.output;
+  EXPECT_NE(points.output.find("--max-points"), std::string::npos) << points.output;
+  const Result alone = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --step 0.1");
+  EXPECT_EQ(alone.status, 1) << alone.output;
+  EXPECT_NE(alone.output.find("with --continue"), std::string::npos) << alone.output;
 }
 
 }  // namespace

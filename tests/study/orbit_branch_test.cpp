@@ -1,0 +1,193 @@
+// Continuation of periodic orbits (study/orbit/orbit_branch.hpp) against independent
+// expectations: the belt's stick-slip branch in the belt speed, each of three points' period
+// and amplitude against the paper's one-degree-of-freedom model integrated in the test at that
+// point's speed (tests/study/one_dof_cycle.hpp, the reference periodic_orbit_test uses, held
+// to the same 1e-3); and the event detector on made-up branches whose events are known by
+// construction (a fold where dp/ds changes sign, a real multiplier through -1, a complex pair
+// through the unit circle, a real one through +1, the smallest slip speed through the stick
+// speed).
+#include "study/orbit/orbit_branch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include "io/scene_parameters.hpp"
+#include "one_dof_cycle.hpp"
+
+namespace tribo {
+namespace {
+
+using study::BranchEventKind;
+using study::BranchPoint;
+using Mu = std::complex<double>;
+
+const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
+
+TEST(OrbitBranch, TheBeltsBranchInBeltSpeedIsTheOneDofModelsCycleAtEachPoint) {
+  const auto wall = std::chrono::steady_clock::now();
+  study::BranchSpec spec;
+  spec.parameter = "v_b";
+  spec.from = 1.0;
+  spec.to = 1.5;
+  spec.step = 0.2;
+  spec.max_points = 6;
+  spec.orbit.settle = 30.0;
+  std::size_t reported = 0;
+  const study::BranchResult r =
+      study::continueOrbit(kBelt, {}, spec, [&](const BranchPoint&, std::size_t i) {
+        EXPECT_EQ(i, reported);
+        ++reported;
+      });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+  ASSERT_TRUE(r.reached_end) << r.stop_reason;
+  ASSERT_GE(r.points.size(), 3u);
+  EXPECT_EQ(reported, r.points.size());
+  EXPECT_EQ(r.points.front().parameter, 1.0);
+  EXPECT_GE(r.points.back().parameter, 1.5);
+  // The first, a middle and the last point, each at the speed the continuation put it at.
+  for (std::size_t i : {std::size_t{0}, r.points.size() / 2, r.points.size() - 1}) {
+    const BranchPoint& p = r.points[i];
+    const ReferenceCycle ref = oneDofCycle(10.0, p.parameter);
+    EXPECT_NEAR(p.period / ref.period, 1.0, 1e-3) << i << ": v_b " << p.parameter;
+    EXPECT_NEAR(p.amplitude_pp / ref.amplitude_pp, 1.0, 1e-3) << i << ": v_b " << p.parameter;
+    EXPECT_LE(p.residual, 1e-9) << i;
+    // Sticking: the smallest slip speed below the stick speed, for the reference's share of
+    // the period (measured within 5e-4 of it; 3e-3 is three of the orbit's 1 ms samples in
+    // its 1.15 s period). Period and amplitude came out within 1e-6 and 4e-7 (relative).
+    EXPECT_LT(p.min_slip, 0.01) << i;
+    EXPECT_NEAR(p.stick_fraction, ref.stick_fraction, 3e-3) << i << ": v_b " << p.parameter;
+  }
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const BranchPoint& p = r.points[i];
+    // Stick-slip all along: the stick phase collapses every non-trivial direction (as for a
+    // single orbit), the belt speed grows monotonically along the branch, no event.
+    EXPECT_TRUE(p.stable) << i;
+    EXPECT_LT(p.largest, 0.05) << i;
+    EXPECT_LT(p.trivial_error, 1e-3) << i;
+    EXPECT_GT(p.dp_ds, 0.0) << i;
+    if (i > 0) {
+      EXPECT_GT(p.parameter, r.points[i - 1].parameter) << i;
+      EXPECT_GT(p.arclength, r.points[i - 1].arclength) << i;
+    }
+  }
+  EXPECT_TRUE(r.events.empty());
+  RecordProperty("seconds", std::to_string(seconds));
+}
+
+TEST(OrbitBranch, RefusesAnUnknownOrNonNumericParameterBeforeAnyWork) {
+  study::BranchSpec spec;
+  spec.from = 1.0;
+  spec.to = 2.0;
+  spec.parameter = "nosuch";
+  try {
+    study::continueOrbit(kBelt, {}, spec);
+    ADD_FAILURE() << "no error for an unknown parameter";
+  } catch (const io::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("'nosuch'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("v_b"), std::string::npos) << e.what();
+  }
+  spec.parameter = "friction";
+  try {
+    study::continueOrbit(kBelt, {}, spec);
+    ADD_FAILURE() << "no error for a non-numeric parameter";
+  } catch (const io::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected a number"), std::string::npos) << e.what();
+  }
+  spec.parameter = "v_b";
+  spec.to = 1.0;
+  EXPECT_THROW(study::continueOrbit(kBelt, {}, spec), std::invalid_argument);
+}
+
+// A made-up point: parameter, arclength, dp/ds and non-trivial multipliers (the trivial 1 is
+// added first).
+BranchPoint point(double p, double s, double dp_ds, std::vector<Mu> others) {
+  BranchPoint pt;
+  pt.parameter = p;
+  pt.arclength = s;
+  pt.dp_ds = dp_ds;
+  pt.multipliers.push_back(1.0);
+  pt.trivial = 0;
+  pt.stable = true;
+  for (Mu mu : others) {
+    pt.multipliers.push_back(mu);
+    if (std::abs(mu) >= 1.0) pt.stable = false;
+  }
+  return pt;
+}
+
+TEST(BranchEvents, ARealMultiplierThroughMinusOneIsAPeriodDoublingLocatedByInterpolation) {
+  const auto events = study::detectBranchEvents({point(1.0, 0.0, 1.0, {-0.5, 0.1}),
+                                                 point(2.0, 1.0, 1.0, {-0.9, 0.1}),
+                                                 point(3.0, 2.0, 1.0, {-1.1, 0.1})});
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kPeriodDoubling);
+  EXPECT_EQ(events[0].before, 1u);
+  EXPECT_EQ(events[0].after, 2u);
+  EXPECT_NEAR(events[0].parameter, 2.5, 1e-12);  // |mu| 0.9 -> 1.1: 1 half way
+  EXPECT_EQ(study::branchEventName(events[0].kind), "period_doubling");
+}
+
+TEST(BranchEvents, AComplexPairThroughTheUnitCircleIsATorus) {
+  const Mu in = std::polar(0.8, 1.0), out = std::polar(1.2, 1.1);
+  const auto events = study::detectBranchEvents(
+      {point(0.0, 0.0, -1.0, {in, std::conj(in)}), point(-1.0, 1.0, -1.0, {out, std::conj(out)})});
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kTorus);
+  EXPECT_NEAR(events[0].parameter, -0.5, 1e-12);
+  EXPECT_EQ(study::branchEventName(events[0].kind), "torus");
+}
+
+TEST(BranchEvents, ASignChangeOfDpDsIsAFoldAtTheVertexOfTheInterpolatedParameter) {
+  // p(s) = 2 - (s - 1.25)^2 sampled at s = 0, 1, 2: dp/ds = 2.5, 0.5, -1.5, the vertex
+  // p = 2 at s = 1.25 between the second and third points; linear dp/ds in s is exact here.
+  auto p = [](double s) { return 2.0 - (s - 1.25) * (s - 1.25); };
+  // A real multiplier through +1 with it: the branch's stability changes at the fold too.
+  const auto events = study::detectBranchEvents(
+      {point(p(0), 0.0, 2.5, {0.5}), point(p(1), 1.0, 0.5, {0.9}), point(p(2), 2.0, -1.5, {1.3})});
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kFold);
+  EXPECT_EQ(events[0].before, 1u);
+  EXPECT_EQ(events[0].after, 2u);
+  EXPECT_NEAR(events[0].parameter, 2.0, 1e-12);
+  EXPECT_EQ(events[1].kind, BranchEventKind::kStabilityChange);
+  EXPECT_EQ(study::branchEventName(events[0].kind), "fold");
+}
+
+TEST(BranchEvents, TheSmallestSlipSpeedThroughTheStickSpeedIsGrazing) {
+  std::vector<BranchPoint> points = {point(1.0, 0.0, 1.0, {0.1}), point(2.0, 1.0, 1.0, {0.1}),
+                                     point(3.0, 2.0, 1.0, {0.1})};
+  points[0].min_slip = 0.002;
+  points[1].min_slip = 0.006;
+  points[2].min_slip = 0.014;  // sticking ends between the last two, at 0.01: half way
+  const auto events = study::detectBranchEvents(points, 0.01);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kGrazing);
+  EXPECT_EQ(events[0].before, 1u);
+  EXPECT_NEAR(events[0].parameter, 2.5, 1e-12);
+  EXPECT_EQ(study::branchEventName(events[0].kind), "grazing");
+  EXPECT_TRUE(study::detectBranchEvents(points).empty());  // no stick speed: not looked for
+}
+
+TEST(BranchEvents, NoEventWhereNothingCrosses) {
+  // Multipliers that move inside the unit circle, a negative one staying above -1, a pair
+  // turning real: no crossing, and dp/ds keeps its sign.
+  const Mu pair = std::polar(0.7, 2.0);
+  EXPECT_TRUE(study::detectBranchEvents({point(1.0, 0.0, 1.0, {-0.2, pair, std::conj(pair)}),
+                                         point(1.5, 0.6, 0.8, {-0.95, 0.6, 0.5}),
+                                         point(2.0, 1.2, 0.1, {-0.99, 0.3, 0.2})})
+                  .empty());
+  // A stable branch that turns unstable without a crossing the kinds above name (a pair
+  // that turned real outside): a plain stability change.
+  const auto events = study::detectBranchEvents(
+      {point(1.0, 0.0, 1.0, {pair, std::conj(pair)}), point(2.0, 1.0, 1.0, {1.4, 0.3})});
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kStabilityChange);
+}
+
+}  // namespace
+}  // namespace tribo
