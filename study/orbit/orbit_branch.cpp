@@ -295,6 +295,13 @@ BranchResult continueOrbit(const std::string& path, const std::vector<std::strin
     return o;
   }());
   const OrbitResult orbit = findPeriodicOrbit(first, spec.orbit);
+  // A damped settling run can lead Newton onto the equilibrium it decays to, which closes on
+  // itself for any T: no orbit to follow.
+  if (!(orbit.amplitude_pp > kCollapsed * orbit.guess_amplitude_pp))
+    throw OrbitError("the orbit found at " + spec.parameter + " = " + number(spec.from) +
+                     " is an equilibrium (amplitude " + number(orbit.amplitude_pp) +
+                     " against the settling run's " + number(orbit.guess_amplitude_pp) +
+                     "): the oscillation decays there; start the branch where it does not");
   r.observed = orbit.observed;
   const int body = shooting::shootableBody(first);
   const int axis = first.output.summary.coordinate;

@@ -93,6 +93,40 @@ TEST_F(OrbitCli, ContinueWritesTheBranchsCsvAndEventsAndReportsEachPoint) {
   EXPECT_EQ(j["branch"].size(), static_cast<std::size_t>(rows));
 }
 
+TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
+  // A viscous damper beside the wall spring (1.5 N s/m): stick-slip ends as the belt speeds
+  // up, when the orbit's smallest slip speed reaches the stick speed (0.01 m/s) and the
+  // sticking phase vanishes (grazing); at the law's kink there Newton's iteration stops
+  // converging (measured: lost after v_b = 0.7303, smallest slip 0.0099 m/s), and the branch
+  // ends there, before TO, with what it found.
+  const Result r =
+      runTribo("orbit " + kBelt + " --set 'springs[wall_spring].damping=1.5'" + " --out " +
+               dir_.string() + " --continue v_b=0.5:2 --step 0.1 --max-points 25");
+  EXPECT_EQ(r.status, 12) << r.output;
+  EXPECT_NE(r.output.find("lost"), std::string::npos) << r.output;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_EQ(j["status"].get<std::string>(), "stopped");
+  ASSERT_GE(j["branch"].size(), 2u);
+  const auto& last = j["branch"].back();
+  EXPECT_LT(last["parameter"].get<double>(), 2.0);
+  // Sticking is about to end: the smallest slip speed just under the stick speed, the stick
+  // fraction far below the first point's.
+  EXPECT_GT(last["min_slip"].get<double>(), 0.009);
+  EXPECT_LT(last["min_slip"].get<double>(), 0.01);
+  EXPECT_LT(last["stick_fraction"].get<double>(),
+            0.5 * j["branch"][0]["stick_fraction"].get<double>());
+  EXPECT_TRUE(fs::exists(dir_ / "branch.csv"));
+}
+
+TEST_F(OrbitCli, ContinueRefusesToStartFromAnEquilibrium) {
+  // A damper of 5.5 N s/m (5 % of critical): at 1.5 m/s the settling run's oscillation
+  // decays onto steady sliding, which Newton then finds: an equilibrium, no orbit.
+  const Result r = runTribo("orbit " + kBelt + " --set 'springs[wall_spring].damping=5.5'" +
+                            " --out " + dir_.string() + " --continue v_b=1.5:2");
+  EXPECT_EQ(r.status, 11) << r.output;
+  EXPECT_NE(r.output.find("equilibrium"), std::string::npos) << r.output;
+}
+
 TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
   auto refused = [&](const std::string& spec, const std::string& words) {
     const Result r = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue " + spec);
