@@ -230,7 +230,8 @@ Command addOrbitCommand(CLI::App& tribo) {
       "are the monodromy matrix's eigenvalues; one is 1 (reported with its error).\n"
       "Autonomous scenes with rk4 or semi_implicit_euler (docs/orbits.md).\n"
       "--continue follows the orbit in a parameter (pseudo-arclength continuation) and\n"
-      "reports folds, period doublings, tori and stability changes between its points.\n"
+      "reports folds, period doublings, tori, stability changes and grazing between its\n"
+      "points.\n"
       "exit status: 0 stable orbit (with --continue: the branch reached TO or --max-points),\n"
       "1 usage, 2 bad scene, 4 output error, 8 unstable orbit, 11 no orbit found,\n"
       "12 the branch was lost (the points found so far are written)");
