@@ -5,7 +5,9 @@
 // to the same 1e-3); and the event detector on made-up branches whose events are known by
 // construction (a fold where dp/ds changes sign, a real multiplier through -1, a complex pair
 // through the unit circle, a real one through +1, the smallest slip speed through the stick
-// speed).
+// speed); and a real fold of cycles: the damped belt with Stribeck's law, whose subcritical
+// Hopf point (located in closed form here) sends an unstable cycle up to meet the stick-slip
+// one.
 #include "study/orbit/orbit_branch.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <numbers>
 #include <vector>
 
 #include "io/scene_parameters.hpp"
@@ -77,6 +80,75 @@ TEST(OrbitBranch, TheBeltsBranchInBeltSpeedIsTheOneDofModelsCycleAtEachPoint) {
   }
   EXPECT_TRUE(r.events.empty());
   RecordProperty("seconds", std::to_string(seconds));
+}
+
+// The speed where steady sliding on the belt with the stribeck law and a viscous damper c
+// turns stable (a Hopf point of the linearization): where the damper cancels the law's
+// falling slope, c = -mu'(v) m g, mu(v) = mu_k + (mu_s - mu_k) exp(-(v / v_st)^2) far above
+// v_eps (its tanh factor is 1 to 1e-19 there); by bisection on the falling side's root.
+double stribeckHopfSpeed(double c) {
+  const double mu_s = 0.35, mu_k = 0.3, v_st = 0.15, mg = 10.0 * 9.81;
+  auto excess = [&](double v) {
+    return 2.0 * (mu_s - mu_k) * v / (v_st * v_st) * std::exp(-(v / v_st) * (v / v_st)) * mg - c;
+  };
+  double lo = v_st / std::sqrt(2.0), hi = 1.0;  // the steepest slope, and far beyond
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (excess(mid) > 0.0 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+TEST(OrbitBranch, TheDampedBeltFoldsWhereStickSlipMeetsTheUnstableCycleOfItsSubcriticalHopf) {
+  // Stribeck's smooth law and a 10 N s/m damper beside the wall spring: steady sliding is
+  // stable above the Hopf speed v_H (closed form above, 0.2271 m/s), yet the stable
+  // oscillation found below it goes on past v_H: the Hopf is subcritical, an unstable cycle
+  // grows out of it towards higher speeds and meets the stable one in a fold of cycles. The
+  // branch from 0.15 m/s must go up to the fold, lose its stability there, and come back down
+  // as the unstable cycle, shrinking like sqrt(v_b - v_H) into the Hopf point, where its
+  // period is the undamped one 2 pi sqrt(m / k) (the damper and the slope cancel).
+  study::BranchSpec spec;
+  spec.parameter = "v_b";
+  spec.from = 0.15;
+  spec.to = 0.5;
+  spec.step = 0.02;
+  spec.max_points = 17;  // measured: the 17th point is the one nearest the Hopf point
+  spec.orbit.settle = 30.0;
+  const study::BranchResult r =
+      study::continueOrbit(kBelt, {"friction=stribeck", "springs[wall_spring].damping=10"}, spec);
+  const double v_h = stribeckHopfSpeed(10.0);
+  ASSERT_EQ(r.points.size(), 17u) << r.stop_reason;
+  // One fold, with the stability change there; stable before, unstable after.
+  std::size_t folds = 0, fold_after = 0;
+  double v_fold = 0;
+  for (const study::BranchEvent& e : r.events)
+    if (e.kind == BranchEventKind::kFold) ++folds, fold_after = e.after, v_fold = e.parameter;
+  ASSERT_EQ(folds, 1u);
+  ASSERT_EQ(r.events.size(), 2u);
+  EXPECT_EQ(r.events[1].kind, BranchEventKind::kStabilityChange);
+  EXPECT_EQ(r.events[1].after, fold_after);
+  EXPECT_GT(v_fold, v_h + 0.02);  // measured 0.2598: stick-slip and sliding coexist above v_H
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    EXPECT_EQ(r.points[i].stable, i < fold_after) << i << ": v_b " << r.points[i].parameter;
+    if (i >= fold_after) {
+      EXPECT_LT(r.points[i].dp_ds, 0.0) << i;
+    }
+  }
+  // Into the Hopf point: the last point is the nearest (measured 0.22721 against 0.22713),
+  // small (3 mm of the fold's 8 cm), with the undamped period (measured to 2.5e-5).
+  const BranchPoint& last = r.points.back();
+  EXPECT_NEAR(last.parameter, v_h, 1e-3);
+  EXPECT_LT(last.amplitude_pp, 0.1 * r.points[fold_after].amplitude_pp);
+  EXPECT_NEAR(last.period / (2.0 * std::numbers::pi * std::sqrt(10.0 / 300.0)), 1.0, 1e-3);
+  // The amplitude grows like the square root of the distance to the Hopf point: A^2 / (v_b -
+  // v_H) alike at the last three points (measured within 12 %).
+  const auto n = r.points.size();
+  const double ratio = std::pow(last.amplitude_pp, 2) / (last.parameter - v_h);
+  for (std::size_t i : {n - 3, n - 2}) {
+    const BranchPoint& p = r.points[i];
+    EXPECT_NEAR(std::pow(p.amplitude_pp, 2) / (p.parameter - v_h) / ratio, 1.0, 0.25)
+        << i << ": v_b " << p.parameter << ", A " << p.amplitude_pp;
+  }
 }
 
 TEST(OrbitBranch, RefusesAnUnknownOrNonNumericParameterBeforeAnyWork) {
