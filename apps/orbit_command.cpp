@@ -131,8 +131,7 @@ int runBranch(Arguments& a) {
                 study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter, e.before,
                 e.after);
   std::printf("results          %s (%.3g s)\n", out.string().c_str(), r.seconds);
-  const bool complete = r.reached_end || static_cast<int>(r.points.size()) >= b.max_points;
-  return complete ? 0 : kExitBranchLost;
+  return r.lost ? kExitBranchLost : 0;
 }
 
 int runOrbit(Arguments& a) {
@@ -230,9 +229,9 @@ Command addOrbitCommand(CLI::App& tribo) {
       "are the monodromy matrix's eigenvalues; one is 1 (reported with its error).\n"
       "Autonomous scenes with rk4 or semi_implicit_euler (docs/orbits.md).\n"
       "--continue follows the orbit in a parameter (pseudo-arclength continuation) and\n"
-      "reports folds, period doublings, tori, stability changes and grazing between its\n"
-      "points.\n"
-      "exit status: 0 stable orbit (with --continue: the branch reached TO or --max-points),\n"
+      "reports folds, period doublings, tori, stability changes, grazing and Hopf points\n"
+      "between its points.\n"
+      "exit status: 0 stable orbit (with --continue: a branch not lost on the way),\n"
       "1 usage, 2 bad scene, 4 output error, 8 unstable orbit, 11 no orbit found,\n"
       "12 the branch was lost (the points found so far are written)");
   return {orbit, [a] { return runOrbit(*a); }};

@@ -20,6 +20,9 @@ namespace {
 
 // An orbit whose amplitude falls below this fraction of the first one's has collapsed.
 constexpr double kCollapsed = 1e-6;
+// A turn of the parameter where the amplitude has a minimum below this fraction of the
+// branch's largest is a Hopf point, not a fold.
+constexpr double kHopfAmplitude = 0.2;
 
 std::string assignment(const std::string& name, double value) {
   char buf[64];
@@ -214,6 +217,8 @@ std::string branchEventName(BranchEventKind kind) {
       return "stability_change";
     case BranchEventKind::kGrazing:
       return "grazing";
+    case BranchEventKind::kHopf:
+      return "hopf";
   }
   return "unknown";
 }
@@ -233,7 +238,18 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
       // where p(s), its integral, has its vertex p_i + a sigma / 2.
       const double ds = b.arclength - a.arclength;
       const double sigma = a.dp_ds * ds / (a.dp_ds - b.dp_ds);
-      events.push_back({BranchEventKind::kFold, i, i + 1, a.parameter + 0.5 * a.dp_ds * sigma});
+      // Through a Hopf point the branch passes the steady state (amplitude zero) and p(s)
+      // turns like at a fold: p - p_H ~ eps^2 for the orbit of amplitude eps, which the phase
+      // condition also meets with -eps (the same orbit from its minimum). Told apart by the
+      // amplitude: falling into the interval, rising after it, small against the branch's.
+      double largest = 0.0;
+      for (const BranchPoint& q : points) largest = std::max(largest, q.amplitude_pp);
+      const bool falls = i > 0 && points[i - 1].amplitude_pp > a.amplitude_pp;
+      const bool rises = i + 2 >= points.size() || points[i + 2].amplitude_pp > b.amplitude_pp;
+      const bool hopf =
+          falls && rises && std::min(a.amplitude_pp, b.amplitude_pp) < kHopfAmplitude * largest;
+      events.push_back({hopf ? BranchEventKind::kHopf : BranchEventKind::kFold, i, i + 1,
+                        a.parameter + 0.5 * a.dp_ds * sigma});
     }
     bool explained = false;
     if (countOf(a, below_minus_one) != countOf(b, below_minus_one)) {
@@ -422,6 +438,7 @@ BranchResult continueOrbit(const std::string& path, const std::vector<std::strin
     if (!c.ok) {
       ds /= 2;
       if (ds < min_step) {
+        r.lost = true;
         r.stop_reason = "the branch was lost after " + spec.parameter + " = " + number(z[n + 1]) +
                         ": the corrector failed with the step at its " + "smallest (" +
                         number(2 * ds) + "): " + c.why;
@@ -446,6 +463,14 @@ BranchResult continueOrbit(const std::string& path, const std::vector<std::strin
     }
     if ((p - spec.from) * direction < 0.0) {
       r.stop_reason = "the branch turned back past the start value " + number(spec.from);
+      break;
+    }
+    const std::vector<BranchEvent> events = detectBranchEvents(r.points, stick_speed);
+    if (!events.empty() && events.back().kind == BranchEventKind::kHopf &&
+        events.back().after + 1 == r.points.size()) {
+      r.stop_reason = "the orbit shrank onto the steady state at a Hopf point, " + spec.parameter +
+                      " ~ " + number(events.back().parameter) +
+                      " (past it the branch retraces itself)";
       break;
     }
     if (c.iterations <= 2) ds = std::min(1.5 * ds, max_step);
@@ -486,7 +511,7 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
   j["from"] = spec.from;
   j["to"] = spec.to;
   j["observed"] = r.observed;
-  j["status"] = r.reached_end ? "reached_end" : "stopped";
+  j["status"] = r.reached_end ? "reached_end" : r.lost ? "lost" : "stopped";
   j["stop_reason"] = r.stop_reason;
   j["stick_speed"] = r.stick_speed;
   j["points"] = r.points.size();

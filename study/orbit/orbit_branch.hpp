@@ -25,6 +25,9 @@
 // spends below the summary's stick speed. Between consecutive points (detectBranchEvents):
 // - fold: dp/ds changes sign; located where the linear interpolation of dp/ds in s
 //   vanishes, the vertex of the parabola p(s) it integrates to;
+// - Hopf point: such a turn where the amplitude has a minimum below 0.2 of the branch's
+//   largest (the orbit shrinks onto the steady state, and the phase condition meets it again
+//   from its minimum: p - p_H ~ eps^2 turns there too); the branch stops there;
 // - period doubling: the number of real multipliers below -1 changes;
 // - torus (Neimark-Sacker): the number of complex multipliers outside the unit circle changes;
 // - stability change otherwise (a real multiplier through +1, as at a fold);
@@ -81,7 +84,7 @@ struct BranchPoint {
   Eigen::VectorXd start;  // y0
 };
 
-enum class BranchEventKind { kFold, kPeriodDoubling, kTorus, kStabilityChange, kGrazing };
+enum class BranchEventKind { kFold, kPeriodDoubling, kTorus, kStabilityChange, kGrazing, kHopf };
 std::string branchEventName(BranchEventKind kind);  // "fold", "period_doubling", ...
 
 struct BranchEvent {
@@ -96,6 +99,7 @@ struct BranchResult {
   std::vector<BranchEvent> events;
   double stick_speed = 0;    // the scene's output.summary.stick_speed, for grazing
   bool reached_end = false;  // a point at or past `to`
+  bool lost = false;         // stopped by the corrector failing at the smallest step
   std::string stop_reason;
   double seconds = 0;
 };

@@ -105,7 +105,7 @@ TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
   EXPECT_EQ(r.status, 12) << r.output;
   EXPECT_NE(r.output.find("lost"), std::string::npos) << r.output;
   const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
-  EXPECT_EQ(j["status"].get<std::string>(), "stopped");
+  EXPECT_EQ(j["status"].get<std::string>(), "lost");
   ASSERT_GE(j["branch"].size(), 2u);
   const auto& last = j["branch"].back();
   EXPECT_LT(last["parameter"].get<double>(), 2.0);

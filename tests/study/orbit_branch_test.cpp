@@ -112,39 +112,45 @@ TEST(OrbitBranch, TheDampedBeltFoldsWhereStickSlipMeetsTheUnstableCycleOfItsSubc
   spec.from = 0.15;
   spec.to = 0.5;
   spec.step = 0.02;
-  spec.max_points = 17;  // measured: the 17th point is the one nearest the Hopf point
+  spec.max_points = 30;
   spec.orbit.settle = 30.0;
   const study::BranchResult r =
       study::continueOrbit(kBelt, {"friction=stribeck", "springs[wall_spring].damping=10"}, spec);
   const double v_h = stribeckHopfSpeed(10.0);
-  ASSERT_EQ(r.points.size(), 17u) << r.stop_reason;
-  // One fold, with the stability change there; stable before, unstable after.
-  std::size_t folds = 0, fold_after = 0;
-  double v_fold = 0;
-  for (const study::BranchEvent& e : r.events)
-    if (e.kind == BranchEventKind::kFold) ++folds, fold_after = e.after, v_fold = e.parameter;
-  ASSERT_EQ(folds, 1u);
-  ASSERT_EQ(r.events.size(), 2u);
+  // Events: the fold with its stability change, then the Hopf point, where the branch stops
+  // (measured: 18 points).
+  ASSERT_EQ(r.events.size(), 3u) << r.stop_reason;
+  EXPECT_EQ(r.events[0].kind, BranchEventKind::kFold);
   EXPECT_EQ(r.events[1].kind, BranchEventKind::kStabilityChange);
+  EXPECT_EQ(r.events[2].kind, BranchEventKind::kHopf);
+  const std::size_t fold_after = r.events[0].after;
   EXPECT_EQ(r.events[1].after, fold_after);
-  EXPECT_GT(v_fold, v_h + 0.02);  // measured 0.2598: stick-slip and sliding coexist above v_H
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
+  EXPECT_EQ(r.events[2].after + 1, r.points.size());
+  EXPECT_NE(r.stop_reason.find("Hopf"), std::string::npos) << r.stop_reason;
+  EXPECT_FALSE(r.reached_end);
+  // Stick-slip and steady sliding coexist above v_H: the fold lies beyond it (measured
+  // 0.2598); the Hopf point, interpolated at the turn, is v_H (measured 0.227127 against
+  // 0.227131).
+  EXPECT_GT(r.events[0].parameter, v_h + 0.02);
+  EXPECT_NEAR(r.events[2].parameter, v_h, 1e-3);
+  // Stable up to the fold, unstable after it, going back down.
+  const std::size_t nearest = r.events[2].before;  // the last point before the Hopf point
+  for (std::size_t i = 0; i <= nearest; ++i) {
     EXPECT_EQ(r.points[i].stable, i < fold_after) << i << ": v_b " << r.points[i].parameter;
     if (i >= fold_after) {
       EXPECT_LT(r.points[i].dp_ds, 0.0) << i;
     }
   }
-  // Into the Hopf point: the last point is the nearest (measured 0.22721 against 0.22713),
-  // small (3 mm of the fold's 8 cm), with the undamped period (measured to 2.5e-5).
-  const BranchPoint& last = r.points.back();
+  // Into the Hopf point: the nearest point is small (3 mm of the fold's 8 cm), with the
+  // undamped period (measured to 2.5e-5).
+  const BranchPoint& last = r.points[nearest];
   EXPECT_NEAR(last.parameter, v_h, 1e-3);
   EXPECT_LT(last.amplitude_pp, 0.1 * r.points[fold_after].amplitude_pp);
   EXPECT_NEAR(last.period / (2.0 * std::numbers::pi * std::sqrt(10.0 / 300.0)), 1.0, 1e-3);
   // The amplitude grows like the square root of the distance to the Hopf point: A^2 / (v_b -
-  // v_H) alike at the last three points (measured within 12 %).
-  const auto n = r.points.size();
+  // v_H) alike at the three points nearest it on the way down (measured within 12 %).
   const double ratio = std::pow(last.amplitude_pp, 2) / (last.parameter - v_h);
-  for (std::size_t i : {n - 3, n - 2}) {
+  for (std::size_t i : {nearest - 2, nearest - 1}) {
     const BranchPoint& p = r.points[i];
     EXPECT_NEAR(std::pow(p.amplitude_pp, 2) / (p.parameter - v_h) / ratio, 1.0, 0.25)
         << i << ": v_b " << p.parameter << ", A " << p.amplitude_pp;
@@ -243,6 +249,27 @@ TEST(BranchEvents, TheSmallestSlipSpeedThroughTheStickSpeedIsGrazing) {
   EXPECT_NEAR(events[0].parameter, 2.5, 1e-12);
   EXPECT_EQ(study::branchEventName(events[0].kind), "grazing");
   EXPECT_TRUE(study::detectBranchEvents(points).empty());  // no stick speed: not looked for
+}
+
+TEST(BranchEvents, ATurnWhereTheOrbitShrinksToNothingIsAHopfPoint) {
+  // p - p_H = A^2 on both sides of the turn (the orbit from its maximum, then from its
+  // minimum): the turn at the smallest amplitude is the Hopf point.
+  std::vector<BranchPoint> points = {point(1.09, 0.0, -1.0, {1.2}), point(1.04, 0.1, -0.8, {1.1}),
+                                     point(1.0025, 0.2, -0.2, {1.05}),
+                                     point(1.01, 0.3, 0.6, {1.07})};
+  const double amplitude[] = {0.3, 0.2, 0.05, 0.1};  // below 0.2 of the largest at the turn
+  for (std::size_t i = 0; i < points.size(); ++i) points[i].amplitude_pp = amplitude[i];
+  auto events = study::detectBranchEvents(points);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kHopf);
+  EXPECT_EQ(events[0].before, 2u);
+  EXPECT_EQ(study::branchEventName(events[0].kind), "hopf");
+  // The same turn with the orbit as large as before it: a fold.
+  points[2].amplitude_pp = 0.25;
+  points[3].amplitude_pp = 0.3;
+  events = study::detectBranchEvents(points);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kFold);
 }
 
 TEST(BranchEvents, NoEventWhereNothingCrosses) {
