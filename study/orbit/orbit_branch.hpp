@@ -107,7 +107,8 @@ struct BranchResult {
 // The branch from the orbit findPeriodicOrbit finds at `from` (scene `path` loaded with
 // `overrides` and then parameter=value). `progress(point, index)` after each point if given.
 // Throws io::SceneError for an unreadable scene or an unknown or non-numeric parameter (before
-// any work), OrbitError when there is no orbit at `from`; a branch lost later returns the
+// any work), OrbitError when there is no orbit at `from` (or only the equilibrium a damped
+// settling run decays to); a branch lost later returns the
 // points found so far with stop_reason saying why.
 BranchResult continueOrbit(
     const std::string& path, const std::vector<std::string>& overrides, const BranchSpec& spec,
