@@ -119,6 +119,7 @@ int runBranch(Arguments& a) {
   try {
     std::filesystem::create_directories(out);
     study::writeFileWhole(out / "branch.csv", study::branchCsvText(r));
+    study::writeFileWhole(out / "branch_orbits.csv", study::branchOrbitsCsvText(r));
     study::writeFileWhole(out / "branch.json", study::branchJsonText(a.scene_path, b, r) + "\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo orbit: %s\n", e.what());
@@ -204,7 +205,7 @@ Command addOrbitCommand(CLI::App& tribo) {
                    [a](const std::string& v) { a->spec.tolerance = positive("--tolerance", v); });
   addCheckedOption(*orbit, "--continue", "NAME=FROM:TO",
                    "follow the orbit's branch in parameter NAME from FROM towards TO\n"
-                   "(pseudo-arclength): DIR/branch.csv and DIR/branch.json",
+                   "(pseudo-arclength): DIR/branch.csv, branch.json, branch_orbits.csv",
                    [a](const std::string& v) {
                      parseContinue(v, a->branch);
                      a->continuation = true;

@@ -2,10 +2,10 @@
 // by shooting on the engine's own step (study/orbit/periodic_orbit.hpp): its period,
 // amplitude and Floquet multipliers, written to DIR/orbit.json and DIR/orbit.csv (the
 // observed coordinate over one period). With --continue NAME=FROM:TO: the orbit's branch in a
-// parameter (study/orbit/orbit_branch.hpp), written to DIR/branch.csv and DIR/branch.json.
-// Exit status: 0 a stable orbit, 1 usage, 2 bad scene,
-// 4 output error, 8 an unstable orbit, 11 no orbit found (study::OrbitError: not autonomous,
-// no oscillation, Newton not converging), 12 a branch lost before TO.
+// parameter (study/orbit/orbit_branch.hpp), written to DIR/branch.csv, DIR/branch.json and
+// DIR/branch_orbits.csv. Exit status: 0 a stable orbit, 1 usage, 2 bad scene, 4 output error, 8 an
+// unstable orbit, 11 no orbit found (study::OrbitError: not autonomous, no oscillation, Newton not
+// converging), 12 a branch lost before TO.
 #pragma once
 
 #include "apps/command.hpp"

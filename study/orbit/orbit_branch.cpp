@@ -359,13 +359,16 @@ BranchResult continueOrbit(const std::string& path, const std::vector<std::strin
     const io::Scene at = shooter.sceneAt(pt.parameter);
     const shooting::Flow flow(at.model, coords);
     const auto b = static_cast<std::size_t>(body);
-    std::vector<double> x{coords.fromVector(pt.start).bodies[b].position[axis]};
+    std::vector<double>& x = pt.x;
+    pt.t.push_back(0.0);
+    x.push_back(coords.fromVector(pt.start).bodies[b].position[axis]);
     // The slip speed as the run summary takes it: the largest over the body's contact points,
     // counted where the body touches (normal force > 0); each sample weighs its step.
     double t_prev = 0.0, dt = 0.0, stuck = 0.0, touching = 0.0, min_slip = INFINITY;
     flow(
         pt.start, pt.period,
         [&](double t, const State& s) {
+          pt.t.push_back(t);
           x.push_back(s.bodies[b].position[axis]);
           dt = t - t_prev;
           t_prev = t;
@@ -499,6 +502,16 @@ std::string branchCsvText(const BranchResult& r) {
            "," + csvNumber(p.dp_ds, 17) + "," + csvNumber(p.arclength, 17) + "," +
            std::to_string(p.iterations) + "," + csvNumber(p.residual, 6) + "," +
            csvNumber(p.trivial_error, 6) + "," + events + "\n";
+  }
+  return csv;
+}
+
+std::string branchOrbitsCsvText(const BranchResult& r) {
+  std::string csv = "point,t," + r.observed + "\n";
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const BranchPoint& p = r.points[i];
+    for (std::size_t k = 0; k < p.t.size(); ++k)
+      csv += std::to_string(i) + "," + csvNumber(p.t[k], 17) + "," + csvNumber(p.x[k], 17) + "\n";
   }
   return csv;
 }

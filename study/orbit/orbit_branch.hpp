@@ -76,12 +76,13 @@ struct BranchPoint {
   // contact points, as the run summary takes it): its minimum, and the fraction of the period
   // spent below the summary's stick speed; NaN when it never touches.
   double min_slip = NAN, stick_fraction = NAN;
-  double dp_ds = 0;       // the unit tangent's parameter component
-  double arclength = 0;   // s from the branch's start
-  int iterations = 0;     // the corrector's
-  double residual = 0;    // |F| / (1 + |y0|) of the closing and phase rows
-  double step = 0;        // the step ds that reached this point (0 for the first)
-  Eigen::VectorXd start;  // y0
+  double dp_ds = 0;          // the unit tangent's parameter component
+  double arclength = 0;      // s from the branch's start
+  int iterations = 0;        // the corrector's
+  double residual = 0;       // |F| / (1 + |y0|) of the closing and phase rows
+  double step = 0;           // the step ds that reached this point (0 for the first)
+  Eigen::VectorXd start;     // y0
+  std::vector<double> t, x;  // the observed coordinate over one period, per step, from y0
 };
 
 enum class BranchEventKind { kFold, kPeriodDoubling, kTorus, kStabilityChange, kGrazing, kHopf };
@@ -120,8 +121,10 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
                                             double stick_speed = 0);
 
 // branch.csv: one row per point (columns in docs/orbits.md); branch.json: the spec, the
-// events, the stop reason.
+// events, the stop reason; branch_orbits.csv: each point's sampled orbit (point, t and the
+// observed coordinate), for replay and plots.
 std::string branchCsvText(const BranchResult& r);
+std::string branchOrbitsCsvText(const BranchResult& r);
 std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec,
                            const BranchResult& r);
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 #include "support/cli_support.hpp"
 
@@ -91,6 +92,26 @@ TEST_F(OrbitCli, ContinueWritesTheBranchsCsvAndEventsAndReportsEachPoint) {
   EXPECT_TRUE(j["events"].is_array());
   EXPECT_TRUE(j["events"].empty());  // stick-slip all the way: nothing crosses
   EXPECT_EQ(j["branch"].size(), static_cast<std::size_t>(rows));
+  // branch_orbits.csv: each point's orbit sampled from t = 0 to its period, back where it
+  // started.
+  std::ifstream orbits(dir_ / "branch_orbits.csv");
+  std::getline(orbits, line);
+  EXPECT_EQ(line, "point,t,box.x");
+  std::vector<double> t_end(static_cast<std::size_t>(rows), -1), x0(t_end), x_end(t_end);
+  while (std::getline(orbits, line)) {
+    std::istringstream fields(line);
+    std::size_t point = 0;
+    double t = 0, x = 0;
+    char comma = 0;
+    fields >> point >> comma >> t >> comma >> x;
+    ASSERT_LT(point, t_end.size()) << line;
+    if (t == 0.0) x0[point] = x;
+    t_end[point] = t, x_end[point] = x;
+  }
+  for (std::size_t i = 0; i < t_end.size(); ++i) {
+    EXPECT_NEAR(t_end[i], j["branch"][i]["period"].get<double>(), 1e-12) << i;
+    EXPECT_NEAR(x_end[i], x0[i], 1e-6) << i;
+  }
 }
 
 TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
