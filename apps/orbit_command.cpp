@@ -1,6 +1,7 @@
 #include "apps/orbit_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
 #include "study/file_commit.hpp"
+#include "study/orbit/orbit_branch.hpp"
 #include "study/orbit/periodic_orbit.hpp"
 
 namespace tribo::app {
@@ -22,6 +24,9 @@ struct Arguments {
   std::string scene_path, out_dir;
   std::vector<std::string> overrides;
   study::OrbitSpec spec;
+  bool continuation = false;    // --continue given
+  bool branch_options = false;  // --max-points or --step given
+  study::BranchSpec branch;
 };
 
 double positive(const std::string& option, const std::string& text) {
@@ -31,7 +36,111 @@ double positive(const std::string& option, const std::string& text) {
   return *v;
 }
 
+// --continue NAME=FROM:TO into the branch's spec; throws std::invalid_argument saying what was
+// expected and what was found.
+void parseContinue(const std::string& text, study::BranchSpec& b) {
+  const auto eq = text.find('=');
+  const auto colon = text.find(':', eq == std::string::npos ? 0 : eq);
+  if (eq == std::string::npos || eq == 0 || colon == std::string::npos)
+    throw std::invalid_argument("--continue: expected NAME=FROM:TO (e.g. v_b=1:2), found '" + text +
+                                "'");
+  const std::string from = text.substr(eq + 1, colon - eq - 1), to = text.substr(colon + 1);
+  const auto f = io::parseNumber(from), t = io::parseNumber(to);
+  if (!f || !std::isfinite(*f))
+    throw std::invalid_argument("--continue: expected a number for FROM in NAME=FROM:TO, found '" +
+                                from + "'");
+  if (!t || !std::isfinite(*t))
+    throw std::invalid_argument("--continue: expected a number for TO in NAME=FROM:TO, found '" +
+                                to + "'");
+  if (*f == *t)
+    throw std::invalid_argument("--continue: expected FROM and TO to differ, found both " + from);
+  b.parameter = text.substr(0, eq);
+  b.from = *f;
+  b.to = *t;
+}
+
+int wholeAtLeast(const std::string& option, const std::string& text, int least) {
+  const auto v = io::parseNumber(text);
+  if (!v || *v != std::floor(*v) || *v < least || *v > 1e6)
+    throw std::invalid_argument(option + ": expected a whole number from " + std::to_string(least) +
+                                " to 1000000, found '" + text + "'");
+  return static_cast<int>(*v);
+}
+
+// tribo orbit --continue: the branch, point by point on stderr, into branch.csv and
+// branch.json (written also when the branch is lost on the way).
+int runBranch(Arguments& a) {
+  study::BranchSpec& b = a.branch;
+  b.orbit = a.spec;
+  try {
+    const io::Scene scene = io::loadScene(a.scene_path, a.overrides);
+    for (const auto& n : scene.notes) std::fprintf(stderr, "tribo orbit: note: %s\n", n.c_str());
+    const auto it = std::find_if(scene.parameters.begin(), scene.parameters.end(),
+                                 [&](const auto& kv) { return kv.first == b.parameter; });
+    if (it == scene.parameters.end() || !io::parseNumber(it->second)) {
+      std::string names;
+      for (const auto& [name, value] : scene.parameters)
+        if (io::parseNumber(value)) {
+          if (!names.empty()) names += ", ";
+          names += name;
+        }
+      std::fprintf(stderr,
+                   "tribo orbit: --continue: expected a numeric parameter of %s (%s), found "
+                   "'%s'%s\n",
+                   scene.path.c_str(), names.c_str(), b.parameter.c_str(),
+                   it == scene.parameters.end() ? "" : (" = '" + it->second + "'").c_str());
+      return 1;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo orbit: %s\n", e.what());
+    return 2;
+  }
+  study::BranchResult r;
+  try {
+    std::fprintf(stderr, "tribo orbit: the orbit at %s = %.6g, then the branch towards %.6g\n",
+                 b.parameter.c_str(), b.from, b.to);
+    r = study::continueOrbit(
+        a.scene_path, a.overrides, b, [&](const study::BranchPoint& p, std::size_t i) {
+          std::fprintf(stderr,
+                       "tribo orbit: point %zu  %s = %.8g  period %.8g s  amplitude %.6g  "
+                       "|mu|max %.3g  %s  (%d iterations)\n",
+                       i, b.parameter.c_str(), p.parameter, p.period, p.amplitude_pp, p.largest,
+                       p.stable ? "stable" : "unstable", p.iterations);
+        });
+  } catch (const study::OrbitError& e) {
+    std::fprintf(stderr, "tribo orbit: no orbit at %s = %.6g: %s\n", b.parameter.c_str(), b.from,
+                 e.what());
+    return kExitNoOrbit;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo orbit: %s\n", e.what());
+    return 2;
+  }
+  const std::filesystem::path out(a.out_dir);
+  try {
+    std::filesystem::create_directories(out);
+    study::writeFileWhole(out / "branch.csv", study::branchCsvText(r));
+    study::writeFileWhole(out / "branch_orbits.csv", study::branchOrbitsCsvText(r));
+    study::writeFileWhole(out / "branch.json", study::branchJsonText(a.scene_path, b, r) + "\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo orbit: %s\n", e.what());
+    return 4;
+  }
+  std::printf("branch           %s in %s: %zu points, %s\n", a.scene_path.c_str(),
+              b.parameter.c_str(), r.points.size(), r.stop_reason.c_str());
+  for (const study::BranchEvent& e : r.events)
+    std::printf("event            %s at %s ~ %.6g (between points %zu and %zu, interpolated)\n",
+                study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter, e.before,
+                e.after);
+  std::printf("results          %s (%.3g s)\n", out.string().c_str(), r.seconds);
+  return r.lost ? kExitBranchLost : 0;
+}
+
 int runOrbit(Arguments& a) {
+  if (a.continuation) return runBranch(a);
+  if (a.branch_options) {
+    std::fprintf(stderr, "tribo orbit: --max-points and --step apply with --continue only\n");
+    return 1;
+  }
   io::Scene scene;
   study::OrbitResult r;
   try {
@@ -94,14 +203,38 @@ Command addOrbitCommand(CLI::App& tribo) {
   addCheckedOption(*orbit, "--tolerance", "X",
                    "Newton's tolerance on |phi_T(y0) - y0| / (1 + |y0|) (1e-9)",
                    [a](const std::string& v) { a->spec.tolerance = positive("--tolerance", v); });
+  addCheckedOption(*orbit, "--continue", "NAME=FROM:TO",
+                   "follow the orbit's branch in parameter NAME from FROM towards TO\n"
+                   "(pseudo-arclength): DIR/branch.csv, branch.json, branch_orbits.csv",
+                   [a](const std::string& v) {
+                     parseContinue(v, a->branch);
+                     a->continuation = true;
+                   });
+  addCheckedOption(*orbit, "--max-points", "N",
+                   "with --continue: points at most, the first included (20)",
+                   [a](const std::string& v) {
+                     a->branch.max_points = wholeAtLeast("--max-points", v, 2);
+                     a->branch_options = true;
+                   });
+  addCheckedOption(*orbit, "--step", "S",
+                   "with --continue: the first arclength step, in the unknowns' SI units\n"
+                   "(default: |TO - FROM| / 10)",
+                   [a](const std::string& v) {
+                     a->branch.step = positive("--step", v);
+                     a->branch_options = true;
+                   });
   orbit->footer(
       "Shoots for the orbit on the scene's own integrator and step: unknowns the state on\n"
       "the orbit where the summary's coordinate peaks, and the period; Newton with the\n"
       "Jacobian by finite differences of the flow (columns on the cores). The multipliers\n"
       "are the monodromy matrix's eigenvalues; one is 1 (reported with its error).\n"
       "Autonomous scenes with rk4 or semi_implicit_euler (docs/orbits.md).\n"
-      "exit status: 0 stable orbit, 1 usage, 2 bad scene, 4 output error, 8 unstable orbit,\n"
-      "11 no orbit found");
+      "--continue follows the orbit in a parameter (pseudo-arclength continuation) and\n"
+      "reports folds, period doublings, tori, stability changes, grazing and Hopf points\n"
+      "between its points.\n"
+      "exit status: 0 stable orbit (with --continue: a branch not lost on the way),\n"
+      "1 usage, 2 bad scene, 4 output error, 8 unstable orbit, 11 no orbit found,\n"
+      "12 the branch was lost (the points found so far are written)");
   return {orbit, [a] { return runOrbit(*a); }};
 }
 

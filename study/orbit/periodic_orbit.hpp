@@ -20,8 +20,8 @@
 // Limits: autonomous scenes (no loads, actuators, drives, moving kinematic bodies or surface
 // velocities that vary: a forced orbit has the forcing's period); fixed-step integrators (rk4,
 // semi_implicit_euler); friction memory on contacts that stay the same along the orbit.
-// Not here: continuation in a parameter and the bifurcations along a branch, a start from a
-// Hopf point of `tribo modes`, matrix-free Krylov solves for large states.
+// Continuation in a parameter and the bifurcations along a branch: study/orbit/orbit_branch.hpp.
+// Not here: a start from a Hopf point of `tribo modes`, matrix-free Krylov solves for large states.
 #pragma once
 
 #include <Eigen/Dense>
@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "core/state.hpp"
 #include "io/scene_loader.hpp"
 
 namespace tribo::study {
@@ -62,6 +63,7 @@ struct OrbitResult {
   bool stable = false;                            // every other multiplier inside the unit circle
   std::vector<std::string> coordinates;           // names of y0's entries
   Eigen::VectorXd start;                          // y0
+  State reference;           // the state y0's coordinates are taken against (its contacts and time)
   std::vector<double> t, x;  // the observed coordinate over one period, per step
   double seconds = 0;        // wall time
 };

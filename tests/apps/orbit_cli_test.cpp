@@ -1,11 +1,13 @@
 // `tribo orbit` end to end: the exit status scripts branch on (0 a stable orbit, 11 no orbit,
 // 2 bad scene, 1 usage), the files it writes (orbit.json whole, its period and amplitude
 // those orbit.csv shows: the samples span one period and return to the start). The figures
-// themselves are checked at library level (tests/study/periodic_orbit_test.cpp).
+// themselves are checked at library level (tests/study/periodic_orbit_test.cpp). With
+// --continue: branch.csv's columns and rows, branch.json's events, the usage errors.
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 #include "support/cli_support.hpp"
 
@@ -52,6 +54,122 @@ TEST_F(OrbitCli, NoOrbitElevenBadSceneTwoUsageOne) {
   EXPECT_EQ(runTribo("orbit " + kBelt + " --set nosuch=1 --out " + dir_.string()).status, 2);
   EXPECT_EQ(runTribo("orbit " + kBelt).status, 1);
   EXPECT_EQ(runTribo("orbit " + kBelt + " --out " + dir_.string() + " --settle -1").status, 1);
+}
+
+TEST_F(OrbitCli, ContinueWritesTheBranchsCsvAndEventsAndReportsEachPoint) {
+  const Result r = runTribo("orbit " + kBelt + " --set duration=30 --out " + dir_.string() +
+                            " --continue v_b=1.4:1.5 --step 0.1 --max-points 4");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("point 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("point 1"), std::string::npos) << r.output;
+  std::ifstream csv(dir_ / "branch.csv");
+  std::string line;
+  std::getline(csv, line);
+  for (const char* column : {"parameter", "period", "amplitude_pp", "largest_multiplier", "stable",
+                             "stick_fraction", "event"})
+    EXPECT_NE(line.find(column), std::string::npos) << column << " in " << line;
+  EXPECT_EQ(line.rfind("index,parameter,period,amplitude_pp,largest_multiplier,stable,", 0), 0u)
+      << line;
+  int rows = 0;
+  double v_b = 0;
+  while (std::getline(csv, line)) {
+    std::istringstream fields(line);
+    std::string index, value;
+    std::getline(fields, index, ',');
+    std::getline(fields, value, ',');
+    v_b = std::stod(value);
+    if (rows == 0) {
+      EXPECT_EQ(v_b, 1.4) << line;
+    }
+    ++rows;
+  }
+  EXPECT_GE(rows, 2);
+  EXPECT_LE(rows, 4);
+  EXPECT_GE(v_b, 1.5);  // the last point reached TO
+  const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_EQ(j["parameter"].get<std::string>(), "v_b");
+  EXPECT_EQ(j["status"].get<std::string>(), "reached_end");
+  EXPECT_TRUE(j["events"].is_array());
+  EXPECT_TRUE(j["events"].empty());  // stick-slip all the way: nothing crosses
+  EXPECT_EQ(j["branch"].size(), static_cast<std::size_t>(rows));
+  // branch_orbits.csv: each point's orbit sampled from t = 0 to its period, back where it
+  // started.
+  std::ifstream orbits(dir_ / "branch_orbits.csv");
+  std::getline(orbits, line);
+  EXPECT_EQ(line, "point,t,box.x");
+  std::vector<double> t_end(static_cast<std::size_t>(rows), -1), x0(t_end), x_end(t_end);
+  while (std::getline(orbits, line)) {
+    std::istringstream fields(line);
+    std::size_t point = 0;
+    double t = 0, x = 0;
+    char comma = 0;
+    fields >> point >> comma >> t >> comma >> x;
+    ASSERT_LT(point, t_end.size()) << line;
+    if (t == 0.0) x0[point] = x;
+    t_end[point] = t, x_end[point] = x;
+  }
+  for (std::size_t i = 0; i < t_end.size(); ++i) {
+    EXPECT_NEAR(t_end[i], j["branch"][i]["period"].get<double>(), 1e-12) << i;
+    EXPECT_NEAR(x_end[i], x0[i], 1e-6) << i;
+  }
+}
+
+TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
+  // A viscous damper beside the wall spring (1.5 N s/m): stick-slip ends as the belt speeds
+  // up, when the orbit's smallest slip speed reaches the stick speed (0.01 m/s) and the
+  // sticking phase vanishes (grazing); at the law's kink there Newton's iteration stops
+  // converging (measured: lost after v_b = 0.7303, smallest slip 0.0099 m/s), and the branch
+  // ends there, before TO, with what it found.
+  const Result r =
+      runTribo("orbit " + kBelt + " --set 'springs[wall_spring].damping=1.5'" + " --out " +
+               dir_.string() + " --continue v_b=0.5:2 --step 0.1 --max-points 25");
+  EXPECT_EQ(r.status, 12) << r.output;
+  EXPECT_NE(r.output.find("lost"), std::string::npos) << r.output;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_EQ(j["status"].get<std::string>(), "lost");
+  ASSERT_GE(j["branch"].size(), 2u);
+  const auto& last = j["branch"].back();
+  EXPECT_LT(last["parameter"].get<double>(), 2.0);
+  // Sticking is about to end: the smallest slip speed just under the stick speed, the stick
+  // fraction far below the first point's.
+  EXPECT_GT(last["min_slip"].get<double>(), 0.009);
+  EXPECT_LT(last["min_slip"].get<double>(), 0.01);
+  EXPECT_LT(last["stick_fraction"].get<double>(),
+            0.5 * j["branch"][0]["stick_fraction"].get<double>());
+  EXPECT_TRUE(fs::exists(dir_ / "branch.csv"));
+}
+
+TEST_F(OrbitCli, ContinueRefusesToStartFromAnEquilibrium) {
+  // A damper of 5.5 N s/m (5 % of critical): at 1.5 m/s the settling run's oscillation
+  // decays onto steady sliding, which Newton then finds: an equilibrium, no orbit.
+  const Result r = runTribo("orbit " + kBelt + " --set 'springs[wall_spring].damping=5.5'" +
+                            " --out " + dir_.string() + " --continue v_b=1.5:2");
+  EXPECT_EQ(r.status, 11) << r.output;
+  EXPECT_NE(r.output.find("equilibrium"), std::string::npos) << r.output;
+}
+
+TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
+  auto refused = [&](const std::string& spec, const std::string& words) {
+    const Result r = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue " + spec);
+    EXPECT_EQ(r.status, 1) << spec << ": " << r.output;
+    EXPECT_NE(r.output.find(words), std::string::npos) << spec << ": " << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "branch.csv")) << spec;
+  };
+  refused("nosuch=1:2", "'nosuch'");
+  refused("nosuch=1:2", "v_b");  // the names it expected
+  refused("friction=1:2", "expected a numeric parameter");
+  refused("v_b=1:1", "expected FROM and TO to differ");
+  refused("v_b=one:2", "expected a number for FROM");
+  refused("v_b=1:2x", "expected a number for TO");
+  refused("v_b1:2", "expected NAME=FROM:TO");
+  refused("v_b=1", "expected NAME=FROM:TO");
+  const Result points =
+      runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue v_b=1:2 --max-points 1");
+  EXPECT_EQ(points.status, 1) << points.output;
+  EXPECT_NE(points.output.find("--max-points"), std::string::npos) << points.output;
+  const Result alone = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --step 0.1");
+  EXPECT_EQ(alone.status, 1) << alone.output;
+  EXPECT_NE(alone.output.find("with --continue"), std::string::npos) << alone.output;
 }
 
 }  // namespace

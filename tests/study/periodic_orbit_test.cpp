@@ -1,6 +1,6 @@
 // Periodic orbits by shooting (study/orbit/periodic_orbit.hpp) against independent
 // expectations: the belt's stick-slip cycle of the paper's one-degree-of-freedom model,
-// integrated here by hand (tests/support/one_dof_belt.hpp, RK4 at 10 us, shares nothing with
+// integrated here by hand (tests/study/one_dof_cycle.hpp, RK4 at 10 us, shares nothing with
 // the engine but the friction law), at several belt speeds and masses; its multipliers (one
 // of them 1, the rest collapsed by the stick phase); and the scenes it must refuse, by name.
 #include "study/orbit/periodic_orbit.hpp"
@@ -11,9 +11,8 @@
 #include <complex>
 #include <vector>
 
-#include "friction/friction_law.hpp"
 #include "io/scene_loader.hpp"
-#include "support/one_dof_belt.hpp"
+#include "one_dof_cycle.hpp"
 
 namespace tribo {
 namespace {
@@ -24,32 +23,6 @@ std::string set(const std::string& name, double value) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.17g", value);
   return name + "=" + buf;
-}
-
-// The settled cycle of the 1-DOF model: period between its last maxima, peak to peak.
-struct ReferenceCycle {
-  double period = 0, amplitude_pp = 0;
-};
-
-ReferenceCycle oneDofCycle(double m, double v_b) {
-  const auto law = friction::makeFrictionLaw(
-      {"roh_yoo",
-       {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}},
-       {}});
-  test::OneDofBelt ref{m, 300.0, v_b, 9.81, law.get()};
-  double x = 0.0, v = 0.0, prev_v = 0.0, lo = 1e9, hi = -1e9, lo_done = 0, hi_done = 0;
-  std::vector<double> maxima;
-  const double h = 1e-5;
-  ref.run(x, v, h, std::lround(60.0 / h), [&](double t, double xs, double vs) {
-    lo = std::min(lo, xs), hi = std::max(hi, xs);
-    if (prev_v > 0.0 && vs <= 0.0) {
-      maxima.push_back(t - h + h * prev_v / (prev_v - vs));
-      lo_done = lo, hi_done = hi, lo = 1e9, hi = -1e9;
-    }
-    prev_v = vs;
-  });
-  EXPECT_GE(maxima.size(), 10u);
-  return {maxima.back() - maxima[maxima.size() - 2], hi_done - lo_done};
 }
 
 struct BeltCase {

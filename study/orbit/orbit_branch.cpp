@@ -1,0 +1,564 @@
+#include "study/orbit/orbit_branch.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <thread>
+#include <utility>
+
+#include "io/file_read.hpp"
+#include "io/scene_parameters.hpp"
+#include "study/csv_text.hpp"
+#include "study/orbit/orbit_coordinates.hpp"
+#include "study/orbit/shooting.hpp"
+
+namespace tribo::study {
+
+namespace {
+
+// An orbit whose amplitude falls below this fraction of the first one's has collapsed.
+constexpr double kCollapsed = 1e-6;
+// A turn of the parameter where the amplitude has a minimum below this fraction of the
+// branch's largest is a Hopf point, not a fold.
+constexpr double kHopfAmplitude = 0.2;
+
+std::string assignment(const std::string& name, double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", value);
+  return name + "=" + buf;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// The shooting rows and their Jacobian at z = (y0, T, p), the scene reloaded at p and p +- dp.
+class BranchShooter {
+ public:
+  BranchShooter(const io::SceneDocument& document, std::vector<std::string> overrides,
+                std::string parameter, const OrbitCoordinates& coords, Eigen::Index phase,
+                Eigen::VectorXd floor, double fd_step, double dp, unsigned threads)
+      : document_(document),
+        overrides_(std::move(overrides)),
+        parameter_(std::move(parameter)),
+        coords_(coords),
+        phase_(phase),
+        floor_(std::move(floor)),
+        fd_step_(fd_step),
+        dp_(dp),
+        threads_(threads) {}
+
+  io::Scene sceneAt(double p) const {
+    std::vector<std::string> o = overrides_;
+    o.push_back(assignment(parameter_, p));
+    return document_.load(o);
+  }
+
+  // F (n + 1: the orbit closing, the phase), A = dF/dz ((n + 1) x (n + 2)) and the monodromy
+  // matrix. Throws OrbitError (a failed step) or io::SceneError (p outside the scene's range).
+  void evaluate(const Eigen::VectorXd& z, Eigen::VectorXd& F, Eigen::MatrixXd& A,
+                Eigen::MatrixXd& monodromy) const {
+    const Eigen::Index n = coords_.size();
+    const Eigen::VectorXd y = z.head(n);
+    const double T = z[n], p = z[n + 1];
+    const io::Scene at = sceneAt(p), up_p = sceneAt(p + dp_), down_p = sceneAt(p - dp_);
+    const shooting::Flow flow(at.model, coords_), flow_up(up_p.model, coords_),
+        flow_down(down_p.model, coords_);
+    F.resize(n + 1);
+    F.head(n) = flow(y, T) - y;
+    F[n] = y[phase_];
+    A = Eigen::MatrixXd::Zero(n + 1, n + 2);
+    shooting::parallelColumns(n + 2, threads_, [&](Eigen::Index j) {
+      // Central differences, as periodic_orbit.cpp takes them.
+      if (j < n) {
+        const double d = fd_step_ * std::max(std::abs(y[j]), floor_[j]);
+        Eigen::VectorXd up = y, down = y;
+        up[j] += d;
+        down[j] -= d;
+        A.col(j).head(n) = (flow(up, T) - flow(down, T)) / (2 * d);
+      } else if (j == n) {
+        const double d = fd_step_ * T;
+        A.col(n).head(n) = (flow(y, T + d) - flow(y, T - d)) / (2 * d);
+      } else {
+        A.col(n + 1).head(n) = (flow_up(y, T) - flow_down(y, T)) / (2 * dp_);
+      }
+    });
+    monodromy = A.topLeftCorner(n, n);
+    A.topLeftCorner(n, n) -= Eigen::MatrixXd::Identity(n, n);
+    A(n, phase_) = 1.0;
+  }
+
+ private:
+  const io::SceneDocument& document_;
+  std::vector<std::string> overrides_;
+  std::string parameter_;
+  const OrbitCoordinates& coords_;
+  Eigen::Index phase_;
+  Eigen::VectorXd floor_;
+  double fd_step_, dp_;
+  unsigned threads_;
+};
+
+// The unit tangent of the branch at a point with Jacobian A: A t = 0, oriented along `along`.
+Eigen::VectorXd unitTangent(const Eigen::MatrixXd& A, const Eigen::VectorXd& along) {
+  const Eigen::Index rows = A.rows(), cols = A.cols();
+  Eigen::MatrixXd J(rows + 1, cols);
+  J.topRows(rows) = A;
+  J.row(rows) = along.transpose();
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows + 1);
+  rhs[rows] = 1.0;
+  Eigen::VectorXd t = J.colPivHouseholderQr().solve(rhs);
+  t.normalize();
+  if (t.dot(along) < 0.0) t = -t;
+  return t;
+}
+
+struct Correction {
+  bool ok = false;
+  std::string why;
+  Eigen::VectorXd z, F;
+  Eigen::MatrixXd A, monodromy;
+  int iterations = 0;
+  double residual = 0;
+};
+
+// Newton from the prediction z_pred = z_k + ds d on the closing, phase and arclength rows.
+Correction correct(const BranchShooter& shooter, const Eigen::VectorXd& z_pred,
+                   const Eigen::VectorXd& d, double ds, int max_iterations, double tolerance) {
+  Correction c;
+  c.z = z_pred;
+  const Eigen::Index n = z_pred.size() - 2;
+  for (int it = 0;; ++it) {
+    try {
+      shooter.evaluate(c.z, c.F, c.A, c.monodromy);
+    } catch (const std::exception& e) {  // OrbitError, io::SceneError
+      c.why = e.what();
+      return c;
+    }
+    c.iterations = it;
+    c.residual = c.F.norm() / (1.0 + c.z.head(n).norm());
+    if (c.residual <= tolerance) {
+      c.ok = true;
+      return c;
+    }
+    if (it == max_iterations) {
+      c.why = "Newton's iteration did not converge in " + std::to_string(max_iterations) +
+              " iterations (residual " + number(c.residual) + ")";
+      return c;
+    }
+    Eigen::MatrixXd J(n + 2, n + 2);
+    J.topRows(n + 1) = c.A;
+    J.row(n + 1) = d.transpose();
+    Eigen::VectorXd rhs(n + 2);
+    rhs.head(n + 1) = -c.F;
+    rhs[n + 1] = -d.dot(c.z - z_pred);
+    const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(rhs);
+    // A damped step: the period changes by at most a quarter of itself.
+    const double T = c.z[n];
+    const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
+    c.z += scale * dz;
+    if (!(c.z[n] > 0.0) || !c.z.allFinite()) {
+      c.why = "Newton's iteration left the orbit (period " + number(c.z[n]) + " s)";
+      return c;
+    }
+    if ((c.z - z_pred).norm() > ds) {
+      c.why = "the correction (" + number((c.z - z_pred).norm()) +
+              ") went farther than the step (" + number(ds) + ")";
+      return c;
+    }
+  }
+}
+
+// Modulus of the largest multiplier among the non-trivial ones that `pick` selects (0: none).
+template <typename Pick>
+double largestOf(const BranchPoint& p, Pick pick) {
+  double m = 0.0;
+  for (std::size_t i = 0; i < p.multipliers.size(); ++i)
+    if (static_cast<int>(i) != p.trivial && pick(p.multipliers[i]))
+      m = std::max(m, std::abs(p.multipliers[i]));
+  return m;
+}
+
+bool isReal(std::complex<double> mu) {
+  return std::abs(mu.imag()) <= 1e-9 * std::max(1.0, std::abs(mu));
+}
+
+template <typename Pick>
+int countOf(const BranchPoint& p, Pick pick) {
+  int count = 0;
+  for (std::size_t i = 0; i < p.multipliers.size(); ++i)
+    if (static_cast<int>(i) != p.trivial && pick(p.multipliers[i])) ++count;
+  return count;
+}
+
+// Where g (a multiplier's modulus) crosses 1 between points a and b, by linear interpolation
+// in the parameter (clamped to the interval).
+double crossing(const BranchPoint& a, const BranchPoint& b, double ga, double gb) {
+  double s = gb != ga ? (1.0 - ga) / (gb - ga) : 0.5;
+  s = std::clamp(s, 0.0, 1.0);
+  return a.parameter + s * (b.parameter - a.parameter);
+}
+
+}  // namespace
+
+std::string branchEventName(BranchEventKind kind) {
+  switch (kind) {
+    case BranchEventKind::kFold:
+      return "fold";
+    case BranchEventKind::kPeriodDoubling:
+      return "period_doubling";
+    case BranchEventKind::kTorus:
+      return "torus";
+    case BranchEventKind::kStabilityChange:
+      return "stability_change";
+    case BranchEventKind::kGrazing:
+      return "grazing";
+    case BranchEventKind::kHopf:
+      return "hopf";
+  }
+  return "unknown";
+}
+
+std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& points,
+                                            double stick_speed) {
+  std::vector<BranchEvent> events;
+  auto below_minus_one = [](std::complex<double> mu) { return isReal(mu) && mu.real() < -1.0; };
+  auto real_negative = [](std::complex<double> mu) { return isReal(mu) && mu.real() < 0.0; };
+  auto complex_outside = [](std::complex<double> mu) { return !isReal(mu) && std::abs(mu) > 1.0; };
+  auto complex_any = [](std::complex<double> mu) { return !isReal(mu); };
+  auto any = [](std::complex<double>) { return true; };
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const BranchPoint &a = points[i], &b = points[i + 1];
+    if (a.dp_ds * b.dp_ds < 0.0) {
+      // dp/ds linear in s between the points: zero at sigma = a ds / (a - b) past point i,
+      // where p(s), its integral, has its vertex p_i + a sigma / 2.
+      const double ds = b.arclength - a.arclength;
+      const double sigma = a.dp_ds * ds / (a.dp_ds - b.dp_ds);
+      // Through a Hopf point the branch passes the steady state (amplitude zero) and p(s)
+      // turns like at a fold: p - p_H ~ eps^2 for the orbit of amplitude eps, which the phase
+      // condition also meets with -eps (the same orbit from its minimum). Told apart by the
+      // amplitude: falling into the interval, rising after it, small against the branch's.
+      double largest = 0.0;
+      for (const BranchPoint& q : points) largest = std::max(largest, q.amplitude_pp);
+      const bool falls = i > 0 && points[i - 1].amplitude_pp > a.amplitude_pp;
+      const bool rises = i + 2 >= points.size() || points[i + 2].amplitude_pp > b.amplitude_pp;
+      const bool hopf =
+          falls && rises && std::min(a.amplitude_pp, b.amplitude_pp) < kHopfAmplitude * largest;
+      events.push_back({hopf ? BranchEventKind::kHopf : BranchEventKind::kFold, i, i + 1,
+                        a.parameter + 0.5 * a.dp_ds * sigma});
+    }
+    bool explained = false;
+    if (countOf(a, below_minus_one) != countOf(b, below_minus_one)) {
+      events.push_back({BranchEventKind::kPeriodDoubling, i, i + 1,
+                        crossing(a, b, largestOf(a, real_negative), largestOf(b, real_negative))});
+      explained = true;
+    }
+    if (countOf(a, complex_outside) != countOf(b, complex_outside)) {
+      events.push_back({BranchEventKind::kTorus, i, i + 1,
+                        crossing(a, b, largestOf(a, complex_any), largestOf(b, complex_any))});
+      explained = true;
+    }
+    if (a.stable != b.stable && !explained)
+      events.push_back({BranchEventKind::kStabilityChange, i, i + 1,
+                        crossing(a, b, largestOf(a, any), largestOf(b, any))});
+    if (stick_speed > 0.0 && std::isfinite(a.min_slip) && std::isfinite(b.min_slip) &&
+        (a.min_slip < stick_speed) != (b.min_slip < stick_speed))
+      events.push_back({BranchEventKind::kGrazing, i, i + 1,
+                        crossing(a, b, a.min_slip / stick_speed, b.min_slip / stick_speed)});
+  }
+  return events;
+}
+
+BranchResult continueOrbit(const std::string& path, const std::vector<std::string>& overrides,
+                           const BranchSpec& spec,
+                           const std::function<void(const BranchPoint&, std::size_t)>& progress) {
+  const auto wall = std::chrono::steady_clock::now();
+  if (!std::isfinite(spec.from) || !std::isfinite(spec.to) || spec.from == spec.to)
+    throw std::invalid_argument("the branch's range " + number(spec.from) + ":" + number(spec.to) +
+                                " is empty or not finite");
+  std::string text;
+  try {
+    text = io::readFileBounded(path, "scene file", io::kMaxSceneBytes);
+  } catch (const io::FileReadError& e) {
+    throw io::SceneError(e.what());
+  }
+  const io::SceneDocument document(text, path);
+  {
+    const io::Scene base = document.load(overrides);
+    const auto it = std::find_if(base.parameters.begin(), base.parameters.end(),
+                                 [&](const auto& kv) { return kv.first == spec.parameter; });
+    if (it == base.parameters.end()) {
+      std::string names;
+      for (const auto& [name, value] : base.parameters) {
+        if (!names.empty()) names += ", ";
+        names += name;
+      }
+      throw io::SceneError("'" + spec.parameter + "' is not a parameter of " + path +
+                           " (expected one of: " + names + ")");
+    }
+    if (!io::parseNumber(it->second))
+      throw io::SceneError("parameter '" + spec.parameter + "' of " + path + " is '" + it->second +
+                           "': expected a number to continue in");
+  }
+  BranchResult r;
+  const io::Scene first = document.load([&] {
+    std::vector<std::string> o = overrides;
+    o.push_back(assignment(spec.parameter, spec.from));
+    return o;
+  }());
+  const OrbitResult orbit = findPeriodicOrbit(first, spec.orbit);
+  // A damped settling run can lead Newton onto the equilibrium it decays to, which closes on
+  // itself for any T: no orbit to follow.
+  if (!(orbit.amplitude_pp > kCollapsed * orbit.guess_amplitude_pp))
+    throw OrbitError("the orbit found at " + spec.parameter + " = " + number(spec.from) +
+                     " is an equilibrium (amplitude " + number(orbit.amplitude_pp) +
+                     " against the settling run's " + number(orbit.guess_amplitude_pp) +
+                     "): the oscillation decays there; start the branch where it does not");
+  r.observed = orbit.observed;
+  const int body = shooting::shootableBody(first);
+  const int axis = first.output.summary.coordinate;
+  const OrbitCoordinates coords(*first.model, orbit.reference);
+  const Eigen::Index n = coords.size();
+  const double range = std::abs(spec.to - spec.from);
+  const double dp = spec.fd_parameter > 0.0
+                        ? spec.fd_parameter
+                        : spec.orbit.fd_step * std::max(std::abs(spec.from), range);
+  const unsigned threads =
+      std::max(1u, spec.orbit.threads ? spec.orbit.threads : std::thread::hardware_concurrency());
+  const BranchShooter shooter(
+      document, overrides, spec.parameter, coords, coords.velocityIndex(body, axis),
+      shooting::fdFloor(orbit.start, orbit.reference.friction_values.size()), spec.orbit.fd_step,
+      dp, threads);
+  const double step = spec.step > 0.0 ? spec.step : range / 10.0;
+  const double min_step = spec.min_step > 0.0 ? spec.min_step : step / 64.0;
+  const double max_step = spec.max_step > 0.0 ? spec.max_step : 4.0 * step;
+  const double direction = spec.to > spec.from ? 1.0 : -1.0;
+  const double stick_speed = first.output.summary.stick_speed;
+  r.stick_speed = stick_speed;
+
+  // A converged point: its multipliers, tangent and the sampled orbit's amplitude.
+  auto makePoint = [&](const Eigen::VectorXd& z, const Eigen::MatrixXd& monodromy,
+                       const Eigen::VectorXd& tangent) {
+    BranchPoint pt;
+    pt.start = z.head(n);
+    pt.period = z[n];
+    pt.parameter = z[n + 1];
+    pt.dp_ds = tangent[n + 1];
+    shooting::Floquet f = shooting::floquet(monodromy);
+    pt.multipliers = std::move(f.multipliers);
+    pt.trivial = f.trivial;
+    pt.trivial_error = f.trivial_error;
+    pt.stable = f.stable;
+    for (std::size_t i = 0; i < pt.multipliers.size(); ++i)
+      if (static_cast<int>(i) != pt.trivial)
+        pt.largest = std::max(pt.largest, std::abs(pt.multipliers[i]));
+    const io::Scene at = shooter.sceneAt(pt.parameter);
+    const shooting::Flow flow(at.model, coords);
+    const auto b = static_cast<std::size_t>(body);
+    std::vector<double>& x = pt.x;
+    pt.t.push_back(0.0);
+    x.push_back(coords.fromVector(pt.start).bodies[b].position[axis]);
+    // The slip speed as the run summary takes it: the largest over the body's contact points,
+    // counted where the body touches (normal force > 0); each sample weighs its step.
+    double t_prev = 0.0, dt = 0.0, stuck = 0.0, touching = 0.0, min_slip = INFINITY;
+    flow(
+        pt.start, pt.period,
+        [&](double t, const State& s) {
+          pt.t.push_back(t);
+          x.push_back(s.bodies[b].position[axis]);
+          dt = t - t_prev;
+          t_prev = t;
+        },
+        [&](const Workspace& ws) {
+          double slip = 0.0, normal = 0.0;
+          for (const auto& c : ws.contacts) {
+            const ContactPair pair = at.model->contactPair(c.point.pair);
+            if (at.model->geometries[pair.geometry_a].body.value != body &&
+                at.model->geometries[pair.geometry_b].body.value != body)
+              continue;
+            slip = std::max(slip, c.slip.stableNorm());
+            normal += c.normal_force;
+          }
+          if (!(normal > 0.0)) return;
+          touching += dt;
+          min_slip = std::min(min_slip, slip);
+          if (slip < stick_speed) stuck += dt;
+        });
+    if (touching > 0.0) {
+      pt.min_slip = min_slip;
+      pt.stick_fraction = stuck / pt.period;
+    }
+    pt.x_max = *std::max_element(x.begin(), x.end());
+    pt.x_min = shooting::refinedMinimum(x);
+    pt.amplitude_pp = pt.x_max - pt.x_min;
+    return pt;
+  };
+
+  // The first point: the orbit found, its Jacobian with the parameter's column for the tangent.
+  Eigen::VectorXd z(n + 2);
+  z << orbit.start, orbit.period, spec.from;
+  Eigen::VectorXd F;
+  Eigen::MatrixXd A, monodromy;
+  shooter.evaluate(z, F, A, monodromy);
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(n + 2);
+  along[n + 1] = direction;
+  Eigen::VectorXd tangent = unitTangent(A, along);
+  {
+    BranchPoint pt = makePoint(z, monodromy, tangent);
+    pt.iterations = orbit.iterations;
+    pt.residual = F.norm() / (1.0 + orbit.start.norm());
+    r.points.push_back(std::move(pt));
+    if (progress) progress(r.points.back(), 0);
+  }
+
+  Eigen::VectorXd d = tangent;  // the predictor's direction: the tangent, then the secant
+  double ds = step;
+  while (true) {
+    if (static_cast<int>(r.points.size()) >= spec.max_points) {
+      r.stop_reason = "the largest number of points (" + std::to_string(spec.max_points) +
+                      ") was reached before " + number(spec.to);
+      break;
+    }
+    const Eigen::VectorXd z_pred = z + ds * d;
+    Correction c = correct(shooter, z_pred, d, ds, spec.max_corrector, spec.orbit.tolerance);
+    Eigen::VectorXd t;
+    BranchPoint pt;
+    if (c.ok) {
+      t = unitTangent(c.A, tangent);
+      pt = makePoint(c.z, c.monodromy, t);
+      // An equilibrium closes on itself for any T: a branch whose orbit shrinks to nothing
+      // has left the orbits (steady sliding or sticking), not found one.
+      if (!(pt.amplitude_pp > kCollapsed * r.points.front().amplitude_pp)) {
+        c.ok = false;
+        c.why = "the orbit collapsed onto an equilibrium at " + spec.parameter + " = " +
+                number(pt.parameter) + " (amplitude " + number(pt.amplitude_pp) + ")";
+      }
+    }
+    if (!c.ok) {
+      ds /= 2;
+      if (ds < min_step) {
+        r.lost = true;
+        r.stop_reason = "the branch was lost after " + spec.parameter + " = " + number(z[n + 1]) +
+                        ": the corrector failed with the step at its " + "smallest (" +
+                        number(2 * ds) + "): " + c.why;
+        break;
+      }
+      continue;
+    }
+    pt.iterations = c.iterations;
+    pt.residual = c.residual;
+    pt.step = ds;
+    pt.arclength = r.points.back().arclength + (c.z - z).norm();
+    const double p = pt.parameter;
+    r.points.push_back(std::move(pt));
+    if (progress) progress(r.points.back(), r.points.size() - 1);
+    d = (c.z - z).normalized();
+    z = c.z;
+    tangent = t;
+    if ((p - spec.to) * direction >= 0.0) {
+      r.reached_end = true;
+      r.stop_reason = "reached " + spec.parameter + " = " + number(spec.to);
+      break;
+    }
+    if ((p - spec.from) * direction < 0.0) {
+      r.stop_reason = "the branch turned back past the start value " + number(spec.from);
+      break;
+    }
+    const std::vector<BranchEvent> events = detectBranchEvents(r.points, stick_speed);
+    if (!events.empty() && events.back().kind == BranchEventKind::kHopf &&
+        events.back().after + 1 == r.points.size()) {
+      r.stop_reason = "the orbit shrank onto the steady state at a Hopf point, " + spec.parameter +
+                      " ~ " + number(events.back().parameter) +
+                      " (past it the branch retraces itself)";
+      break;
+    }
+    if (c.iterations <= 2) ds = std::min(1.5 * ds, max_step);
+  }
+  r.events = detectBranchEvents(r.points, r.stick_speed);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+  return r;
+}
+
+std::string branchCsvText(const BranchResult& r) {
+  std::string csv =
+      "index,parameter,period,amplitude_pp,largest_multiplier,stable,stick_fraction,min_slip,"
+      "x_min,x_max,dp_ds,arclength,iterations,residual,trivial_error,event\n";
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const BranchPoint& p = r.points[i];
+    std::string events;
+    for (const BranchEvent& e : r.events)
+      if (e.after == i) {
+        if (!events.empty()) events += ';';
+        events += branchEventName(e.kind);
+      }
+    csv += std::to_string(i) + "," + csvNumber(p.parameter, 17) + "," + csvNumber(p.period, 17) +
+           "," + csvNumber(p.amplitude_pp, 17) + "," + csvNumber(p.largest, 17) + "," +
+           (p.stable ? "1" : "0") + "," + csvNumber(p.stick_fraction, 6) + "," +
+           csvNumber(p.min_slip, 6) + "," + csvNumber(p.x_min, 17) + "," + csvNumber(p.x_max, 17) +
+           "," + csvNumber(p.dp_ds, 17) + "," + csvNumber(p.arclength, 17) + "," +
+           std::to_string(p.iterations) + "," + csvNumber(p.residual, 6) + "," +
+           csvNumber(p.trivial_error, 6) + "," + events + "\n";
+  }
+  return csv;
+}
+
+std::string branchOrbitsCsvText(const BranchResult& r) {
+  std::string csv = "point,t," + r.observed + "\n";
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const BranchPoint& p = r.points[i];
+    for (std::size_t k = 0; k < p.t.size(); ++k)
+      csv += std::to_string(i) + "," + csvNumber(p.t[k], 17) + "," + csvNumber(p.x[k], 17) + "\n";
+  }
+  return csv;
+}
+
+std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec,
+                           const BranchResult& r) {
+  nlohmann::ordered_json j;
+  j["scene"] = scene_path;
+  j["parameter"] = spec.parameter;
+  j["from"] = spec.from;
+  j["to"] = spec.to;
+  j["observed"] = r.observed;
+  j["status"] = r.reached_end ? "reached_end" : r.lost ? "lost" : "stopped";
+  j["stop_reason"] = r.stop_reason;
+  j["stick_speed"] = r.stick_speed;
+  j["points"] = r.points.size();
+  nlohmann::ordered_json events = nlohmann::ordered_json::array();
+  for (const BranchEvent& e : r.events)
+    events.push_back({{"kind", branchEventName(e.kind)},
+                      {"parameter", e.parameter},
+                      {"between", {e.before, e.after}},
+                      {"located", "interpolated between the two points"}});
+  j["events"] = events;
+  nlohmann::ordered_json pts = nlohmann::ordered_json::array();
+  for (const BranchPoint& p : r.points) {
+    nlohmann::ordered_json mu = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < p.multipliers.size(); ++i)
+      if (static_cast<int>(i) != p.trivial)
+        mu.push_back({{"re", p.multipliers[i].real()}, {"im", p.multipliers[i].imag()}});
+    pts.push_back({{"parameter", p.parameter},
+                   {"period", p.period},
+                   {"amplitude_pp", p.amplitude_pp},
+                   {"stable", p.stable},
+                   {"stick_fraction", std::isfinite(p.stick_fraction)
+                                          ? nlohmann::ordered_json(p.stick_fraction)
+                                          : nlohmann::ordered_json()},
+                   {"min_slip", std::isfinite(p.min_slip) ? nlohmann::ordered_json(p.min_slip)
+                                                          : nlohmann::ordered_json()},
+                   {"trivial_multiplier_error", p.trivial_error},
+                   {"multipliers", mu}});
+  }
+  j["branch"] = pts;
+  j["settings"] = {{"max_points", spec.max_points},     {"step", spec.step},
+                   {"min_step", spec.min_step},         {"max_step", spec.max_step},
+                   {"tolerance", spec.orbit.tolerance}, {"fd_step", spec.orbit.fd_step}};
+  j["seconds"] = r.seconds;
+  return j.dump(2);
+}
+
+}  // namespace tribo::study

@@ -1,0 +1,131 @@
+// A branch of periodic orbits followed in one scene parameter (a `parameters:` entry): how
+// the stick-slip cycle's period, amplitude and stability change with, say, the belt speed,
+// and where along the branch it folds, doubles its period or loses stability. Pseudo-
+// arclength continuation (Keller 1977; Seydel, "Practical Bifurcation and Stability
+// Analysis", 3rd ed., Springer 2010, ch. 4; Allgower & Georg, "Introduction to Numerical
+// Continuation Methods", SIAM 2003, ch. 2) on the unknowns z = (y0, T, p), y0 the state on
+// the orbit (study/orbit/orbit_coordinates.hpp), T the period, p the parameter:
+//   phi_T(y0; p) - y0           = 0   the orbit closes (the scene's own integrator, reloaded
+//                                     at p)
+//   v_obs(y0)                   = 0   phase: it starts where the observed coordinate peaks
+//   d_k . (z - z_k - ds d_k)    = 0   arclength: the correction is normal to the prediction
+// Predictor: z_k + ds d_k, d_k the unit secant (z_k - z_{k-1}) / |z_k - z_{k-1}| (at the first
+// point the unit tangent, the null vector of the Jacobian of the first two rows). Corrector:
+// Newton's method on the three rows with the Jacobian from central differences of the flow:
+// the y0 and T columns as in periodic_orbit.cpp, the p column from the scene reloaded at
+// p +- dp (io::SceneDocument re-reads the overrides without parsing the YAML again). Step
+// control: ds grows by 1.5 after a corrector that converged in at most 2 iterations, halves
+// after one that failed (no convergence, a failed step, a correction longer than ds, an orbit
+// collapsed onto an equilibrium: amplitude below 1e-6 of the first point's, which closes on
+// itself for any T); the branch stops below the smallest step, naming why. The arclength
+// is measured in the unknowns' own SI units, unscaled.
+// At each point: the period, the observed coordinate's peak-to-peak amplitude, the Floquet
+// multipliers (study/orbit/shooting.hpp), the unit tangent's parameter component dp/ds, and
+// the observed body's smallest slip speed on the orbit and the fraction of the period it
+// spends below the summary's stick speed. Between consecutive points (detectBranchEvents):
+// - fold: dp/ds changes sign; located where the linear interpolation of dp/ds in s
+//   vanishes, the vertex of the parabola p(s) it integrates to;
+// - Hopf point: such a turn where the amplitude has a minimum below 0.2 of the branch's
+//   largest (the orbit shrinks onto the steady state, and the phase condition meets it again
+//   from its minimum: p - p_H ~ eps^2 turns there too); the branch stops there;
+// - period doubling: the number of real multipliers below -1 changes;
+// - torus (Neimark-Sacker): the number of complex multipliers outside the unit circle changes;
+// - stability change otherwise (a real multiplier through +1, as at a fold);
+// - grazing: the smallest slip speed crosses the stick speed (sticking begins or ends).
+// Period doubling, torus and stability change are located by linear interpolation in p of the
+// crossing multipliers' modulus to 1, grazing of the smallest slip speed to the stick speed.
+// Located values are interpolations between two points, not solved for.
+// Not here: branch switching at a period doubling, a start from a Hopf point of
+// `tribo modes`, the steady sliding branch beside it, scaled arclength norms, matrix-free
+// solves for large states, keeping the branch on Ctrl-C.
+#pragma once
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "study/orbit/periodic_orbit.hpp"
+
+namespace tribo::study {
+
+struct BranchSpec {
+  std::string parameter;    // a name in the scene's parameters: section
+  double from = 0, to = 0;  // the branch starts at `from` and runs towards `to`
+  int max_points = 20;      // points at most, the start included
+  double step = 0;          // first arclength step; 0: |to - from| / 10
+  double min_step = 0;      // the branch stops below this step; 0: step / 64
+  double max_step = 0;      // 0: 4 step
+  int max_corrector = 6;    // Newton iterations per point at most
+  double fd_parameter = 0;  // dp of the p column; 0: orbit.fd_step max(|p|, |to - from|)
+  OrbitSpec orbit;          // the first orbit (settle), tolerance, fd_step, threads
+};
+
+struct BranchPoint {
+  double parameter = 0, period = 0;
+  double amplitude_pp = 0, x_min = 0, x_max = 0;  // of the observed coordinate
+  std::vector<std::complex<double>> multipliers;  // by decreasing modulus
+  int trivial = -1;                               // the one nearest 1
+  double trivial_error = 0;
+  double largest = 0;  // modulus of the largest non-trivial multiplier
+  bool stable = false;
+  // The observed body's slip speed over the orbit where it touches (the largest over its
+  // contact points, as the run summary takes it): its minimum, and the fraction of the period
+  // spent below the summary's stick speed; NaN when it never touches.
+  double min_slip = NAN, stick_fraction = NAN;
+  double dp_ds = 0;          // the unit tangent's parameter component
+  double arclength = 0;      // s from the branch's start
+  int iterations = 0;        // the corrector's
+  double residual = 0;       // |F| / (1 + |y0|) of the closing and phase rows
+  double step = 0;           // the step ds that reached this point (0 for the first)
+  Eigen::VectorXd start;     // y0
+  std::vector<double> t, x;  // the observed coordinate over one period, per step, from y0
+};
+
+enum class BranchEventKind { kFold, kPeriodDoubling, kTorus, kStabilityChange, kGrazing, kHopf };
+std::string branchEventName(BranchEventKind kind);  // "fold", "period_doubling", ...
+
+struct BranchEvent {
+  BranchEventKind kind{};
+  std::size_t before = 0, after = 0;  // the points it lies between
+  double parameter = 0;               // where, interpolated
+};
+
+struct BranchResult {
+  std::string observed;  // "box.x"
+  std::vector<BranchPoint> points;
+  std::vector<BranchEvent> events;
+  double stick_speed = 0;    // the scene's output.summary.stick_speed, for grazing
+  bool reached_end = false;  // a point at or past `to`
+  bool lost = false;         // stopped by the corrector failing at the smallest step
+  std::string stop_reason;
+  double seconds = 0;
+};
+
+// The branch from the orbit findPeriodicOrbit finds at `from` (scene `path` loaded with
+// `overrides` and then parameter=value). `progress(point, index)` after each point if given.
+// Throws io::SceneError for an unreadable scene or an unknown or non-numeric parameter (before
+// any work), OrbitError when there is no orbit at `from` (or only the equilibrium a damped
+// settling run decays to); a branch lost later returns the
+// points found so far with stop_reason saying why.
+BranchResult continueOrbit(
+    const std::string& path, const std::vector<std::string>& overrides, const BranchSpec& spec,
+    const std::function<void(const BranchPoint&, std::size_t)>& progress = {});
+
+// The events between consecutive points (points need parameter, arclength, dp_ds,
+// multipliers, trivial, stable and, for grazing, min_slip; stick_speed 0: no grazing).
+std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& points,
+                                            double stick_speed = 0);
+
+// branch.csv: one row per point (columns in docs/orbits.md); branch.json: the spec, the
+// events, the stop reason; branch_orbits.csv: each point's sampled orbit (point, t and the
+// observed coordinate), for replay and plots.
+std::string branchCsvText(const BranchResult& r);
+std::string branchOrbitsCsvText(const BranchResult& r);
+std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec,
+                           const BranchResult& r);
+
+}  // namespace tribo::study

@@ -1,0 +1,195 @@
+#include "study/orbit/shooting.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <optional>
+#include <thread>
+
+#include "core/simulator.hpp"
+#include "core/thread_count.hpp"
+#include "study/orbit/periodic_orbit.hpp"
+
+namespace tribo::study::shooting {
+
+namespace {
+
+// Why the scene's motion depends on the time itself (so its orbits are forced ones), or empty.
+std::string nonAutonomous(const Model& m) {
+  if (!m.loads.empty()) return "it has applied loads";
+  for (const Body& b : m.bodies) {
+    if (b.kind == BodyKind::kKinematic &&
+        (b.velocity.norm() > 0.0 || b.angular_velocity.norm() > 0.0))
+      return "kinematic body '" + b.name + "' moves";
+    if (b.surface_velocity_signal) return "body '" + b.name + "' has a surface velocity signal";
+  }
+  for (const Joint& j : m.joints) {
+    if (j.elements.drive) return "joint '" + j.name + "' is driven";
+    if (j.elements.actuator) return "joint '" + j.name + "' has an actuator";
+  }
+  return "";
+}
+
+void check(const StepStatus& s, double T) {
+  if (!s.ok)
+    throw OrbitError("a step of the shooting flow (period " + std::to_string(T) +
+                     " s) failed: " + s.message);
+}
+
+}  // namespace
+
+int shootableBody(const io::Scene& scene) {
+  const Model& model = *scene.model;
+  const io::SummarySpec& watched = scene.output.summary;
+  if (watched.body.empty() || !watched.channel.empty())
+    throw OrbitError(
+        "the scene's summary observes no body coordinate (output.summary.body and "
+        "coordinate): the orbit's phase is taken where that coordinate peaks");
+  const auto body_it = std::find_if(model.bodies.begin(), model.bodies.end(),
+                                    [&](const Body& b) { return b.name == watched.body; });
+  if (body_it == model.bodies.end() || body_it->kind != BodyKind::kDynamic)
+    throw OrbitError("the observed body '" + watched.body + "' is not a dynamic body");
+  if (const std::string why = nonAutonomous(model); !why.empty())
+    throw OrbitError("the scene is not autonomous (" + why +
+                     "): its orbits are forced, with the forcing's period, which shooting for a "
+                     "free period does not handle");
+  const IntegratorType integrator = model.options.integrator;
+  if (integrator != IntegratorType::kRk4 && integrator != IntegratorType::kSemiImplicitEuler)
+    throw OrbitError("shooting needs a fixed-step integrator (rk4 or semi_implicit_euler), not " +
+                     integratorName(integrator));
+  return static_cast<int>(body_it - model.bodies.begin());
+}
+
+Flow::Flow(std::shared_ptr<const Model> model, const OrbitCoordinates& coords)
+    : model_(std::move(model)), coords_(coords), h_(model_->options.time_step) {}
+
+Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
+                                 const std::function<void(double, const State&)>& sample,
+                                 const std::function<void(const Workspace&)>& contacts) const {
+  long n = static_cast<long>(std::floor(T / h_));
+  double rest = T - static_cast<double>(n) * h_;
+  if (rest > h_ * (1 - 1e-9)) ++n, rest = 0.0;
+  if (rest < h_ * 1e-9) rest = 0.0;
+  Simulator sim(model_);
+  State start = coords_.fromVector(y);
+  const double t0 = start.time;
+  sim.setState(start);
+  for (long i = 0; i < n; ++i) {
+    check(sim.step(), T);
+    if (sample) sample(sim.state().time - t0, sim.state());
+    if (contacts) contacts(sim.current());
+  }
+  State end = sim.state();
+  if (rest > 0.0) {
+    auto last = std::make_shared<Model>(*model_);
+    last->options.time_step = rest;
+    Simulator tail(last);
+    tail.setState(end);
+    check(tail.step(), T);
+    end = tail.state();
+    if (sample) sample(T, end);
+    if (contacts) contacts(tail.current());
+  }
+  return coords_.toVector(end);
+}
+
+Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds) {
+  Simulator sim(model);
+  const auto b = static_cast<std::size_t>(body);
+  std::vector<double> crossings;
+  std::optional<State> last_state;
+  double prev_v = sim.state().bodies[b].velocity[axis];
+  double lo = 1e300, hi = -1e300, lo_prev = 1e300, hi_prev = -1e300;
+  const double h = model->options.time_step;
+  const long steps = static_cast<long>(std::ceil(seconds / h));
+  for (long i = 0; i < steps; ++i) {
+    const double t_prev = sim.state().time;
+    const StepStatus s = sim.step();
+    if (!s.ok) throw OrbitError("the settling run failed: " + s.message);
+    const BodyState& now = sim.state().bodies[b];
+    const double v = now.velocity[axis];
+    lo = std::min(lo, now.position[axis]);
+    hi = std::max(hi, now.position[axis]);
+    if (prev_v > 0.0 && v <= 0.0) {
+      crossings.push_back(t_prev + (sim.state().time - t_prev) * prev_v / (prev_v - v));
+      last_state = sim.state();
+      lo_prev = lo, hi_prev = hi;
+      lo = 1e300, hi = -1e300;
+    }
+    prev_v = v;
+  }
+  if (crossings.size() < 3)
+    throw OrbitError("the observed coordinate has " + std::to_string(crossings.size()) +
+                     " maxima in the settling run of " + std::to_string(seconds) +
+                     " s, fewer than 3: no oscillation to shoot for (steady sliding is stable "
+                     "here, or give a longer --settle)");
+  Guess g;
+  g.state = *last_state;
+  g.period = crossings.back() - crossings[crossings.size() - 2];
+  g.amplitude_pp = hi_prev - lo_prev;
+  return g;
+}
+
+Eigen::VectorXd fdFloor(const Eigen::VectorXd& y, std::size_t friction_count) {
+  const Eigen::Index n = y.size();
+  Eigen::VectorXd floor = Eigen::VectorXd::Constant(n, 1e-2);
+  const Eigen::Index bodies_end = n - static_cast<Eigen::Index>(friction_count);
+  if (bodies_end < n)
+    floor.tail(n - bodies_end)
+        .setConstant(std::max(1e-12, y.tail(n - bodies_end).cwiseAbs().maxCoeff()));
+  return floor;
+}
+
+void parallelColumns(Eigen::Index count, unsigned threads,
+                     const std::function<void(Eigen::Index)>& column) {
+  threads = std::max(1u, threads);
+  std::vector<std::thread> pool;
+  std::vector<std::exception_ptr> errors(threads);
+  for (unsigned w = 1; w < threads; ++w)
+    pool.emplace_back([&, w] {
+      const ScopedThreadLimit one_each(1);  // the columns share the cores
+      try {
+        for (Eigen::Index j = w; j < count; j += threads) column(j);
+      } catch (...) {
+        errors[w] = std::current_exception();
+      }
+    });
+  try {
+    const ScopedThreadLimit one_each(threads > 1 ? 1 : 0);
+    for (Eigen::Index j = 0; j < count; j += threads) column(j);
+  } catch (...) {
+    errors[0] = std::current_exception();
+  }
+  for (auto& t : pool) t.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+Floquet floquet(const Eigen::MatrixXd& monodromy) {
+  Floquet f;
+  Eigen::EigenSolver<Eigen::MatrixXd> eig(monodromy, false);
+  for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i)
+    f.multipliers.push_back(eig.eigenvalues()[i]);
+  std::sort(f.multipliers.begin(), f.multipliers.end(),
+            [](auto a, auto b) { return std::abs(a) > std::abs(b); });
+  double nearest = 1e300;
+  for (std::size_t i = 0; i < f.multipliers.size(); ++i)
+    if (std::abs(f.multipliers[i] - 1.0) < nearest)
+      nearest = std::abs(f.multipliers[i] - 1.0), f.trivial = static_cast<int>(i);
+  f.trivial_error = nearest;
+  f.stable = true;
+  for (std::size_t i = 0; i < f.multipliers.size(); ++i)
+    if (static_cast<int>(i) != f.trivial && std::abs(f.multipliers[i]) >= 1.0) f.stable = false;
+  return f;
+}
+
+double refinedMinimum(const std::vector<double>& x) {
+  const auto it = std::min_element(x.begin(), x.end());
+  const auto i = static_cast<std::size_t>(it - x.begin());
+  if (i == 0 || i + 1 >= x.size()) return *it;
+  const double a = x[i - 1], b = x[i], c = x[i + 1], d = a - 2 * b + c;
+  if (d <= 0.0) return b;
+  return b - (a - c) * (a - c) / (8.0 * d);
+}
+
+}  // namespace tribo::study::shooting

@@ -1,0 +1,78 @@
+// The pieces a shooting method for periodic orbits is made of, shared by the single orbit
+// (study/orbit/periodic_orbit.hpp) and its continuation in a parameter
+// (study/orbit/orbit_branch.hpp); internal to study/orbit/. The flow phi_T(y) of the scene's
+// own fixed-step integrator (the last step shortened so that it ends at T exactly), the
+// checks that a scene can be shot (autonomous, fixed step, an observed body coordinate), the
+// first guess from a settled run, the finite-difference steps of the Jacobian's columns and
+// their spread over threads, and the Floquet multipliers of a monodromy matrix (Seydel,
+// "Practical Bifurcation and Stability Analysis", 3rd ed., Springer 2010, sec. 7.3-7.4).
+// Not here: Newton's iteration, which each caller sets up on its own unknowns.
+#pragma once
+
+#include <Eigen/Dense>
+#include <complex>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/model.hpp"
+#include "core/state.hpp"
+#include "core/workspace.hpp"
+#include "io/scene_loader.hpp"
+#include "study/orbit/orbit_coordinates.hpp"
+
+namespace tribo::study::shooting {
+
+// The observed body's index in the model after checking that `scene` can be shot: its
+// summary observes a dynamic body's coordinate, it is autonomous, its integrator has a fixed
+// step. Throws OrbitError naming what is missing.
+int shootableBody(const io::Scene& scene);
+
+// The flow of the scene's integrator: from y over T, with the last step shortened.
+class Flow {
+ public:
+  Flow(std::shared_ptr<const Model> model, const OrbitCoordinates& coords);
+  // y at T; `sample(t, state)` after each step if given, then `contacts(workspace)` with the
+  // forces and contacts evaluated at that state if given. Throws OrbitError for a failed step.
+  Eigen::VectorXd operator()(const Eigen::VectorXd& y, double T,
+                             const std::function<void(double, const State&)>& sample = {},
+                             const std::function<void(const Workspace&)>& contacts = {}) const;
+
+ private:
+  std::shared_ptr<const Model> model_;
+  const OrbitCoordinates& coords_;
+  double h_;
+};
+
+// The last two maxima of the observed coordinate in a run of `seconds`: the state at the
+// last one and the time between them (linear in the velocity's zero crossing).
+struct Guess {
+  State state;
+  double period = 0, amplitude_pp = 0;
+};
+Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds);
+
+// The floor of each unknown's finite-difference scale: 1 cm, 1 cm/s and 10 mrad for bodies;
+// the largest friction state (of y) for the `friction_count` last entries.
+Eigen::VectorXd fdFloor(const Eigen::VectorXd& y, std::size_t friction_count);
+
+// Calls column(j) for j = 0..count-1, spread over `threads` threads (each one core); rethrows
+// the first exception a column threw.
+void parallelColumns(Eigen::Index count, unsigned threads,
+                     const std::function<void(Eigen::Index)>& column);
+
+// The multipliers of a monodromy matrix by decreasing modulus, the trivial one (nearest 1)
+// and its distance from 1, and stability (every other one inside the unit circle).
+struct Floquet {
+  std::vector<std::complex<double>> multipliers;
+  int trivial = -1;
+  double trivial_error = 0;
+  bool stable = false;
+};
+Floquet floquet(const Eigen::MatrixXd& monodromy);
+
+// The smallest value of x by a parabola through the smallest sample and its neighbours.
+double refinedMinimum(const std::vector<double>& x);
+
+}  // namespace tribo::study::shooting
