@@ -80,6 +80,7 @@ plot '$work/presliding_drift/trajectory.csv' every ::1 using 1:(1e6*\$$(col pres
 set title 'velocity_steps: rate-and-state, speed 1e-5 -> 1e-4 -> 1e-5 m/s'
 set ylabel 'mu = friction / normal force'
 set y2label 'speed [mm/s]'
+set y2range [0:0.2]
 set y2tics
 set ytics nomirror
 plot '$work/velocity_steps/trajectory.csv' every ::1 using 1:(\$$(col velocity_steps block.friction_force)/\$$(col velocity_steps block.normal_force)) with lines lw 2 title 'aging law', \
