@@ -22,6 +22,7 @@
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/contact_coefficient.hpp"
 
 namespace tribo {
 namespace {
@@ -40,15 +41,7 @@ double psiAt(double t, double v1, double v2, bool aging) {
   return std::log(kV0 / v2) + (std::log(kV0 / v1) - std::log(kV0 / v2)) * decay;
 }
 
-// The coefficient of the block's contacts: sum of |F_t| over sum of F_n.
-double engineMu(Simulator& sim) {
-  double ft = 0, fn = 0;
-  for (const contact::ContactRecord& c : sim.current().contacts) {
-    ft += c.friction_force.norm();
-    fn += c.normal_force;
-  }
-  return ft / fn;
-}
+double engineMu(Simulator& sim) { return test::contactCoefficient(sim); }
 
 void checkStep(double v1, double v2, const char* evolution) {
   const bool aging = std::string(evolution) == "aging";

@@ -23,6 +23,7 @@
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/contact_coefficient.hpp"
 
 namespace tribo {
 namespace {
@@ -55,15 +56,7 @@ double muOf(double v, double psi) {
   return kA * std::asinh(v / (2 * kV0) * std::exp((kMu0 + kB * psi) / kA));
 }
 
-// The coefficient of the block's contacts: sum of |F_t| over sum of F_n.
-double engineMu(Simulator& sim) {
-  double ft = 0, fn = 0;
-  for (const contact::ContactRecord& c : sim.current().contacts) {
-    ft += c.friction_force.norm();
-    fn += c.normal_force;
-  }
-  return ft / fn;
-}
+double engineMu(Simulator& sim) { return test::contactCoefficient(sim); }
 
 void checkSteps(const char* evolution) {
   const bool aging = std::string(evolution) == "aging";
