@@ -2,16 +2,17 @@
 //
 // A dynamic body obeys Newton-Euler: m a = F, I_W dw/dt = T - w x I_W w (I_W = R I_B R^T,
 // inertia about the centre of mass, which is the body origin). A kinematic body moves with
-// a prescribed constant velocity, whatever acts on it. Either may carry a surface velocity
+// a prescribed velocity, whatever acts on it: constant, or varying in time along signals
+// (core/prescribed_motion.hpp). Either may carry a surface velocity
 // (body frame): its surface slides past contacts while its geometry stays put (a belt),
 // constant or, with a signal per component (core/signal.hpp), varying in time (a belt whose
 // speed is modulated: Popp & Stelter 1990's road to period doubling).
-// Not here: state (core/state.hpp), geometry (Model::geometries), kinematic bodies whose
-// velocity varies in time.
+// Not here: state (core/state.hpp), geometry (Model::geometries).
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -31,6 +32,8 @@ struct BodyIndex {
 
 enum class BodyKind { kDynamic, kKinematic };
 
+struct PrescribedMotion;  // core/prescribed_motion.hpp
+
 struct Body {
   std::string name;
   BodyKind kind = BodyKind::kDynamic;
@@ -44,6 +47,9 @@ struct Body {
   // When set, the surface velocity at time t is (s_x(t), s_y(t), s_z(t)); surface_velocity
   // then holds its value at t = 0.
   std::optional<std::array<Signal, 3>> surface_velocity_signal = std::nullopt;
+  // Kinematic bodies only: when set, the pose and velocity at time t follow signals;
+  // position, orientation, velocity and angular_velocity then hold their values at t = 0.
+  std::shared_ptr<const PrescribedMotion> motion = nullptr;
 
   Vec3 surfaceVelocityAt(double t) const {
     if (!surface_velocity_signal) return surface_velocity;

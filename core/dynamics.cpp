@@ -5,6 +5,7 @@
 
 #include "contact/parallel_range.hpp"
 #include "core/model_detector.hpp"
+#include "core/prescribed_motion.hpp"
 
 namespace tribo {
 
@@ -320,8 +321,13 @@ void Dynamics::unconstrainedAccelerations(const State& state) {
   parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Body& body = m.bodies[b];
     if (body.kind != BodyKind::kDynamic) {
-      ws_.linear_acceleration[b].setZero();
-      ws_.angular_acceleration[b].setZero();
+      if (body.motion) {  // core/prescribed_motion.hpp: the signals' derivatives
+        ws_.linear_acceleration[b] = body.motion->linearAcceleration(state.time);
+        ws_.angular_acceleration[b] = body.motion->angularAcceleration(state.time);
+      } else {
+        ws_.linear_acceleration[b].setZero();
+        ws_.angular_acceleration[b].setZero();
+      }
       return;
     }
     const BodyState& s = state.bodies[b];

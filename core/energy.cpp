@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/prescribed_motion.hpp"
+
 namespace tribo {
 
 namespace {
@@ -86,6 +88,10 @@ EnergyGuard::EnergyGuard(const Model& model, double modified_step)
     if (b.kind == BodyKind::kKinematic) {
       speed = std::max({speed, b.velocity.norm(), b.surfaceSpeedBound(model.options.duration)});
       spin = std::max(spin, b.angular_velocity.norm());
+      if (b.motion) {  // along signals: their largest over the run
+        speed = std::max(speed, b.motion->speedBound(model.options.duration));
+        spin = std::max(spin, b.motion->spinBound(model.options.duration));
+      }
     } else {
       speed = std::max(speed, b.surfaceSpeedBound(model.options.duration));
     }
@@ -111,7 +117,9 @@ EnergyGuard::EnergyGuard(const Model& model, double modified_step)
     double reach = 0.0;
     for (const Body& k : model.bodies)
       if (k.kind == BodyKind::kKinematic)
-        reach = std::max(reach, k.angular_velocity.norm() * (body.position - k.position).norm());
+        reach = std::max(reach, (k.motion ? k.motion->spinBound(model.options.duration)
+                                          : k.angular_velocity.norm()) *
+                                    (body.position - k.position).norm());
     const double v = speed + reach;
     floor_ += body.mass * (g * size[b] + 0.5 * v * v) +
               0.5 * body.inertia.diagonal().maxCoeff() * spin * spin;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/prescribed_motion.hpp"
+
 namespace tribo {
 
 std::vector<double> inputBreakpoints(const Model& model) {
@@ -18,9 +20,14 @@ std::vector<double> inputBreakpoints(const Model& model) {
     if (joint.elements.actuator) add(joint.elements.actuator->target);
     if (joint.elements.drive && joint.elements.drive->signal) add(*joint.elements.drive->signal);
   }
-  for (const Body& body : model.bodies)
+  for (const Body& body : model.bodies) {
     if (body.surface_velocity_signal)
       for (const Signal& s : *body.surface_velocity_signal) add(s);
+    if (body.motion) {
+      for (const Signal& s : body.motion->velocity) add(s);
+      add(body.motion->spin_rate);
+    }
+  }
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   return times;

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "core/prescribed_motion.hpp"
 #include "core/sundials_integrators.hpp"
 
 namespace tribo {
@@ -39,7 +40,12 @@ class RungeKutta4 final : public Integrator {
     static constexpr double kWeight[4] = {1.0 / 6.0, 2.0 / 6.0, 2.0 / 6.0, 1.0 / 6.0};
     stage_ = state;
     for (int k = 0; k < 4; ++k) {
-      if (k > 0) makeStage(state, rates_[k - 1], z_rates_[k - 1], kStageTime[k] * h);
+      if (k > 0) {
+        makeStage(state, rates_[k - 1], z_rates_[k - 1], kStageTime[k] * h);
+        // Kinematic bodies along signals at the stage's time exactly, not to the stage's
+        // order (their velocity's curvature would err by h^2 v'' / 8 in the slip).
+        placePrescribedBodies(dynamics.model().bodies, stage_);
+      }
       const State& at = k == 0 ? state : stage_;
       const bool reuse = k == 0 && start_is_evaluated;
       if (!reuse) ++counters_.evaluations;

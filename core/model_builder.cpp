@@ -10,6 +10,7 @@
 
 #include "core/constraint_rows.hpp"
 #include "core/number_text.hpp"
+#include "core/prescribed_motion.hpp"
 
 namespace tribo {
 
@@ -72,6 +73,19 @@ BodyIndex ModelBuilder::addBody(const Body& body) {
     throw ModelError(who + ": " + e);
   Body b = body;
   b.orientation.normalize();
+  if (b.motion) {  // core/prescribed_motion.hpp
+    if (b.kind != BodyKind::kKinematic)
+      throw ModelError(who +
+                       ": a velocity along signals is for kinematic bodies (a dynamic "
+                       "body's velocity is an initial value; apply a load to drive it)");
+    const Vec3& e = b.motion->spin_axis;
+    if (!finite(e) || std::abs(e.norm() - 1.0) > 1e-12)
+      throw ModelError(who + ": the turning axis must be a unit vector (got " +
+                       numberText(e.norm()) + " long)");
+    const BodyState at0 = b.motion->at(b, 0.0);  // the values at t = 0 the body reports
+    b.velocity = at0.velocity;
+    b.angular_velocity = at0.angular_velocity;
+  }
   model_.bodies.push_back(b);
   body_index_[b.name] = static_cast<int>(model_.bodies.size()) - 1;
   return BodyIndex{static_cast<int>(model_.bodies.size()) - 1};
@@ -318,6 +332,17 @@ std::shared_ptr<const Model> ModelBuilder::build() const {
   for (const Joint& j : model->joints)
     if (j.elements.drive && j.elements.drive->signal)
       j.elements.drive->signal->reserveIntegral(o.duration);
+  // Kinematic bodies along signals: their integrals likewise; a joint to one is refused, as
+  // the constraint rows carry only dynamic bodies' accelerations (core/prescribed_motion.hpp).
+  for (const Body& b : model->bodies)
+    if (b.motion) b.motion->reserveIntegrals(o.duration);
+  for (const Joint& j : model->joints)
+    for (BodyIndex end : {j.parent, j.child})
+      if (!end.isWorld() && model->bodies[end.value].motion)
+        throw ModelError("joint '" + j.name + "': body '" + model->bodies[end.value].name +
+                         "' moves along signals, and a joint cannot follow its acceleration; "
+                         "attach with a spring or bushing, or make it a dynamic body on a "
+                         "driven joint");
   model->constraint_equations = static_cast<int>(constraintRows(*model).size());
   if (model->contact_pairs.empty() && (default_material_ >= 0 || !surface_materials_.empty())) {
     addAutomaticContacts(*model);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/flush_denormals.hpp"
+#include "core/prescribed_motion.hpp"
 
 namespace tribo {
 
@@ -83,7 +84,11 @@ StepStatus Simulator::advance() {
   }
   const IntegratorStatus integrated =
       integrator_->step(dynamics_, state_, model().options.time_step, evaluated_);
-  if (integrated.ok) dynamics_.projectConstraints(state_);  // no-op unless enabled
+  if (integrated.ok) {
+    // Kinematic bodies along signals end the step exactly where their signals put them.
+    placePrescribedBodies(model().bodies, state_);
+    dynamics_.projectConstraints(state_);  // no-op unless enabled
+  }
   evaluated_ = false;
   StepStatus status;
   if (integrated.interrupted) {

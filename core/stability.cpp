@@ -13,6 +13,7 @@
 
 #include "core/constraint_rows.hpp"
 #include "core/joint_forces.hpp"
+#include "core/prescribed_motion.hpp"
 #include "core/resting_contact.hpp"
 #include "friction/dynamic_law.hpp"
 
@@ -290,6 +291,7 @@ StabilityReport estimateStableStep(const Model& model) {
   for (const Body& b : model.bodies) {
     drive_speed = std::max(drive_speed, b.surfaceSpeedBound(model.options.duration));
     if (b.kind != BodyKind::kDynamic) drive_speed = std::max(drive_speed, b.velocity.norm());
+    if (b.motion) drive_speed = std::max(drive_speed, b.motion->speedBound(model.options.duration));
   }
   for (const Joint& joint : model.joints)  // a slider driven along its axis
     if (joint.type == JointType::kPrismatic && joint.elements.drive)

@@ -140,6 +140,18 @@ IntegratorStatus SundialsStepper::failure(double t, const std::string& what) {
 IntegratorStatus SundialsStepper::step(Dynamics& dynamics, State& state, double h,
                                        bool start_is_evaluated) {
   if (!setup_error_.empty()) return failure(state.time, setup_error_);
+  if (system_.sizeFor(state) == 0) {
+    // Nothing to integrate (kinematic bodies only; SUNDIALS refuses an empty system): the
+    // bodies move as prescribed, those along signals placed by the Simulator after the step.
+    for (std::size_t b = 0; b < state.bodies.size(); ++b) {
+      BodyState& s = state.bodies[b];
+      s.position += h * s.velocity;
+      s.orientation = rotateBy(s.angular_velocity, h, s.orientation);
+    }
+    state.time += h;
+    ++counters_.steps;
+    return {};
+  }
   system_.attach(dynamics);
   double* y = N_VGetArrayPointer(y_);
   if (system_.eventsSuspended()) {  // chattering in the last call: back on, from a restart

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/prescribed_motion.hpp"
+
 namespace tribo {
 
 namespace {
@@ -79,9 +81,14 @@ void OdeSystem::unpack(double t, const double* y, State& out) const {
   out.time = t;
   const double dt = t - base_.time;
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    if (model_.bodies[b].kind == BodyKind::kDynamic) continue;
-    const BodyState& s0 = base_.bodies[b];
+    const Body& body = model_.bodies[b];
+    if (body.kind == BodyKind::kDynamic) continue;
     BodyState& s = out.bodies[b];
+    if (body.motion) {  // along signals: exact at t (core/prescribed_motion.hpp)
+      s = body.motion->at(body, t);
+      continue;
+    }
+    const BodyState& s0 = base_.bodies[b];
     s.position = s0.position + dt * s0.velocity;
     s.orientation = rotateBy(s0.angular_velocity, dt, s0.orientation);
     s.velocity = s0.velocity;

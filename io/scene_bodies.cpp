@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "contact/shape_inertia.hpp"
+#include "core/prescribed_motion.hpp"
 #include "io/mesh_loader.hpp"
 #include "io/package_paths.hpp"
 #include "io/scene_keys.hpp"
@@ -24,8 +25,7 @@ void Loader::readBody(const Value& v) {
     body.kind = k->choice(scene_keys::kBodyKinds) == 0 ? BodyKind::kDynamic : BodyKind::kKinematic;
   body.position = m.vec3("position", Vec3::Zero());
   body.orientation = orientation(m);
-  body.velocity = m.vec3("velocity", Vec3::Zero());
-  body.angular_velocity = m.vec3("angular_velocity", Vec3::Zero());
+  readMotion(m, body);
   if (auto s = m.get("surface_velocity")) {
     // Numbers as before; a signal in any component makes the surface's speed vary in time.
     std::array<Signal, 3> signals = readSignals3(*s);
@@ -74,6 +74,51 @@ void Loader::readBody(const Value& v) {
     builder_.setCollisionFilter(id, g.group, g.mask);
     geometry_names_.push_back(g.name);
   }
+}
+
+// `velocity` and `angular_velocity`: numbers, or for a kinematic body signals in any
+// component (core/prescribed_motion.hpp); a varying turn is about one world axis.
+void Loader::readMotion(const Map& m, Body& body) {
+  const auto velocity = m.get("velocity");
+  const auto spin = m.get("angular_velocity");
+  auto varies = [](const std::array<Signal, 3>& s) {
+    return std::any_of(s.begin(), s.end(),
+                       [](const Signal& c) { return c.kind() != Signal::Kind::kConstant; });
+  };
+  std::array<Signal, 3> linear, angular;
+  if (velocity) linear = readSignals3(*velocity);
+  if (spin) angular = readSignals3(*spin);
+  for (int i = 0; i < 3; ++i) {
+    body.velocity[i] = linear[i].value(0.0);
+    body.angular_velocity[i] = angular[i].value(0.0);
+  }
+  if (!varies(linear) && !varies(angular)) return;
+  const Value& where = varies(linear) ? *velocity : *spin;
+  if (body.kind != BodyKind::kKinematic)
+    where.fail(
+        "a velocity that varies in time is for a kinematic body (this body is dynamic: "
+        "its velocity is an initial value; a load drives it)");
+  auto motion = std::make_shared<PrescribedMotion>();
+  motion->velocity = linear;
+  if (varies(angular)) {
+    int axis = -1;
+    for (int i = 0; i < 3; ++i) {
+      if (angular[i].isZero()) continue;
+      if (axis >= 0)
+        spin->fail(
+            "a turning rate that varies in time is about one world axis: give one "
+            "component a signal and the others 0, found " +
+            spin->found() +
+            " (a revolute joint driven along a signal turns a body about any axis)");
+      axis = i;
+    }
+    motion->spin_axis = Vec3::Unit(axis);
+    motion->spin_rate = angular[axis];
+  } else if (body.angular_velocity.norm() > 0.0) {
+    motion->spin_axis = body.angular_velocity.normalized();
+    motion->spin_rate = Signal::constant(body.angular_velocity.norm());
+  }
+  body.motion = std::move(motion);
 }
 
 GeometrySpec Loader::readGeometry(const Value& v) {

@@ -82,6 +82,7 @@ class Loader {
 
   // io/scene_bodies.cpp
   void readBody(const Value& v);
+  void readMotion(const Map& m, Body& body);
   GeometrySpec readGeometry(const Value& v);
   void readRobot(const Value& v);
   void applyGazeboTags();

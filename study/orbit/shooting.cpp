@@ -19,7 +19,7 @@ std::string nonAutonomous(const Model& m) {
   if (!m.loads.empty()) return "it has applied loads";
   for (const Body& b : m.bodies) {
     if (b.kind == BodyKind::kKinematic &&
-        (b.velocity.norm() > 0.0 || b.angular_velocity.norm() > 0.0))
+        (b.velocity.norm() > 0.0 || b.angular_velocity.norm() > 0.0 || b.motion))
       return "kinematic body '" + b.name + "' moves";
     if (b.surface_velocity_signal) return "body '" + b.name + "' has a surface velocity signal";
   }
