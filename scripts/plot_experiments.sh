@@ -7,6 +7,8 @@
 #   belt_modulated: the box's x and the belt's speed against time;
 #   presliding_drift: the block's x (micrometres) under lugre and under elasto_plastic;
 #   velocity_steps: the friction coefficient under the aging and the slip law, and the speed.
+#   vibration_slip: the block's x on the shaken plate at three pushes, against the averaged
+#     Coulomb law's creep V sin(pi r / 2) t.
 # Usage: scripts/plot_experiments.sh [OUT_DIR]   (default docs/figures)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,14 +36,18 @@ run presliding_drift
 run velocity_steps
 "$tribo" run scenes/experiments/velocity_steps.yaml --set evolution=slip \
   --out "$work/velocity_steps_slip" --quiet > /dev/null
+for r in 0.1 0.3 0.6; do
+  "$tribo" run scenes/experiments/vibration_slip.yaml --set ratio=$r \
+    --out "$work/vibration_slip_$r" --quiet > /dev/null
+done
 
 gnuplot <<GP
-set terminal pngcairo noenhanced size 1200,1260 font 'Helvetica,10'
+set terminal pngcairo noenhanced size 1200,1680 font 'Helvetica,10'
 set output '$out/experiments.png'
 set datafile separator ','
 set key top left
 set grid
-set multiplot layout 3,2
+set multiplot layout 4,2
 set title 'break_away_ramp: push F = t N/s, block x'
 set xlabel 't [s]'
 set ylabel 'F [N]'
@@ -86,6 +92,14 @@ set ytics nomirror
 plot '$work/velocity_steps/trajectory.csv' every ::1 using 1:(\$$(col velocity_steps block.friction_force)/\$$(col velocity_steps block.normal_force)) with lines lw 2 title 'aging law', \
      '$work/velocity_steps_slip/trajectory.csv' every ::1 using 1:(\$$(col velocity_steps block.friction_force)/\$$(col velocity_steps block.normal_force)) with lines lw 2 title 'slip law', \
      '$work/velocity_steps/trajectory.csv' every ::1 using 1:(1e3*\$$(col velocity_steps block.vx)) axes x1y2 with lines dt 2 title 'speed'
+set title 'vibration_slip: plate shaken at 0.1 m/s, 200 Hz; push r mu m g (dashed: V sin(pi r / 2) t)'
+set ylabel 'block x [mm]'
+unset y2label
+unset y2tics
+set autoscale y2
+set ytics mirror
+plot for [r in '0.1 0.3 0.6'] '$work/vibration_slip_'.r.'/trajectory.csv' every ::1 using 1:(1e3*\$$(col vibration_slip_0.1 block.x)) with lines lw 2 title 'r = '.r, \
+     for [r in '0.1 0.3 0.6'] 1e3*0.1*sin(pi*r/2)*x with lines dt 2 lc 'black' notitle
 unset multiplot
 GP
 echo "wrote $out/experiments.png"
