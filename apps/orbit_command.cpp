@@ -11,6 +11,7 @@
 
 #include "apps/common_options.hpp"
 #include "apps/modes_command.hpp"
+#include "apps/stop_signals.hpp"
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
 #include "study/file_commit.hpp"
@@ -68,10 +69,12 @@ int wholeAtLeast(const std::string& option, const std::string& text, int least) 
 }
 
 // tribo orbit --continue: the branch, point by point on stderr, into branch.csv and
-// branch.json (written also when the branch is lost on the way).
+// branch.json (written also when the branch is lost on the way or interrupted).
 int runBranch(Arguments& a) {
   study::BranchSpec& b = a.branch;
   b.orbit = a.spec;
+  // The first SIGINT or SIGTERM ends the branch after the point in hand, its points kept.
+  b.stop = &catchStopSignals();
   try {
     const io::Scene scene = io::loadScene(a.scene_path, a.overrides);
     for (const auto& n : scene.notes) std::fprintf(stderr, "tribo orbit: note: %s\n", n.c_str());
@@ -132,7 +135,7 @@ int runBranch(Arguments& a) {
                 study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter, e.before,
                 e.after);
   std::printf("results          %s (%.3g s)\n", out.string().c_str(), r.seconds);
-  return r.lost ? kExitBranchLost : 0;
+  return r.interrupted ? kExitInterrupted : r.lost ? kExitBranchLost : 0;
 }
 
 int runOrbit(Arguments& a) {
@@ -234,7 +237,9 @@ Command addOrbitCommand(CLI::App& tribo) {
       "between its points.\n"
       "exit status: 0 stable orbit (with --continue: a branch not lost on the way),\n"
       "1 usage, 2 bad scene, 4 output error, 8 unstable orbit, 11 no orbit found,\n"
-      "12 the branch was lost (the points found so far are written)");
+      "12 the branch was lost (the points found so far are written), 5 interrupted (the\n"
+      "first SIGINT or SIGTERM ends the branch after the point in hand; its points are\n"
+      "written)");
   return {orbit, [a] { return runOrbit(*a); }};
 }
 

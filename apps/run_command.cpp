@@ -1,10 +1,8 @@
 #include "apps/run_command.hpp"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -17,6 +15,7 @@
 
 #include "apps/common_options.hpp"
 #include "apps/info_command.hpp"
+#include "apps/stop_signals.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/view_command.hpp"
 #include "io/output_channels.hpp"
@@ -43,25 +42,6 @@ struct RunArguments {
   tribo::io::UrdfReadOptions read;
   bool verbose = false;
 };
-
-// Set by the first SIGINT or SIGTERM; the run stops at once, back at its last output row.
-std::atomic<bool> g_stop{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void onStopSignal(int) {
-  g_stop.store(true);
-  // A second signal ends the process at once.
-  ::signal(SIGINT, SIG_DFL);
-  ::signal(SIGTERM, SIG_DFL);
-}
-
-void catchStopSignals() {
-  struct sigaction sa {};
-  sa.sa_handler = onStopSignal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-}
 
 void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& r,
                   const std::filesystem::path& out) {
@@ -213,10 +193,10 @@ int runScene(const CLI::App& command, const RunArguments& a) {
   study::RunOptions options;
   options.sink = &*csv;
   options.spill_dir = out;
-  options.stop = &g_stop;
+  // The first SIGINT or SIGTERM stops the run at once, back at its last output row.
+  options.stop = &catchStopSignals();
   options.profile = profile;
   options.progress = [&](double simulated) { progress_line.update(simulated); };
-  catchStopSignals();
   std::optional<study::RunResult> run_result;
   try {
     run_result.emplace(study::runScene(scene, options));

@@ -418,6 +418,12 @@ BranchResult continueOrbit(const std::string& path, const std::vector<std::strin
   Eigen::VectorXd d = tangent;  // the predictor's direction: the tangent, then the secant
   double ds = step;
   while (true) {
+    if (spec.stop && spec.stop->load()) {
+      r.interrupted = true;
+      r.stop_reason = "interrupted after " + std::to_string(r.points.size()) + " points, at " +
+                      spec.parameter + " = " + number(r.points.back().parameter);
+      break;
+    }
     if (static_cast<int>(r.points.size()) >= spec.max_points) {
       r.stop_reason = "the largest number of points (" + std::to_string(spec.max_points) +
                       ") was reached before " + number(spec.to);
@@ -524,7 +530,10 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
   j["from"] = spec.from;
   j["to"] = spec.to;
   j["observed"] = r.observed;
-  j["status"] = r.reached_end ? "reached_end" : r.lost ? "lost" : "stopped";
+  j["status"] = r.reached_end   ? "reached_end"
+                : r.lost        ? "lost"
+                : r.interrupted ? "interrupted"
+                                : "stopped";
   j["stop_reason"] = r.stop_reason;
   j["stick_speed"] = r.stick_speed;
   j["points"] = r.points.size();

@@ -37,10 +37,11 @@
 // Located values are interpolations between two points, not solved for.
 // Not here: branch switching at a period doubling, a start from a Hopf point of
 // `tribo modes`, the steady sliding branch beside it, scaled arclength norms, matrix-free
-// solves for large states, keeping the branch on Ctrl-C.
+// solves for large states.
 #pragma once
 
 #include <Eigen/Dense>
+#include <atomic>
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -62,6 +63,9 @@ struct BranchSpec {
   int max_corrector = 6;    // Newton iterations per point at most
   double fd_parameter = 0;  // dp of the p column; 0: orbit.fd_step max(|p|, |to - from|)
   OrbitSpec orbit;          // the first orbit (settle), tolerance, fd_step, threads
+  // Set from outside (a signal handler): the branch ends after the point in hand, with the
+  // points so far (BranchResult::interrupted).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct BranchPoint {
@@ -101,6 +105,7 @@ struct BranchResult {
   double stick_speed = 0;    // the scene's output.summary.stick_speed, for grazing
   bool reached_end = false;  // a point at or past `to`
   bool lost = false;         // stopped by the corrector failing at the smallest step
+  bool interrupted = false;  // stopped by BranchSpec::stop
   std::string stop_reason;
   double seconds = 0;
 };

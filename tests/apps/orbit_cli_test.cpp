@@ -2,7 +2,11 @@
 // 2 bad scene, 1 usage), the files it writes (orbit.json whole, its period and amplitude
 // those orbit.csv shows: the samples span one period and return to the start). The figures
 // themselves are checked at library level (tests/study/periodic_orbit_test.cpp). With
-// --continue: branch.csv's columns and rows, branch.json's events, the usage errors.
+// --continue: branch.csv's columns and rows, branch.json's events, the usage errors, and a
+// SIGINT that ends the branch with its points written.
+#include <signal.h>
+
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -10,6 +14,7 @@
 #include <vector>
 
 #include "support/cli_support.hpp"
+#include "support/process_support.hpp"
 
 namespace tribo::test {
 namespace {
@@ -137,6 +142,39 @@ TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
   EXPECT_LT(last["stick_fraction"].get<double>(),
             0.5 * j["branch"][0]["stick_fraction"].get<double>());
   EXPECT_TRUE(fs::exists(dir_ / "branch.csv"));
+}
+
+// SIGINT while the branch runs: it ends after the point in hand, exits 5 and writes the
+// points found so far, the same bytes as a branch asked for that many points.
+TEST_F(OrbitCli, SigintEndsTheBranchWithItsPointsWritten) {
+  using namespace std::chrono_literals;
+  fs::create_directories(dir_);
+  const fs::path out = dir_ / "interrupted";
+  const Child child = spawnChild(kTribo,
+                                 {"orbit", kBelt, "--out", out.string(), "--continue", "v_b=1.5:8",
+                                  "--step", "0.5", "--max-points", "40"},
+                                 dir_ / "io");
+  ASSERT_GT(child.pid, 0);
+  ASSERT_TRUE(
+      waitUntil([&] { return slurp(child.err).find("point 1 ") != std::string::npos; }, 300s))
+      << slurp(child.err);
+  ::kill(child.pid, SIGINT);
+  const Exit e = waitChild(child);
+  const std::string err = slurp(child.err), said = slurp(child.out);
+  EXPECT_EQ(e.status, 5) << err << said;
+  const auto j = nlohmann::json::parse(slurp(out / "branch.json"));
+  EXPECT_EQ(j["status"].get<std::string>(), "interrupted");
+  const std::size_t points = j["points"].get<std::size_t>();
+  EXPECT_GE(points, 2u);
+  EXPECT_LT(points, 40u);
+  EXPECT_NE(j["stop_reason"].get<std::string>().find("interrupted after " + std::to_string(points) +
+                                                     " points"),
+            std::string::npos);
+  const Result whole =
+      runTribo("orbit " + kBelt + " --out " + (dir_ / "whole").string() +
+               " --continue v_b=1.5:8 --step 0.5 --max-points " + std::to_string(points));
+  ASSERT_EQ(whole.status, 0) << whole.output;
+  EXPECT_EQ(slurp(out / "branch.csv"), slurp(dir_ / "whole" / "branch.csv"));
 }
 
 TEST_F(OrbitCli, ContinueRefusesToStartFromAnEquilibrium) {
