@@ -4,8 +4,10 @@
 // tribo.tradeoff measures the speed-accuracy ladder as `tribo tradeoff` does
 // (study/tradeoff.hpp) and returns its rows. tribo.orbit finds the periodic orbit as
 // `tribo orbit` does (study/orbit/periodic_orbit.hpp) and returns orbit.json's document with
-// the sampled period as arrays. The GIL is released while they run. Not here:
-// plotting.
+// the sampled period as arrays; tribo.orbit_branch continues it in a parameter as
+// `tribo orbit --continue` does (study/orbit/orbit_branch.hpp) and returns branch.json's
+// document with its columns and each point's orbit as arrays. The GIL is released while they
+// run. Not here: plotting.
 #include <pybind11/complex.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -17,6 +19,7 @@
 #include "python/scene_handle.hpp"
 #include "study/modes/modes.hpp"
 #include "study/modes/modes_report.hpp"
+#include "study/orbit/orbit_branch.hpp"
 #include "study/orbit/periodic_orbit.hpp"
 #include "study/tradeoff.hpp"
 
@@ -130,6 +133,68 @@ py::object runOrbit(const SceneHandle& scene, double settle, double tolerance) {
   return out;
 }
 
+py::array_t<double> arrayOf(const std::vector<double>& v) {
+  return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter, double start,
+                          double end, int max_points, double step, double settle,
+                          double tolerance) {
+  if (!(max_points >= 2) || !(step >= 0.0) || !(settle >= 0.0) || !(tolerance > 0.0))
+    throw py::value_error(
+        "orbit_branch: max_points must be >= 2, step >= 0, settle >= 0 and tolerance > 0");
+  if (!scene.user_laws.empty())
+    throw py::value_error(
+        "orbit_branch: a scene with laws written in Python cannot be shot for an orbit (the "
+        "flows run on several threads)");
+  if (scene.source == SceneHandle::Source::kUrdf)
+    throw py::value_error("orbit_branch: a URDF robot has no parameters to continue in");
+  study::BranchSpec spec;
+  spec.parameter = parameter;
+  spec.from = start;
+  spec.to = end;
+  spec.max_points = max_points;
+  spec.step = step;
+  spec.orbit.settle = settle;
+  spec.orbit.tolerance = tolerance;
+  study::BranchResult r;
+  {
+    py::gil_scoped_release release;
+    r = scene.source == SceneHandle::Source::kFile
+            ? study::continueOrbit(scene.origin, scene.overrides, spec)
+            : study::continueOrbitFromText(scene.origin, scene.scene.path, scene.overrides, spec);
+  }
+  py::object out = jsonToPython(study::branchJsonText(scene.scene.path, spec, r));
+  std::vector<double> p, period, amplitude, largest, stick, slip;
+  py::array_t<bool> stable(static_cast<py::ssize_t>(r.points.size()));
+  py::list orbits;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const study::BranchPoint& pt = r.points[i];
+    p.push_back(pt.parameter);
+    period.push_back(pt.period);
+    amplitude.push_back(pt.amplitude_pp);
+    largest.push_back(pt.largest);
+    stick.push_back(pt.stick_fraction);
+    slip.push_back(pt.min_slip);
+    stable.mutable_at(static_cast<py::ssize_t>(i)) = pt.stable;
+    py::dict orbit;
+    orbit["t"] = arrayOf(pt.t);
+    orbit["x"] = arrayOf(pt.x);
+    orbits.append(orbit);
+  }
+  py::dict columns;
+  columns["parameter"] = arrayOf(p);
+  columns["period"] = arrayOf(period);
+  columns["amplitude_pp"] = arrayOf(amplitude);
+  columns["largest_multiplier"] = arrayOf(largest);
+  columns["stable"] = stable;
+  columns["stick_fraction"] = arrayOf(stick);
+  columns["min_slip"] = arrayOf(slip);
+  out["columns"] = columns;
+  out["orbits"] = orbits;
+  return out;
+}
+
 }  // namespace
 
 void bindStudies(py::module_& m) {
@@ -146,6 +211,16 @@ void bindStudies(py::module_& m) {
         "finds it (orbit.json's document: period, amplitude_pp, stable, multipliers, newton, "
         "start...) with 't' and 'x', the observed coordinate over one period as arrays. "
         "Raises OrbitError (not autonomous, no oscillation, no convergence).");
+  m.def("orbit_branch", &runOrbitBranch, py::arg("scene"), py::arg("parameter"), py::arg("start"),
+        py::arg("end"), py::arg("max_points") = 20, py::arg("step") = 0.0, py::arg("settle") = 0.0,
+        py::arg("tolerance") = 1e-9,
+        "orbit_branch(scene, parameter, start, end, max_points=20, step=0, settle=0, "
+        "tolerance=1e-9) -> dict: the orbit at parameter = start continued towards end as "
+        "`tribo orbit --continue` does (branch.json's document: status, stop_reason, events, "
+        "'branch' per point), with 'columns' (parameter, period, amplitude_pp, "
+        "largest_multiplier, stable, stick_fraction, min_slip as arrays) and 'orbits' (each "
+        "point's 't' and 'x' over one period). Raises OrbitError (no orbit at start), "
+        "SceneError (unknown or non-numeric parameter).");
   m.def("tradeoff", &runTradeoff, py::arg("scene"), py::arg("set") = py::none(),
         py::arg("integrators") = std::vector<std::string>{}, py::arg("window") = 10.0,
         py::arg("repeat") = 1,

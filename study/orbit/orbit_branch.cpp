@@ -276,17 +276,23 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
 BranchResult continueOrbit(const std::string& path, const std::vector<std::string>& overrides,
                            const BranchSpec& spec,
                            const std::function<void(const BranchPoint&, std::size_t)>& progress) {
-  const auto wall = std::chrono::steady_clock::now();
-  if (!std::isfinite(spec.from) || !std::isfinite(spec.to) || spec.from == spec.to)
-    throw std::invalid_argument("the branch's range " + number(spec.from) + ":" + number(spec.to) +
-                                " is empty or not finite");
   std::string text;
   try {
     text = io::readFileBounded(path, "scene file", io::kMaxSceneBytes);
   } catch (const io::FileReadError& e) {
     throw io::SceneError(e.what());
   }
-  const io::SceneDocument document(text, path);
+  return continueOrbitFromText(text, path, overrides, spec, progress);
+}
+
+BranchResult continueOrbitFromText(
+    const std::string& yaml, const std::string& path, const std::vector<std::string>& overrides,
+    const BranchSpec& spec, const std::function<void(const BranchPoint&, std::size_t)>& progress) {
+  const auto wall = std::chrono::steady_clock::now();
+  if (!std::isfinite(spec.from) || !std::isfinite(spec.to) || spec.from == spec.to)
+    throw std::invalid_argument("the branch's range " + number(spec.from) + ":" + number(spec.to) +
+                                " is empty or not finite");
+  const io::SceneDocument document(yaml, path);
   {
     const io::Scene base = document.load(overrides);
     const auto it = std::find_if(base.parameters.begin(), base.parameters.end(),

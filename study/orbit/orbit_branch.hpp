@@ -119,6 +119,12 @@ struct BranchResult {
 BranchResult continueOrbit(
     const std::string& path, const std::vector<std::string>& overrides, const BranchSpec& spec,
     const std::function<void(const BranchPoint&, std::size_t)>& progress = {});
+// The same from the scene's YAML text; `name_for_errors` stands for the file name in
+// messages and relative paths (as io::loadSceneFromString).
+BranchResult continueOrbitFromText(
+    const std::string& yaml, const std::string& name_for_errors,
+    const std::vector<std::string>& overrides, const BranchSpec& spec,
+    const std::function<void(const BranchPoint&, std::size_t)>& progress = {});
 
 // The events between consecutive points (points need parameter, arclength, dp_ds,
 // multipliers, trivial, stable and, for grazing, min_slip; stick_speed 0: no grazing).

@@ -128,3 +128,30 @@ def test_orbit_is_the_cli_orbit_json(cli, belt, tmp_path):
     assert ours["x"][0] == pytest.approx(ours["x"][-1], abs=1e-7)
     with pytest.raises(tribo.OrbitError, match="no oscillation"):
         tribo.orbit(tribo.load_scene(belt, set={"v_b": 0, "duration": 3}))
+
+
+def test_orbit_branch_points_are_the_orbits_at_their_parameter(belt):
+    """tribo.orbit_branch continues the belt's orbit in v_b as `tribo orbit --continue` does;
+    each point is the orbit tribo.orbit finds at that v_b (the same shooting: equal to
+    rounding, measured 4e-16), its columns are the branch's points as arrays, and each
+    point's sampled orbit spans one period."""
+    b = tribo.orbit_branch(tribo.load_scene(belt), "v_b", 1.0, 1.5, step=0.25, max_points=4)
+    assert b["status"] == "reached_end"
+    cols = b["columns"]
+    n = len(b["branch"])
+    assert n >= 3 and len(b["orbits"]) == n
+    assert cols["parameter"][0] == 1.0 and cols["parameter"][-1] >= 1.5
+    assert cols["stable"].dtype == bool and all(cols["stable"])
+    for i, point in enumerate(b["branch"]):
+        assert cols["period"][i] == point["period"]
+        assert cols["amplitude_pp"][i] == point["amplitude_pp"]
+        t = b["orbits"][i]["t"]
+        assert t[0] == 0 and t[-1] == pytest.approx(point["period"], abs=1e-12)
+    for i in (1, n - 1):
+        alone = tribo.orbit(tribo.load_scene(belt, set={"v_b": float(cols["parameter"][i])}))
+        assert alone["period"] == pytest.approx(cols["period"][i], rel=1e-9)
+        assert alone["amplitude_pp"] == pytest.approx(cols["amplitude_pp"][i], rel=1e-9)
+    with pytest.raises(tribo.SceneError, match="not a parameter"):
+        tribo.orbit_branch(tribo.load_scene(belt), "no_such", 1.0, 1.5)
+    with pytest.raises(ValueError, match="max_points must be >= 2"):
+        tribo.orbit_branch(tribo.load_scene(belt), "v_b", 1.0, 1.5, max_points=1)
