@@ -1,0 +1,82 @@
+// Cost of periodic orbits (study/orbit/) read against what a user would otherwise run: the
+// settled simulation of one sweep point (the scene's own duration, `tribo run`), measured
+// first in the same process. Names: BM_Baseline_SettledRun/belt; BM_Orbit/belt (one orbit,
+// `tribo orbit`: its settling run, Newton's shooting with the Jacobian's columns on the
+// cores, the Floquet multipliers; counter over_settled_run); BM_OrbitBranch/belt (the branch
+// from v_b = 1.5 to 3 in steps of 0.5, `tribo orbit --continue`: counters points and
+// per_point_over_settled_run). What a branch point costs against a sweep point is the
+// question a user of `--continue` asks.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <string>
+
+#include "io/scene_loader.hpp"
+#include "study/orbit/orbit_branch.hpp"
+#include "study/orbit/periodic_orbit.hpp"
+#include "study/scene_run.hpp"
+
+namespace {
+
+const std::string kBelt = std::string(TRIBO_SOURCE_DIR) + "/scenes/belt.yaml";
+
+double& settledSeconds() {
+  static double seconds = 0.0;
+  return seconds;
+}
+
+template <class Work>
+double timed(benchmark::State& st, Work work) {
+  double total = 0.0;
+  for (auto _ : st) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return total / static_cast<double>(st.iterations());
+}
+
+void BM_Baseline_SettledRun(benchmark::State& st) {
+  const auto scene = tribo::io::loadScene(kBelt);
+  settledSeconds() = timed(st, [&] {
+    const auto r = tribo::study::runScene(scene, tribo::study::RunOptions{});
+    benchmark::DoNotOptimize(r.summary.period);
+  });
+}
+
+void BM_Orbit(benchmark::State& st) {
+  const auto scene = tribo::io::loadScene(kBelt);
+  const double each = timed(st, [&] {
+    const auto r = tribo::study::findPeriodicOrbit(scene);
+    benchmark::DoNotOptimize(r.period);
+  });
+  if (settledSeconds() > 0.0) st.counters["over_settled_run"] = each / settledSeconds();
+}
+
+void BM_OrbitBranch(benchmark::State& st) {
+  tribo::study::BranchSpec spec;
+  spec.parameter = "v_b";
+  spec.from = 1.5;
+  spec.to = 3.0;
+  spec.step = 0.5;
+  std::size_t points = 0;
+  const double each = timed(st, [&] {
+    const auto r = tribo::study::continueOrbit(kBelt, {}, spec);
+    points = r.points.size();
+  });
+  st.counters["points"] = static_cast<double>(points);
+  if (settledSeconds() > 0.0 && points > 0)
+    st.counters["per_point_over_settled_run"] =
+        each / static_cast<double>(points) / settledSeconds();
+}
+
+}  // namespace
+
+BENCHMARK(BM_Baseline_SettledRun)
+    ->Name("BM_Baseline_SettledRun/belt")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Orbit)->Name("BM_Orbit/belt")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OrbitBranch)
+    ->Name("BM_OrbitBranch/belt")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(2);
