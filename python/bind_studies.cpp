@@ -165,7 +165,7 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
             : study::continueOrbitFromText(scene.origin, scene.scene.path, scene.overrides, spec);
   }
   py::object out = jsonToPython(study::branchJsonText(scene.scene.path, spec, r));
-  std::vector<double> p, period, amplitude, largest, stick, slip;
+  std::vector<double> p, period, amplitude, largest, stick, slip, steady;
   py::array_t<bool> stable(static_cast<py::ssize_t>(r.points.size()));
   py::list orbits;
   for (std::size_t i = 0; i < r.points.size(); ++i) {
@@ -176,6 +176,7 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
     largest.push_back(pt.largest);
     stick.push_back(pt.stick_fraction);
     slip.push_back(pt.min_slip);
+    steady.push_back(pt.steady_growth);
     stable.mutable_at(static_cast<py::ssize_t>(i)) = pt.stable;
     py::dict orbit;
     orbit["t"] = arrayOf(pt.t);
@@ -190,6 +191,7 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
   columns["stable"] = stable;
   columns["stick_fraction"] = arrayOf(stick);
   columns["min_slip"] = arrayOf(slip);
+  columns["steady_growth_rate"] = arrayOf(steady);
   out["columns"] = columns;
   out["orbits"] = orbits;
   return out;
@@ -218,7 +220,8 @@ void bindStudies(py::module_& m) {
         "tolerance=1e-9) -> dict: the orbit at parameter = start continued towards end as "
         "`tribo orbit --continue` does (branch.json's document: status, stop_reason, events, "
         "'branch' per point), with 'columns' (parameter, period, amplitude_pp, "
-        "largest_multiplier, stable, stick_fraction, min_slip as arrays) and 'orbits' (each "
+        "largest_multiplier, stable, stick_fraction, min_slip, steady_growth_rate as arrays) and "
+        "'orbits' (each "
         "point's 't' and 'x' over one period). Raises OrbitError (no orbit at start), "
         "SceneError (unknown or non-numeric parameter).");
   m.def("tradeoff", &runTradeoff, py::arg("scene"), py::arg("set") = py::none(),

@@ -11,6 +11,7 @@
 #include "io/file_read.hpp"
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
+#include "study/modes/modes.hpp"
 #include "study/orbit/orbit_coordinates.hpp"
 #include "study/orbit/shooting.hpp"
 
@@ -401,6 +402,13 @@ BranchResult continueOrbitFromText(
     pt.x_max = *std::max_element(x.begin(), x.end());
     pt.x_min = shooting::refinedMinimum(x);
     pt.amplitude_pp = pt.x_max - pt.x_min;
+    // Steady sliding at the same parameter, as `tribo modes` analyses it: the branch beside
+    // the orbits (none where the scene has no steady state or the analysis fails).
+    try {
+      pt.steady_growth = analyzeModes(at).leading().growth_rate;
+    } catch (const std::exception&) {
+      pt.steady_growth = NAN;
+    }
     return pt;
   };
 
@@ -498,7 +506,8 @@ BranchResult continueOrbitFromText(
 std::string branchCsvText(const BranchResult& r) {
   std::string csv =
       "index,parameter,period,amplitude_pp,largest_multiplier,stable,stick_fraction,min_slip,"
-      "x_min,x_max,dp_ds,arclength,iterations,residual,trivial_error,event\n";
+      "x_min,x_max,dp_ds,arclength,iterations,residual,trivial_error,steady_growth_rate,"
+      "event\n";
   for (std::size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
     std::string events;
@@ -513,7 +522,8 @@ std::string branchCsvText(const BranchResult& r) {
            csvNumber(p.min_slip, 6) + "," + csvNumber(p.x_min, 17) + "," + csvNumber(p.x_max, 17) +
            "," + csvNumber(p.dp_ds, 17) + "," + csvNumber(p.arclength, 17) + "," +
            std::to_string(p.iterations) + "," + csvNumber(p.residual, 6) + "," +
-           csvNumber(p.trivial_error, 6) + "," + events + "\n";
+           csvNumber(p.trivial_error, 6) + "," + csvNumber(p.steady_growth, 17) + "," + events +
+           "\n";
   }
   return csv;
 }
@@ -566,6 +576,9 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                    {"min_slip", std::isfinite(p.min_slip) ? nlohmann::ordered_json(p.min_slip)
                                                           : nlohmann::ordered_json()},
                    {"trivial_multiplier_error", p.trivial_error},
+                   {"steady_growth_rate", std::isfinite(p.steady_growth)
+                                              ? nlohmann::ordered_json(p.steady_growth)
+                                              : nlohmann::ordered_json()},
                    {"multipliers", mu}});
   }
   j["branch"] = pts;

@@ -35,9 +35,10 @@
 // Period doubling, torus and stability change are located by linear interpolation in p of the
 // crossing multipliers' modulus to 1, grazing of the smallest slip speed to the stick speed.
 // Located values are interpolations between two points, not solved for.
+// Beside each point, steady sliding at the same parameter as `tribo modes` analyses it (its
+// leading growth rate): where the two branches coexist, both stable, is hysteresis.
 // Not here: branch switching at a period doubling, a start from a Hopf point of
-// `tribo modes`, the steady sliding branch beside it, scaled arclength norms, matrix-free
-// solves for large states.
+// `tribo modes`, scaled arclength norms, matrix-free solves for large states.
 #pragma once
 
 #include <Eigen/Dense>
@@ -80,6 +81,10 @@ struct BranchPoint {
   // contact points, as the run summary takes it): its minimum, and the fraction of the period
   // spent below the summary's stick speed; NaN when it never touches.
   double min_slip = NAN, stick_fraction = NAN;
+  // The leading growth rate [1/s] of steady sliding at this parameter (`tribo modes`,
+  // study/modes/modes.hpp): the steady branch beside the orbits, stable where it is < 0;
+  // NaN where the scene has no steady state.
+  double steady_growth = NAN;
   double dp_ds = 0;          // the unit tangent's parameter component
   double arclength = 0;      // s from the branch's start
   int iterations = 0;        // the corrector's

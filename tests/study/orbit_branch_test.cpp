@@ -155,6 +155,22 @@ TEST(OrbitBranch, TheDampedBeltFoldsWhereStickSlipMeetsTheUnstableCycleOfItsSubc
     EXPECT_NEAR(std::pow(p.amplitude_pp, 2) / (p.parameter - v_h) / ratio, 1.0, 0.25)
         << i << ": v_b " << p.parameter << ", A " << p.amplitude_pp;
   }
+  // Steady sliding beside every point: unstable below v_H, stable above (the closed form),
+  // so between v_H and the fold it coexists with the stable stick-slip: the hysteresis. Its
+  // growth rate is (-c - mu'(v) m g) / (2 m) by the same closed form (measured to 1e-9 where
+  // it grows); points within 2e-3 of v_H, where it nears 0, are not judged by sign.
+  for (const BranchPoint& p : r.points) {
+    ASSERT_TRUE(std::isfinite(p.steady_growth)) << p.parameter;
+    if (std::abs(p.parameter - v_h) > 2e-3) {
+      EXPECT_EQ(p.steady_growth > 0.0, p.parameter < v_h)
+          << "v_b " << p.parameter << ": growth " << p.steady_growth;
+    }
+    if (p.parameter < v_h - 2e-3) {  // the growing mode is the in-plane one
+      const double v = p.parameter, mu_slope_mg = 2.0 * 0.05 * v / (0.15 * 0.15) *
+                                                  std::exp(-(v / 0.15) * (v / 0.15)) * 98.1;
+      EXPECT_NEAR(p.steady_growth, (mu_slope_mg - 10.0) / 20.0, 1e-6) << "v_b " << v;  // 1e-9
+    }
+  }
 }
 
 TEST(OrbitBranch, RefusesAnUnknownOrNonNumericParameterBeforeAnyWork) {
