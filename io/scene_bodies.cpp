@@ -2,8 +2,11 @@
 // the scene), their links' Gazebo tags, and bodies by name.
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <map>
+#include <random>
 #include <utility>
 
 #include "contact/shape_inertia.hpp"
@@ -65,15 +68,81 @@ void Loader::readBody(const Value& v) {
     const Mat3 r = box->pose.linear();
     body.inertia = r * local * r.transpose();
   }
-  const BodyIndex index = guarded(v, [&] { return builder_.addBody(body); });
-  for (const auto& g : geometries) {
-    const int id =
-        guarded(g.at, [&] { return builder_.addGeometry(g.name, index, g.shape, g.pose); });
-    builder_.setGeometrySurface(id, g.surface);
-    body_surfaces_.insert(g.surface);
-    builder_.setCollisionFilter(id, g.group, g.mask);
-    geometry_names_.push_back(g.name);
+  auto add = [&](const Body& b, const std::string& suffix) {
+    const BodyIndex index = guarded(v, [&] { return builder_.addBody(b); });
+    for (const auto& g : geometries) {
+      const int id = guarded(
+          g.at, [&] { return builder_.addGeometry(g.name + suffix, index, g.shape, g.pose); });
+      builder_.setGeometrySurface(id, g.surface);
+      body_surfaces_.insert(g.surface);
+      builder_.setCollisionFilter(id, g.group, g.mask);
+      geometry_names_.push_back(g.name + suffix);
+    }
+  };
+  const auto pattern = m.get("pattern");
+  if (!pattern) {
+    add(body, "");
+    return;
   }
+  for (const PatternCopy& copy : readPattern(*pattern)) {
+    Body b = body;
+    b.name += copy.suffix;
+    b.position += copy.offset;
+    add(b, copy.suffix);
+  }
+}
+
+// `pattern: {grid: [nx, ny, nz], spacing: [dx, dy, dz], jitter: J, seed: S}`: the body
+// nx ny nz times, copy (i, j, k) moved by (i dx, j dy, k dz) plus, with a jitter, a uniform
+// offset in [-J, J] per axis drawn from a 64-bit Mersenne twister seeded with S (its raw
+// output scaled, so the same seed gives the same scene with any standard library); each copy
+// and its geometries named with the suffix _i_j_k.
+std::vector<Loader::PatternCopy> Loader::readPattern(const Value& v) {
+  const Map m(v, scene_keys::kBodyPattern);
+  const Value grid = m.required("grid");
+  const std::vector<double> n = grid.numbers({3}, "3 counts [nx, ny, nz], each >= 1");
+  for (double c : n)
+    if (!(c >= 1.0) || c != std::floor(c) || c > kMaxPatternBodies)
+      grid.fail("expected 3 whole counts >= 1 [nx, ny, nz], found " + grid.found());
+  const double total = n[0] * n[1] * n[2];
+  if (total > kMaxPatternBodies)
+    grid.fail("the pattern makes " + std::to_string(static_cast<long long>(total)) +
+              " bodies, more than the " +
+              std::to_string(static_cast<long long>(kMaxPatternBodies)) + " one entry may make");
+  const Value spacing_value = m.required("spacing");
+  const Vec3 spacing = spacing_value.vec3("3 distances [dx, dy, dz] [m]");
+  if (!(spacing.cwiseAbs().maxCoeff() < 1e6))
+    spacing_value.fail("expected 3 finite distances below 1e6 m, found " + spacing_value.found());
+  double jitter = 0.0;
+  if (auto j = m.get("jitter")) {
+    jitter = j->number();
+    if (!(jitter >= 0.0) || !(jitter < 1e6))
+      j->fail("expected a distance >= 0 [m], found " + j->found());
+  }
+  const std::uint64_t seed =
+      m.get("seed") ? static_cast<std::uint64_t>(m.get("seed")->integer(0)) : 1u;
+  std::mt19937_64 random(seed);
+  auto uniform = [&] {  // in [-1, 1): 53 bits of the engine's raw output
+    return 2.0 * static_cast<double>(random() >> 11) * 0x1.0p-53 - 1.0;
+  };
+  std::vector<PatternCopy> copies;
+  copies.reserve(static_cast<std::size_t>(total));
+  const int nx = static_cast<int>(n[0]), ny = static_cast<int>(n[1]), nz = static_cast<int>(n[2]);
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) {
+        PatternCopy c;
+        // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "_" + std::string.
+        c.suffix.append(1, '_').append(std::to_string(i)).append(1, '_');
+        c.suffix.append(std::to_string(j)).append(1, '_').append(std::to_string(k));
+        c.offset = Vec3(i * spacing.x(), j * spacing.y(), k * spacing.z());
+        if (jitter > 0.0) {
+          const double dx = uniform(), dy = uniform(), dz = uniform();
+          c.offset += jitter * Vec3(dx, dy, dz);
+        }
+        copies.push_back(std::move(c));
+      }
+  return copies;
 }
 
 // `velocity` and `angular_velocity`: numbers, or for a kinematic body signals in any

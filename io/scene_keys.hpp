@@ -33,9 +33,10 @@ inline const List kCollision{
 inline const List kConstraints{"projection",       "tolerance",     "iterations",
                                "project_initial",  "redundant",     "solver",
                                "sparse_threshold", "drift_warning", "drift_stop"};
-inline const List kBody{"name",        "kind", "mass",     "inertia",          "position",
-                        "orientation", "rpy",  "velocity", "angular_velocity", "surface_velocity",
-                        "geometry"};
+inline const List kBody{"name",        "kind",   "mass",     "inertia",          "position",
+                        "orientation", "rpy",    "velocity", "angular_velocity", "surface_velocity",
+                        "geometry",    "pattern"};
+inline const List kBodyPattern{"grid", "spacing", "jitter", "seed"};
 inline const List kGeometry{
     "name",    "shape",           "size",           "radius",   "length",      "file", "scale",
     "surface", "collision_group", "collision_mask", "position", "orientation", "rpy"};
@@ -109,6 +110,7 @@ inline const std::vector<Section>& sections() {
                                         {"simulation.constraints", &kConstraints},
                                         {"bodies[]", &kBody},
                                         {"bodies[].geometry[]", &kGeometry},
+                                        {"bodies[].pattern", &kBodyPattern},
                                         {"robots[]", &kRobot},
                                         {"joints[]", &kJoint},
                                         {"joints[].limit", &kJointLimit},

@@ -83,6 +83,12 @@ class Loader {
   // io/scene_bodies.cpp
   void readBody(const Value& v);
   void readMotion(const Map& m, Body& body);
+  struct PatternCopy {
+    std::string suffix;          // "_i_j_k"
+    Vec3 offset = Vec3::Zero();  // from the entry's position [m]
+  };
+  static constexpr double kMaxPatternBodies = 1e6;  // bodies one pattern entry may make
+  std::vector<PatternCopy> readPattern(const Value& v);
   GeometrySpec readGeometry(const Value& v);
   void readRobot(const Value& v);
   void applyGazeboTags();
