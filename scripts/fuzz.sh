@@ -4,7 +4,8 @@
 #                                       growing build-fuzz/corpus/HARNESS from fuzz/corpus
 #   scripts/fuzz.sh --replay            run every harness once over its seeds and regressions
 #   scripts/fuzz.sh --ci                the CI step: replay, then a fixed number of inputs per
-#                                       harness (FUZZ_RUNS below), seed 1
+#                                       harness (FUZZ_RUNS below), seed 1, JOBS harnesses at
+#                                       a time
 #   scripts/fuzz.sh --list              the harness names
 # HARNESS: scene_yaml_fuzzer urdf_fuzzer urdf_tree_fuzzer mesh_fuzzer hull_fuzzer
 #          cli_values_fuzzer
@@ -100,17 +101,21 @@ case "${1:-}" in
   --ci)
     build
     for h in "${HARNESSES[@]}"; do replay "$h"; done
-    for h in "${HARNESSES[@]}"; do
-      start=$(date +%s)
-      # A fresh working corpus each time, so CI runs the same inputs every time.
-      rm -rf "$BUILD_DIR/corpus/$h"
-      FROM_SEEDS_ONLY=urdf_tree_fuzzer run "$h" -seed=1 -runs="${FUZZ_RUNS[$h]}" \
-        >"$BUILD_DIR/$h.ci.log" 2>&1 ||
-        { tail -n 60 "$BUILD_DIR/$h.ci.log"; echo "fuzz: $h found a defect" >&2; exit 1; }
-      echo "fuzz: $h: $(grep -o 'Done [0-9]* runs in [0-9]* second(s)' "$BUILD_DIR/$h.ci.log")" \
-           "(wall $(($(date +%s) - start)) s)"
-    done ;;
-  ""|-h|--help) sed -n '2,13p' "$0" ;;
+    # The fixed budgets run JOBS harnesses at a time (one per core), the longest first; each
+    # prints its line when it ends. xargs exits non-zero when any of them found a defect.
+    printf '%s\n' urdf_fuzzer scene_yaml_fuzzer cli_values_fuzzer urdf_tree_fuzzer mesh_fuzzer \
+      hull_fuzzer | BUILD_DIR="$BUILD_DIR" xargs -P "$JOBS" -n 1 "$0" --ci-one ;;
+  --ci-one)  # one harness's CI budget (called by --ci on a built tree)
+    h=$2
+    start=$(date +%s)
+    # A fresh working corpus each time, so CI runs the same inputs every time.
+    rm -rf "$BUILD_DIR/corpus/$h"
+    FROM_SEEDS_ONLY=urdf_tree_fuzzer run "$h" -seed=1 -runs="${FUZZ_RUNS[$h]}" \
+      >"$BUILD_DIR/$h.ci.log" 2>&1 ||
+      { tail -n 60 "$BUILD_DIR/$h.ci.log"; echo "fuzz: $h found a defect" >&2; exit 1; }
+    echo "fuzz: $h: $(grep -o 'Done [0-9]* runs in [0-9]* second(s)' "$BUILD_DIR/$h.ci.log")" \
+         "(wall $(($(date +%s) - start)) s)" ;;
+  ""|-h|--help) sed -n '2,14p' "$0" ;;
   *)
     h=$1
     seconds=${2:-600}
