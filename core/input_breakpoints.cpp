@@ -24,8 +24,8 @@ std::vector<double> inputBreakpoints(const Model& model) {
     if (body.surface_velocity_signal)
       for (const Signal& s : *body.surface_velocity_signal) add(s);
     if (body.motion) {
-      for (const Signal& s : body.motion->velocity) add(s);
-      add(body.motion->spin_rate);
+      const std::vector<double> b = body.motion->breakpoints();
+      times.insert(times.end(), b.begin(), b.end());
     }
   }
   std::sort(times.begin(), times.end());
