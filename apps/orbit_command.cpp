@@ -3,9 +3,11 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -26,7 +28,7 @@ struct Arguments {
   std::vector<std::string> overrides;
   study::OrbitSpec spec;
   bool continuation = false;    // --continue given
-  bool branch_options = false;  // --max-points or --step given
+  bool branch_options = false;  // --max-points, --step, --from-hopf or --hopf-amplitude given
   study::BranchSpec branch;
 };
 
@@ -100,8 +102,14 @@ int runBranch(Arguments& a) {
   }
   study::BranchResult r;
   try {
-    std::fprintf(stderr, "tribo orbit: the orbit at %s = %.6g, then the branch towards %.6g\n",
-                 b.parameter.c_str(), b.from, b.to);
+    if (b.from_hopf)
+      std::fprintf(stderr,
+                   "tribo orbit: the Hopf point of steady sliding between %s = %.6g and %.6g, "
+                   "then the branch from it\n",
+                   b.parameter.c_str(), b.from, b.to);
+    else
+      std::fprintf(stderr, "tribo orbit: the orbit at %s = %.6g, then the branch towards %.6g\n",
+                   b.parameter.c_str(), b.from, b.to);
     r = study::continueOrbit(
         a.scene_path, a.overrides, b, [&](const study::BranchPoint& p, std::size_t i) {
           std::fprintf(stderr,
@@ -111,8 +119,11 @@ int runBranch(Arguments& a) {
                        p.stable ? "stable" : "unstable", p.iterations);
         });
   } catch (const study::OrbitError& e) {
-    std::fprintf(stderr, "tribo orbit: no orbit at %s = %.6g: %s\n", b.parameter.c_str(), b.from,
-                 e.what());
+    if (b.from_hopf)
+      std::fprintf(stderr, "tribo orbit: no branch from a Hopf point: %s\n", e.what());
+    else
+      std::fprintf(stderr, "tribo orbit: no orbit at %s = %.6g: %s\n", b.parameter.c_str(), b.from,
+                   e.what());
     return kExitNoOrbit;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo orbit: %s\n", e.what());
@@ -134,6 +145,11 @@ int runBranch(Arguments& a) {
     std::printf("event            %s at %s ~ %.6g (between points %zu and %zu, interpolated)\n",
                 study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter, e.before,
                 e.after);
+  if (b.from_hopf)
+    std::printf(
+        "start            Hopf point at %s ~ %.8g, period %.8g s there (%d modes analyses)\n",
+        b.parameter.c_str(), r.hopf_parameter, 2.0 * std::numbers::pi / r.hopf_omega,
+        r.hopf_analyses);
   std::printf("results          %s (%.3g s)\n", out.string().c_str(), r.seconds);
   return r.interrupted ? kExitInterrupted : r.lost ? kExitBranchLost : 0;
 }
@@ -141,7 +157,9 @@ int runBranch(Arguments& a) {
 int runOrbit(Arguments& a) {
   if (a.continuation) return runBranch(a);
   if (a.branch_options) {
-    std::fprintf(stderr, "tribo orbit: --max-points and --step apply with --continue only\n");
+    std::fprintf(stderr,
+                 "tribo orbit: --max-points, --step, --from-hopf and --hopf-amplitude apply with "
+                 "--continue only\n");
     return 1;
   }
   io::Scene scene;
@@ -224,6 +242,23 @@ Command addOrbitCommand(CLI::App& tribo) {
                    "(default: |TO - FROM| / 10)",
                    [a](const std::string& v) {
                      a->branch.step = positive("--step", v);
+                     a->branch_options = true;
+                   });
+  orbit->add_flag_function(
+      "--from-hopf",
+      [a](std::int64_t) {
+        a->branch.from_hopf = true;
+        a->branch_options = true;
+      },
+      "with --continue: start at the Hopf point of steady sliding between FROM\n"
+      "and TO (where `tribo modes` finds its leading oscillatory mode turning\n"
+      "unstable) instead of at the orbit a settling run finds at FROM; finds the\n"
+      "unstable cycles of a subcritical Hopf point");
+  addCheckedOption(*orbit, "--hopf-amplitude", "A",
+                   "with --from-hopf: the first orbit peaks A above steady sliding in the\n"
+                   "summary's coordinate [m or rad] (1e-3)",
+                   [a](const std::string& v) {
+                     a->branch.hopf_amplitude = positive("--hopf-amplitude", v);
                      a->branch_options = true;
                    });
   orbit->footer(

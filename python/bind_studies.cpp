@@ -12,6 +12,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "python/bindings.hpp"
@@ -138,11 +139,13 @@ py::array_t<double> arrayOf(const std::vector<double>& v) {
 }
 
 py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter, double start,
-                          double end, int max_points, double step, double settle,
-                          double tolerance) {
-  if (!(max_points >= 2) || !(step >= 0.0) || !(settle >= 0.0) || !(tolerance > 0.0))
+                          double end, int max_points, double step, double settle, double tolerance,
+                          bool from_hopf, double hopf_amplitude) {
+  if (!(max_points >= 2) || !(step >= 0.0) || !(settle >= 0.0) || !(tolerance > 0.0) ||
+      !(hopf_amplitude >= 0.0) || !std::isfinite(hopf_amplitude))
     throw py::value_error(
-        "orbit_branch: max_points must be >= 2, step >= 0, settle >= 0 and tolerance > 0");
+        "orbit_branch: max_points must be >= 2, step >= 0, settle >= 0, tolerance > 0 and "
+        "hopf_amplitude >= 0");
   if (!scene.user_laws.empty())
     throw py::value_error(
         "orbit_branch: a scene with laws written in Python cannot be shot for an orbit (the "
@@ -157,6 +160,8 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
   spec.step = step;
   spec.orbit.settle = settle;
   spec.orbit.tolerance = tolerance;
+  spec.from_hopf = from_hopf;
+  spec.hopf_amplitude = hopf_amplitude;
   study::BranchResult r;
   {
     py::gil_scoped_release release;
@@ -215,14 +220,18 @@ void bindStudies(py::module_& m) {
         "Raises OrbitError (not autonomous, no oscillation, no convergence).");
   m.def("orbit_branch", &runOrbitBranch, py::arg("scene"), py::arg("parameter"), py::arg("start"),
         py::arg("end"), py::arg("max_points") = 20, py::arg("step") = 0.0, py::arg("settle") = 0.0,
-        py::arg("tolerance") = 1e-9,
+        py::arg("tolerance") = 1e-9, py::arg("from_hopf") = false, py::arg("hopf_amplitude") = 0.0,
         "orbit_branch(scene, parameter, start, end, max_points=20, step=0, settle=0, "
-        "tolerance=1e-9) -> dict: the orbit at parameter = start continued towards end as "
-        "`tribo orbit --continue` does (branch.json's document: status, stop_reason, events, "
+        "tolerance=1e-9, from_hopf=False, hopf_amplitude=0) -> dict: the orbit at parameter = "
+        "start continued towards end as `tribo orbit --continue` does; from_hopf=True starts "
+        "instead at the Hopf point of steady sliding between start and end, with a first "
+        "orbit of hopf_amplitude (0: 1e-3) ('hopf': where) "
+        "(branch.json's document: status, stop_reason, events, "
         "'branch' per point), with 'columns' (parameter, period, amplitude_pp, "
         "largest_multiplier, stable, stick_fraction, min_slip, steady_growth_rate as arrays) and "
         "'orbits' (each "
-        "point's 't' and 'x' over one period). Raises OrbitError (no orbit at start), "
+        "point's 't' and 'x' over one period). Raises OrbitError (no orbit at start, no Hopf "
+        "point in the range), "
         "SceneError (unknown or non-numeric parameter).");
   m.def("tradeoff", &runTradeoff, py::arg("scene"), py::arg("set") = py::none(),
         py::arg("integrators") = std::vector<std::string>{}, py::arg("window") = 10.0,

@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <thread>
 #include <utility>
 
@@ -12,6 +14,7 @@
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
 #include "study/modes/modes.hpp"
+#include "study/orbit/hopf_start.hpp"
 #include "study/orbit/orbit_coordinates.hpp"
 #include "study/orbit/shooting.hpp"
 
@@ -174,6 +177,50 @@ Correction correct(const BranchShooter& shooter, const Eigen::VectorXd& z_pred,
   }
 }
 
+// Newton from z on the closing and phase rows and the amplitude row z[index] = value, which
+// keeps the first orbit off the equilibrium at a Hopf point (hopf_start.hpp).
+Correction solveFixedAmplitude(const BranchShooter& shooter, const Eigen::VectorXd& z0,
+                               Eigen::Index index, double value, int max_iterations,
+                               double tolerance) {
+  Correction c;
+  c.z = z0;
+  const Eigen::Index n = z0.size() - 2;
+  for (int it = 0;; ++it) {
+    try {
+      shooter.evaluate(c.z, c.F, c.A, c.monodromy);
+    } catch (const std::exception& e) {  // OrbitError, io::SceneError
+      c.why = e.what();
+      return c;
+    }
+    c.iterations = it;
+    const double gap = c.z[index] - value;
+    c.residual = std::hypot(c.F.norm(), gap) / (1.0 + c.z.head(n).norm());
+    if (c.residual <= tolerance) {
+      c.ok = true;
+      return c;
+    }
+    if (it == max_iterations) {
+      c.why = "Newton's iteration did not converge in " + std::to_string(max_iterations) +
+              " iterations (residual " + number(c.residual) + ")";
+      return c;
+    }
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 2, n + 2);
+    J.topRows(n + 1) = c.A;
+    J(n + 1, index) = 1.0;
+    Eigen::VectorXd rhs(n + 2);
+    rhs.head(n + 1) = -c.F;
+    rhs[n + 1] = -gap;
+    const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(rhs);
+    // A damped step, as in correct().
+    const double scale = std::min(1.0, 0.25 * c.z[n] / std::max(std::abs(dz[n]), 1e-300));
+    c.z += scale * dz;
+    if (!(c.z[n] > 0.0) || !c.z.allFinite()) {
+      c.why = "Newton's iteration left the orbit (period " + number(c.z[n]) + " s)";
+      return c;
+    }
+  }
+}
+
 // Modulus of the largest multiplier among the non-trivial ones that `pick` selects (0: none).
 template <typename Pick>
 double largestOf(const BranchPoint& p, Pick pick) {
@@ -312,24 +359,51 @@ BranchResult continueOrbitFromText(
                            "': expected a number to continue in");
   }
   BranchResult r;
-  const io::Scene first = document.load([&] {
+  const auto sceneAt = [&](double p) {
     std::vector<std::string> o = overrides;
-    o.push_back(assignment(spec.parameter, spec.from));
-    return o;
-  }());
-  const OrbitResult orbit = findPeriodicOrbit(first, spec.orbit);
-  // A damped settling run can lead Newton onto the equilibrium it decays to, which closes on
-  // itself for any T: no orbit to follow.
-  if (!(orbit.amplitude_pp > kCollapsed * orbit.guess_amplitude_pp))
-    throw OrbitError("the orbit found at " + spec.parameter + " = " + number(spec.from) +
-                     " is an equilibrium (amplitude " + number(orbit.amplitude_pp) +
-                     " against the settling run's " + number(orbit.guess_amplitude_pp) +
-                     "): the oscillation decays there; start the branch where it does not");
-  r.observed = orbit.observed;
+    o.push_back(assignment(spec.parameter, p));
+    return document.load(o);
+  };
+  // The start: the orbit a settling run leads Newton to at `from`, or the Hopf point of steady
+  // sliding in the range (its orbit is solved for below, once the shooter is set up).
+  std::unique_ptr<OrbitResult> orbit;
+  std::unique_ptr<HopfPoint> hopf;
+  if (spec.from_hopf) {
+    hopf = std::make_unique<HopfPoint>(locateHopf(sceneAt, spec.from, spec.to));
+    r.hopf_parameter = hopf->parameter;
+    r.hopf_omega = hopf->omega;
+    r.hopf_analyses = hopf->analyses;
+  } else {
+    orbit = std::make_unique<OrbitResult>(findPeriodicOrbit(sceneAt(spec.from), spec.orbit));
+    // A damped settling run can lead Newton onto the equilibrium it decays to, which closes on
+    // itself for any T: no orbit to follow.
+    if (!(orbit->amplitude_pp > kCollapsed * orbit->guess_amplitude_pp))
+      throw OrbitError("the orbit found at " + spec.parameter + " = " + number(spec.from) +
+                       " is an equilibrium (amplitude " + number(orbit->amplitude_pp) +
+                       " against the settling run's " + number(orbit->guess_amplitude_pp) +
+                       "): the oscillation decays there; start the branch where it does not");
+  }
+  const double p0 = hopf ? hopf->parameter : spec.from;
+  const io::Scene first = sceneAt(p0);
   const int body = shooting::shootableBody(first);
   const int axis = first.output.summary.coordinate;
-  const OrbitCoordinates coords(*first.model, orbit.reference);
+  r.observed = first.output.summary.body + "." + std::string(1, "xyz"[axis]);
+  const State& reference = hopf ? hopf->steady : orbit->reference;
+  const OrbitCoordinates coords(*first.model, reference);
   const Eigen::Index n = coords.size();
+  // The Hopf start's guess: steady sliding plus eps times the mode's real part.
+  const double eps = spec.hopf_amplitude > 0.0 ? spec.hopf_amplitude : kDefaultHopfAmplitude;
+  const Eigen::Index amplitude_index = coords.positionIndex(body, axis);
+  Eigen::VectorXd y_steady, y0;
+  double T0 = 0;
+  if (hopf) {
+    y_steady = coords.toVector(hopf->steady);
+    y0 = y_steady + eps * hopfDirection(*hopf, *first.model, coords, body, axis);
+    T0 = 2.0 * std::numbers::pi / hopf->omega;
+  } else {
+    y0 = orbit->start;
+    T0 = orbit->period;
+  }
   const double range = std::abs(spec.to - spec.from);
   const double dp = spec.fd_parameter > 0.0
                         ? spec.fd_parameter
@@ -338,8 +412,7 @@ BranchResult continueOrbitFromText(
       std::max(1u, spec.orbit.threads ? spec.orbit.threads : std::thread::hardware_concurrency());
   const BranchShooter shooter(
       document, overrides, spec.parameter, coords, coords.velocityIndex(body, axis),
-      shooting::fdFloor(orbit.start, orbit.reference.friction_values.size()), spec.orbit.fd_step,
-      dp, threads);
+      shooting::fdFloor(y0, reference.friction_values.size()), spec.orbit.fd_step, dp, threads);
   const double step = spec.step > 0.0 ? spec.step : range / 10.0;
   const double min_step = spec.min_step > 0.0 ? spec.min_step : step / 64.0;
   const double max_step = spec.max_step > 0.0 ? spec.max_step : 4.0 * step;
@@ -412,22 +485,44 @@ BranchResult continueOrbitFromText(
     return pt;
   };
 
-  // The first point: the orbit found, its Jacobian with the parameter's column for the tangent.
+  // The first point: the orbit found, its Jacobian with the parameter's column for the tangent;
+  // from a Hopf point, the orbit of amplitude eps solved for first, and the tangent on which
+  // the amplitude grows.
   Eigen::VectorXd z(n + 2);
-  z << orbit.start, orbit.period, spec.from;
+  z << y0, T0, p0;
   Eigen::VectorXd F;
   Eigen::MatrixXd A, monodromy;
-  shooter.evaluate(z, F, A, monodromy);
   Eigen::VectorXd along = Eigen::VectorXd::Zero(n + 2);
-  along[n + 1] = direction;
+  int first_iterations = 0;
+  if (hopf) {
+    const Correction c = solveFixedAmplitude(
+        shooter, z, amplitude_index, y_steady[amplitude_index] + eps,
+        std::max(spec.max_corrector, spec.orbit.max_iterations), spec.orbit.tolerance);
+    if (!c.ok)
+      throw OrbitError("no orbit of amplitude " + number(eps) + " at the Hopf point " +
+                       spec.parameter + " ~ " + number(hopf->parameter) + ": " + c.why +
+                       " (a smaller --hopf-amplitude, or a time step the scene's laws "
+                       "resolve, may help)");
+    z = c.z;
+    F = c.F;
+    A = c.A;
+    monodromy = c.monodromy;
+    first_iterations = c.iterations;
+    along[amplitude_index] = 1.0;
+  } else {
+    shooter.evaluate(z, F, A, monodromy);
+    first_iterations = orbit->iterations;
+    along[n + 1] = direction;
+  }
   Eigen::VectorXd tangent = unitTangent(A, along);
   {
     BranchPoint pt = makePoint(z, monodromy, tangent);
-    pt.iterations = orbit.iterations;
-    pt.residual = F.norm() / (1.0 + orbit.start.norm());
+    pt.iterations = first_iterations;
+    pt.residual = F.norm() / (1.0 + z.head(n).norm());
     r.points.push_back(std::move(pt));
     if (progress) progress(r.points.back(), 0);
   }
+  const double low = std::min(spec.from, spec.to), high = std::max(spec.from, spec.to);
 
   Eigen::VectorXd d = tangent;  // the predictor's direction: the tangent, then the secant
   double ds = step;
@@ -479,12 +574,18 @@ BranchResult continueOrbitFromText(
     d = (c.z - z).normalized();
     z = c.z;
     tangent = t;
-    if ((p - spec.to) * direction >= 0.0) {
+    if (hopf && (p <= low || p >= high)) {  // a Hopf start's branch goes either way
+      r.reached_end = true;
+      r.stop_reason = "reached " + spec.parameter + " = " + number(p <= low ? low : high) +
+                      " (the range's end)";
+      break;
+    }
+    if (!hopf && (p - spec.to) * direction >= 0.0) {
       r.reached_end = true;
       r.stop_reason = "reached " + spec.parameter + " = " + number(spec.to);
       break;
     }
-    if ((p - spec.from) * direction < 0.0) {
+    if (!hopf && (p - spec.from) * direction < 0.0) {
       r.stop_reason = "the branch turned back past the start value " + number(spec.from);
       break;
     }
@@ -552,6 +653,17 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                                 : "stopped";
   j["stop_reason"] = r.stop_reason;
   j["stick_speed"] = r.stick_speed;
+  if (spec.from_hopf) {  // where the branch started, located by the modes analysis
+    j["start"] = "hopf";
+    j["hopf"] = {
+        {"parameter", r.hopf_parameter},
+        {"omega", r.hopf_omega},
+        {"period", 2.0 * std::numbers::pi / r.hopf_omega},
+        {"amplitude", spec.hopf_amplitude > 0.0 ? spec.hopf_amplitude : kDefaultHopfAmplitude},
+        {"analyses", r.hopf_analyses}};
+  } else {
+    j["start"] = "orbit";
+  }
   j["points"] = r.points.size();
   nlohmann::ordered_json events = nlohmann::ordered_json::array();
   for (const BranchEvent& e : r.events)

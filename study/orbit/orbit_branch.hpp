@@ -37,8 +37,13 @@
 // Located values are interpolations between two points, not solved for.
 // Beside each point, steady sliding at the same parameter as `tribo modes` analyses it (its
 // leading growth rate): where the two branches coexist, both stable, is hysteresis.
-// Not here: branch switching at a period doubling, a start from a Hopf point of
-// `tribo modes`, scaled arclength norms, matrix-free solves for large states.
+// The branch may also start at a Hopf point of steady sliding (BranchSpec::from_hopf,
+// study/orbit/hopf_start.hpp): the first orbit is solved with its amplitude fixed (a row
+// y_obs - y_obs,steady = eps in place of the arclength row), the unknowns z as above, from
+// the guess steady state + eps (mode's real part), T = 2 pi / omega, p = p_H; the branch then
+// leaves along the tangent on which the amplitude grows, and stops when p leaves the range.
+// Not here: branch switching at a period doubling, scaled arclength norms, matrix-free solves
+// for large states.
 #pragma once
 
 #include <Eigen/Dense>
@@ -64,6 +69,13 @@ struct BranchSpec {
   int max_corrector = 6;    // Newton iterations per point at most
   double fd_parameter = 0;  // dp of the p column; 0: orbit.fd_step max(|p|, |to - from|)
   OrbitSpec orbit;          // the first orbit (settle), tolerance, fd_step, threads
+  // Start at the Hopf point of steady sliding between `from` and `to`
+  // (study/orbit/hopf_start.hpp) instead of at the orbit a settling run finds at `from`: the
+  // first orbit has the observed coordinate peaking `hopf_amplitude` [m or rad] above steady
+  // sliding's value (0: 1e-3), and the branch runs whichever way the orbits go, within the
+  // range.
+  bool from_hopf = false;
+  double hopf_amplitude = 0;
   // Set from outside (a signal handler): the branch ends after the point in hand, with the
   // points so far (BranchResult::interrupted).
   const std::atomic<bool>* stop = nullptr;
@@ -111,16 +123,21 @@ struct BranchResult {
   bool reached_end = false;  // a point at or past `to`
   bool lost = false;         // stopped by the corrector failing at the smallest step
   bool interrupted = false;  // stopped by BranchSpec::stop
+  // With BranchSpec::from_hopf: the Hopf point the branch started from (NaN otherwise), the
+  // angular frequency of its mode [rad/s] and the modes analyses its location took.
+  double hopf_parameter = NAN, hopf_omega = NAN;
+  int hopf_analyses = 0;
   std::string stop_reason;
   double seconds = 0;
 };
 
 // The branch from the orbit findPeriodicOrbit finds at `from` (scene `path` loaded with
-// `overrides` and then parameter=value). `progress(point, index)` after each point if given.
-// Throws io::SceneError for an unreadable scene or an unknown or non-numeric parameter (before
-// any work), OrbitError when there is no orbit at `from` (or only the equilibrium a damped
-// settling run decays to); a branch lost later returns the
-// points found so far with stop_reason saying why.
+// `overrides` and then parameter=value), or from the Hopf point in [from, to] (from_hopf).
+// `progress(point, index)` after each point if given. Throws io::SceneError for an unreadable scene
+// or an unknown or non-numeric parameter (before any work), OrbitError when there is no orbit at
+// `from` (or only the equilibrium a damped settling run decays to) or, with from_hopf, no Hopf
+// point in the range or no first orbit at it; a branch lost later returns the points found so far
+// with stop_reason saying why.
 BranchResult continueOrbit(
     const std::string& path, const std::vector<std::string>& overrides, const BranchSpec& spec,
     const std::function<void(const BranchPoint&, std::size_t)>& progress = {});

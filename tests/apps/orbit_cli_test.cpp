@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 #include <vector>
 
@@ -208,6 +209,41 @@ TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
   const Result alone = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --step 0.1");
   EXPECT_EQ(alone.status, 1) << alone.output;
   EXPECT_NE(alone.output.find("with --continue"), std::string::npos) << alone.output;
+  for (const std::string hopf : {" --from-hopf", " --hopf-amplitude 1e-3"}) {
+    const Result r = runTribo("orbit " + kBelt + " --out " + dir_.string() + hopf);
+    EXPECT_EQ(r.status, 1) << hopf << ": " << r.output;
+    EXPECT_NE(r.output.find("with --continue"), std::string::npos) << r.output;
+  }
+  const Result amplitude = runTribo("orbit " + kBelt + " --out " + dir_.string() +
+                                    " --continue v_b=0.15:0.5 --from-hopf --hopf-amplitude -1");
+  EXPECT_EQ(amplitude.status, 1) << amplitude.output;
+  EXPECT_NE(amplitude.output.find("--hopf-amplitude: expected a number > 0, found '-1'"),
+            std::string::npos)
+      << amplitude.output;
+}
+
+// --from-hopf: the branch starts at the damped Stribeck belt's Hopf point, where the damper
+// cancels the law's falling slope (0.2271 m/s, tests/study/stribeck_hopf.hpp), with the
+// undamped period 2 pi sqrt(m / k) there; branch.json says where; a range without a Hopf
+// point exits 11 saying so.
+TEST_F(OrbitCli, FromHopfStartsAtTheHopfPointAndSaysWhere) {
+  const std::string damped =
+      " --set friction=stribeck --set 'springs[wall_spring].damping=10' --out " + dir_.string();
+  const Result r = runTribo("orbit " + kBelt + damped +
+                            " --continue v_b=0.15:0.5 --from-hopf --step 0.004 --max-points 2");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("start            Hopf point at v_b ~ 0.2271"), std::string::npos)
+      << r.output;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_EQ(j["start"].get<std::string>(), "hopf");
+  EXPECT_NEAR(j["hopf"]["parameter"].get<double>(), 0.227131, 2e-6);
+  EXPECT_NEAR(j["hopf"]["period"].get<double>(), 2 * std::numbers::pi * std::sqrt(10.0 / 300.0),
+              1e-6);
+  EXPECT_EQ(j["points"].get<int>(), 2);
+  const Result none = runTribo("orbit " + kBelt + damped + " --continue v_b=0.3:0.6 --from-hopf");
+  EXPECT_EQ(none.status, 11) << none.output;
+  EXPECT_NE(none.output.find("no Hopf point between 0.3 and 0.6"), std::string::npos)
+      << none.output;
 }
 
 }  // namespace

@@ -155,3 +155,32 @@ def test_orbit_branch_points_are_the_orbits_at_their_parameter(belt):
         tribo.orbit_branch(tribo.load_scene(belt), "no_such", 1.0, 1.5)
     with pytest.raises(ValueError, match="max_points must be >= 2"):
         tribo.orbit_branch(tribo.load_scene(belt), "v_b", 1.0, 1.5, max_points=1)
+
+
+def test_orbit_branch_from_hopf_starts_where_the_damper_cancels_the_slope(belt):
+    """from_hopf=True starts the branch at the damped Stribeck belt's Hopf point: where the
+    10 N s/m damper cancels the law's falling slope, c = -mu'(v_H) m g (closed form by
+    bisection here), with the undamped period 2 pi sqrt(m / k) there; the unstable cycle
+    born there lives where steady sliding is stable (v_b > v_H)."""
+    d_mu, v_st, mg, c = 0.05, 0.15, 10 * 9.81, 10.0
+
+    def excess(v):  # -mu'(v) m g - c
+        s = v / v_st
+        return 2 * d_mu * s / v_st * math.exp(-s * s) * mg - c
+
+    lo, hi = v_st / math.sqrt(2), 1.0
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if excess(mid) > 0 else (lo, mid)
+    scene = tribo.load_scene(
+        belt, set={"friction": "stribeck", "springs[wall_spring].damping": c})
+    b = tribo.orbit_branch(scene, "v_b", 0.15, 0.5, step=0.004, max_points=2, from_hopf=True)
+    assert b["start"] == "hopf"
+    assert b["hopf"]["parameter"] == pytest.approx(lo, rel=1e-5)
+    assert b["hopf"]["period"] == pytest.approx(2 * math.pi * math.sqrt(10 / 300), rel=1e-6)
+    assert all(p > lo for p in b["columns"]["parameter"])
+    assert not any(b["columns"]["stable"])
+    with pytest.raises(tribo.OrbitError, match="no Hopf point between"):
+        tribo.orbit_branch(scene, "v_b", 0.3, 0.6, from_hopf=True)
+    with pytest.raises(ValueError, match="hopf_amplitude >= 0"):
+        tribo.orbit_branch(scene, "v_b", 0.15, 0.5, from_hopf=True, hopf_amplitude=-1)

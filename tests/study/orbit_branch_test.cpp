@@ -20,6 +20,7 @@
 
 #include "io/scene_parameters.hpp"
 #include "one_dof_cycle.hpp"
+#include "stribeck_hopf.hpp"
 
 namespace tribo {
 namespace {
@@ -82,22 +83,8 @@ TEST(OrbitBranch, TheBeltsBranchInBeltSpeedIsTheOneDofModelsCycleAtEachPoint) {
   RecordProperty("seconds", std::to_string(seconds));
 }
 
-// The speed where steady sliding on the belt with the stribeck law and a viscous damper c
-// turns stable (a Hopf point of the linearization): where the damper cancels the law's
-// falling slope, c = -mu'(v) m g, mu(v) = mu_k + (mu_s - mu_k) exp(-(v / v_st)^2) far above
-// v_eps (its tanh factor is 1 to 1e-19 there); by bisection on the falling side's root.
-double stribeckHopfSpeed(double c) {
-  const double mu_s = 0.35, mu_k = 0.3, v_st = 0.15, mg = 10.0 * 9.81;
-  auto excess = [&](double v) {
-    return 2.0 * (mu_s - mu_k) * v / (v_st * v_st) * std::exp(-(v / v_st) * (v / v_st)) * mg - c;
-  };
-  double lo = v_st / std::sqrt(2.0), hi = 1.0;  // the steepest slope, and far beyond
-  for (int i = 0; i < 100; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (excess(mid) > 0.0 ? lo : hi) = mid;
-  }
-  return lo;
-}
+// The speed where steady sliding on the damped belt turns stable (tests/study/stribeck_hopf.hpp).
+double stribeckHopfSpeed(double c) { return DampedStribeckBelt{c}.hopfSpeed(); }
 
 TEST(OrbitBranch, TheDampedBeltFoldsWhereStickSlipMeetsTheUnstableCycleOfItsSubcriticalHopf) {
   // Stribeck's smooth law and a 10 N s/m damper beside the wall spring: steady sliding is

@@ -1,0 +1,147 @@
+#include "study/orbit/hopf_start.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "study/orbit/periodic_orbit.hpp"
+
+namespace tribo::study {
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+struct Sample {
+  double p = 0, growth = 0;
+  ModesResult modes;
+  const Mode* mode = nullptr;  // the leading oscillatory one, in modes
+};
+
+// Steady sliding's leading oscillatory mode at p.
+Sample sampleAt(const std::function<io::Scene(double)>& sceneAt, double p) {
+  Sample s;
+  s.p = p;
+  try {
+    s.modes = analyzeModes(sceneAt(p));
+  } catch (const std::exception& e) {
+    throw OrbitError(
+        "no Hopf point to start from: the modes analysis of steady sliding failed at " + number(p) +
+        ": " + e.what());
+  }
+  for (const Mode& m : s.modes.modes)
+    if (m.frequency > 0.0 && (!s.mode || m.growth_rate > s.mode->growth_rate)) s.mode = &m;
+  if (!s.mode)
+    throw OrbitError("no Hopf point to start from: steady sliding has no oscillatory mode at " +
+                     number(p));
+  s.growth = s.mode->growth_rate;
+  return s;
+}
+
+}  // namespace
+
+HopfPoint locateHopf(const std::function<io::Scene(double)>& sceneAt, double from, double to,
+                     int samples) {
+  HopfPoint h;
+  samples = std::max(samples, 1);
+  Sample lo = sampleAt(sceneAt, from);
+  ++h.analyses;
+  const double first_growth = lo.growth;
+  Sample hi;
+  bool bracketed = false;
+  for (int i = 1; i <= samples && !bracketed; ++i) {
+    hi = sampleAt(sceneAt, from + (to - from) * i / samples);
+    ++h.analyses;
+    if ((lo.growth > 0.0) != (hi.growth > 0.0)) {
+      bracketed = true;
+    } else {
+      lo = std::move(hi);
+      hi = Sample{};
+    }
+  }
+  if (!bracketed)
+    throw OrbitError(
+        "no Hopf point between " + number(from) + " and " + number(to) +
+        ": the growth rate of steady sliding's leading oscillatory mode keeps its sign (" +
+        number(first_growth) + " 1/s at " + number(from) + ", " + number(lo.growth) + " 1/s at " +
+        number(lo.p) + "); widen the range or start from an orbit");
+  h.lower = lo.p;
+  h.upper = hi.p;
+  h.growth_lower = lo.growth;
+  h.growth_upper = hi.growth;
+  // Bisection: sigma(p) is smooth but its slope is not known, and 40 to 50 analyses of a
+  // small scene cost milliseconds.
+  const bool rising = hi.growth > 0.0;
+  double a = lo.p, b = hi.p;
+  Sample best = std::abs(lo.growth) < std::abs(hi.growth) ? std::move(lo) : std::move(hi);
+  while (std::abs(b - a) > 1e-12 * std::max(1.0, std::abs(a))) {
+    const double mid = 0.5 * (a + b);
+    if (mid == a || mid == b) break;
+    Sample s = sampleAt(sceneAt, mid);
+    ++h.analyses;
+    ((s.growth > 0.0) == rising ? b : a) = mid;
+    if (std::abs(s.growth) <= std::abs(best.growth)) best = std::move(s);
+  }
+  h.parameter = best.p;
+  h.omega = std::abs(best.mode->eigenvalue.imag());
+  h.steady = best.modes.steady.state;
+  h.shape = best.mode->shape;
+  // A pair reported with omega < 0 has the conjugate shape: the phases change sign.
+  if (best.mode->eigenvalue.imag() < 0.0)
+    for (ShapeEntry& e : h.shape) e.phase_deg = -e.phase_deg;
+  return h;
+}
+
+Eigen::VectorXd hopfDirection(const HopfPoint& hopf, const Model& model,
+                              const OrbitCoordinates& coords, int body, int axis) {
+  static const char* kAxes[] = {"x", "y", "z"};
+  const std::string observed =
+      model.bodies[static_cast<std::size_t>(body)].name + "." + kAxes[axis];
+  const auto obs = std::find_if(hopf.shape.begin(), hopf.shape.end(),
+                                [&](const ShapeEntry& e) { return e.coordinate == observed; });
+  if (obs == hopf.shape.end() || !(obs->magnitude > 1e-9))
+    throw OrbitError("the Hopf mode leaves the observed coordinate " + observed +
+                     " at rest: observe a coordinate the mode moves (output.summary)");
+  const double deg = std::numbers::pi / 180.0;
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(coords.size());
+  // The mode's entries per body: translation (world) and rotation vector (world, as the
+  // modes analysis takes it; the orbit's is in the body's reference frame).
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const int bi = static_cast<int>(b);
+    if (coords.positionIndex(bi, 0) < 0) continue;
+    Eigen::Vector3d dx = Eigen::Vector3d::Zero(), dv = Eigen::Vector3d::Zero();
+    Eigen::Vector3d dth = Eigen::Vector3d::Zero(), dw = Eigen::Vector3d::Zero();
+    for (const ShapeEntry& s : hopf.shape) {
+      const std::string& name = s.coordinate;
+      const std::string prefix = model.bodies[b].name + ".";
+      if (name.compare(0, prefix.size(), prefix) != 0) continue;
+      const std::string which = name.substr(prefix.size());
+      const double phase = (s.phase_deg - obs->phase_deg) * deg;
+      const double amp = s.magnitude / obs->magnitude;
+      for (int k = 0; k < 3; ++k) {
+        if (which == kAxes[k]) {
+          dx[k] = amp * std::cos(phase);
+          dv[k] = -hopf.omega * amp * std::sin(phase);
+        } else if (which == std::string("r") + kAxes[k]) {
+          dth[k] = amp * std::cos(phase);
+          dw[k] = -hopf.omega * amp * std::sin(phase);
+        }
+      }
+    }
+    const Eigen::Matrix3d R0 = hopf.steady.bodies[b].orientation.toRotationMatrix();
+    const Eigen::Index p = coords.positionIndex(bi, 0), v = coords.velocityIndex(bi, 0);
+    e.segment<3>(p) = dx;
+    e.segment<3>(p + 3) = R0.transpose() * dth;
+    e.segment<3>(v) = dv;
+    e.segment<3>(v + 3) = dw;
+  }
+  return e;
+}
+
+}  // namespace tribo::study
