@@ -86,8 +86,8 @@ BodyIndex ModelBuilder::addBody(const Body& body) {
     b.velocity = at0.velocity;
     b.angular_velocity = at0.angular_velocity;
   }
-  model_.bodies.push_back(b);
-  body_index_[b.name] = static_cast<int>(model_.bodies.size()) - 1;
+  body_index_.emplace(b.name, static_cast<int>(model_.bodies.size()));
+  model_.bodies.push_back(std::move(b));
   return BodyIndex{static_cast<int>(model_.bodies.size()) - 1};
 }
 
@@ -101,7 +101,9 @@ Body ModelBuilder::checkedBody(BodyIndex index, const std::string& what) const {
 int ModelBuilder::addGeometry(const std::string& name, BodyIndex body, const contact::Shape& shape,
                               const Eigen::Isometry3d& local_pose) {
   const std::string who = "geometry '" + name + "'";
-  checkedBody(body, who);
+  // The index alone (checkedBody would copy the body: a pattern adds thousands of geometries).
+  if (!body.isWorld() && (body.value < 0 || body.value >= static_cast<int>(model_.bodies.size())))
+    throw ModelError(who + ": body index " + std::to_string(body.value) + " out of range");
   if (findGeometry(name)) throw ModelError(who + ": a geometry of that name already exists");
   checkGeometry(name, shape, local_pose);
   Geometry geometry;
@@ -109,8 +111,8 @@ int ModelBuilder::addGeometry(const std::string& name, BodyIndex body, const con
   geometry.body = body;
   geometry.shape = shape;
   geometry.local_pose = local_pose;
-  model_.geometries.push_back(geometry);
-  geometry_index_[name] = static_cast<int>(model_.geometries.size()) - 1;
+  model_.geometries.push_back(std::move(geometry));
+  geometry_index_.emplace(name, static_cast<int>(model_.geometries.size()) - 1);
   return static_cast<int>(model_.geometries.size()) - 1;
 }
 
@@ -292,7 +294,24 @@ std::optional<int> ModelBuilder::findGeometry(const std::string& name) const {
   return std::nullopt;
 }
 
-std::shared_ptr<const Model> ModelBuilder::build() const {
+void ModelBuilder::reserve(std::size_t bodies, std::size_t geometries) {
+  model_.bodies.reserve(model_.bodies.size() + bodies);
+  model_.geometries.reserve(model_.geometries.size() + geometries);
+  body_index_.reserve(body_index_.size() + bodies);
+  geometry_index_.reserve(geometry_index_.size() + geometries);
+}
+
+std::shared_ptr<const Model> ModelBuilder::build() const& {
+  checkOptions();
+  return finish(std::make_shared<Model>(model_));
+}
+
+std::shared_ptr<const Model> ModelBuilder::build() && {
+  checkOptions();
+  return finish(std::make_shared<Model>(std::move(model_)));
+}
+
+void ModelBuilder::checkOptions() const {
   const auto& o = options_;
   if (!std::isfinite(o.time_step) || o.time_step <= 0.0)
     throw ModelError("options: time step must be > 0 (got " + numberText(o.time_step) + ")");
@@ -324,7 +343,10 @@ std::shared_ptr<const Model> ModelBuilder::build() const {
   if (!std::isfinite(o.max_internal_step) || o.max_internal_step < 0.0)
     throw ModelError("options: max internal step must be >= 0, 0 for no limit (got " +
                      numberText(o.max_internal_step) + ")");
-  auto model = std::make_shared<Model>(model_);
+}
+
+std::shared_ptr<const Model> ModelBuilder::finish(std::shared_ptr<Model> model) const {
+  const auto& o = options_;
   model->options = options_;
   finishJoints(*model);
   // A velocity drive along a function signal sums its integral panel by panel as the run

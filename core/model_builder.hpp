@@ -112,11 +112,20 @@ class ModelBuilder {
   std::optional<int> findGeometry(const std::string& name) const;
   const std::vector<Body>& bodies() const { return model_.bodies; }
 
+  // Room for `bodies` and `geometries` more (a pattern's copies, io/scene_bodies.cpp): the
+  // model's vectors and the name indexes grow once instead of doubling as they fill.
+  void reserve(std::size_t bodies, std::size_t geometries);
+
   // Options: time_step and duration finite and > 0, time_step <= duration, and at most
-  // kMaxSteps steps.
-  std::shared_ptr<const Model> build() const;
+  // kMaxSteps steps. On a builder that is done (an rvalue: std::move(builder).build()), the
+  // model is moved out instead of copied, and the builder is not to be used again.
+  std::shared_ptr<const Model> build() const&;
+  std::shared_ptr<const Model> build() &&;
 
  private:
+  void checkOptions() const;
+  // What build() does to its copy (or the moved model): joints, integrals, automatic contacts.
+  std::shared_ptr<const Model> finish(std::shared_ptr<Model> model) const;
   Body checkedBody(BodyIndex index, const std::string& what) const;
   Joint& checkedJoint(int joint, const std::string& what, bool scalar_coordinate);
   int pushJoint(Joint joint);

@@ -74,17 +74,19 @@ void Loader::readBody(const Value& v) {
       const int id = guarded(
           g.at, [&] { return builder_.addGeometry(g.name + suffix, index, g.shape, g.pose); });
       builder_.setGeometrySurface(id, g.surface);
-      body_surfaces_.insert(g.surface);
       builder_.setCollisionFilter(id, g.group, g.mask);
       geometry_names_.push_back(g.name + suffix);
     }
   };
+  for (const auto& g : geometries) body_surfaces_.insert(g.surface);  // once, not per copy
   const auto pattern = m.get("pattern");
   if (!pattern) {
     add(body, "");
     return;
   }
-  for (const PatternCopy& copy : readPattern(*pattern)) {
+  const std::vector<PatternCopy> copies = readPattern(*pattern);
+  builder_.reserve(copies.size(), copies.size() * geometries.size());
+  for (const PatternCopy& copy : copies) {
     Body b = body;
     b.name += copy.suffix;
     b.position += copy.offset;

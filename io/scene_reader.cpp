@@ -77,7 +77,7 @@ Scene Loader::load(const std::vector<std::string>& overrides, const RunSettings&
   checkRunOptions(builder_.options(), file_);
   scene.path = file_;
   try {
-    scene.model = builder_.build();
+    scene.model = std::move(builder_).build();  // the builder is done: no copy of the model
   } catch (const ModelError& e) {
     throw SceneError({file_}, "", e.what());
   }

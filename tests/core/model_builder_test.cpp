@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+#include <string>
+#include <utility>
+
 #include "support/test_models.hpp"
 
 namespace tribo {
@@ -36,6 +40,51 @@ TEST(ModelBuilder, RejectsBadBodies) {
             std::string::npos);
   EXPECT_NE(test::modelErrorOf([&] { b.addBody(dynamicBody("world")); }).find("not 'world'"),
             std::string::npos);
+}
+
+// A builder done with (std::move(builder).build()) gives its model without copying it, and
+// reserve() only makes room: the model is the one the copying build() gives, body by body,
+// geometry by geometry, with the same automatic contacts and joints.
+TEST(ModelBuilder, AMovedOrReservedBuildIsTheCopiedOne) {
+  auto make = [](bool reserve) {
+    ModelBuilder b;
+    b.options().time_step = 1e-3;
+    if (reserve) b.reserve(100, 300);
+    b.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace());
+    b.setDefaultMaterial(b.addMaterial(test::coulombMaterial(0.3, 1e5, 50)));
+    for (int i = 0; i < 40; ++i) {
+      Body d = dynamicBody(std::string("d").append(std::to_string(i)));
+      d.position = Vec3(0.3 * i, 1.0, 0.2);
+      const BodyIndex id = b.addBody(d);
+      b.addGeometry(std::string("g").append(std::to_string(i)), id,
+                    contact::Shape::box(Vec3(0.1, 0.1, 0.1)));
+    }
+    b.addJoint("hinge", JointType::kRevolute, BodyIndex{0}, BodyIndex{1}, Vec3(0.15, 1.0, 0.2),
+               Vec3::UnitY());
+    return b;
+  };
+  ModelBuilder copied = make(false), moved = make(true);
+  const std::shared_ptr<const Model> a = copied.build();
+  const std::shared_ptr<const Model> again = copied.build();  // a copying build keeps it
+  const std::shared_ptr<const Model> c = std::move(moved).build();
+  for (const Model* m : {again.get(), c.get()}) {
+    ASSERT_EQ(m->bodies.size(), a->bodies.size());
+    ASSERT_EQ(m->geometries.size(), a->geometries.size());
+    for (std::size_t i = 0; i < a->bodies.size(); ++i) {
+      EXPECT_EQ(m->bodies[i].name, a->bodies[i].name);
+      EXPECT_EQ(m->bodies[i].position, a->bodies[i].position);
+      EXPECT_EQ(m->bodies[i].mass, a->bodies[i].mass);
+    }
+    for (std::size_t i = 0; i < a->geometries.size(); ++i) {
+      EXPECT_EQ(m->geometries[i].name, a->geometries[i].name);
+      EXPECT_EQ(m->geometries[i].body, a->geometries[i].body);
+    }
+    EXPECT_EQ(m->joints.size(), a->joints.size());
+    EXPECT_EQ(m->constraint_equations, a->constraint_equations);
+    EXPECT_EQ(m->automatic_contacts, a->automatic_contacts);
+    EXPECT_EQ(m->contact_pairs.size(), a->contact_pairs.size());
+  }
+  EXPECT_TRUE(a->automatic_contacts);
 }
 
 TEST(ModelBuilder, RejectsBadJointsSpringsAndPairs) {
