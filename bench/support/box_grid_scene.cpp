@@ -38,14 +38,14 @@ bodies:
                   "  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: "
                   "halfspace}]}\n");
   text += line;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      std::snprintf(line, sizeof line,
-                    "  - {name: b%d_%d, mass: 8.0, position: [%.2f, %.2f, %.17g], geometry: "
-                    "[{name: s%d_%d, shape: box, size: [0.2, 0.2, 0.2]}]}\n",
-                    i, j, i * pitch, j * pitch, z0, i, j);
-      text += line;
-    }
+  // One entry for all the boxes (bodies[].pattern): copy (i, j) is box_i_j_0 at
+  // (i pitch, j pitch, z0), as the body-by-body text had it, in the same order.
+  std::snprintf(line, sizeof line,
+                "  - {name: box, mass: 8.0, position: [0, 0, %.17g], geometry: [{name: s, shape: "
+                "box, size: [0.2, 0.2, 0.2]}], pattern: {grid: [%d, %d, 1], spacing: [%.17g, "
+                "%.17g, 0]}}\n",
+                z0, n, n, pitch, pitch);
+  text += line;
   return text;
 }
 
