@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/math.hpp"
 #include "core/signal.hpp"
@@ -62,13 +63,10 @@ struct Body {
   // missed).
   double surfaceSpeedBound(double duration) const {
     if (!surface_velocity_signal) return surface_velocity.norm();
-    double bound = 0.0;
-    auto at = [&](double t) { bound = std::max(bound, surfaceVelocityAt(t).norm()); };
-    for (int i = 0; i <= 1000; ++i) at(duration * i / 1000.0);
+    std::vector<double> breaks;
     for (const Signal& s : *surface_velocity_signal)
-      for (double t : s.breakpoints())
-        if (t >= 0.0 && t <= duration) at(t);
-    return bound;
+      for (double t : s.breakpoints()) breaks.push_back(t);
+    return sampledBound(duration, breaks, [&](double t) { return surfaceVelocityAt(t).norm(); });
   }
 };
 

@@ -113,12 +113,8 @@ struct JointDrive {
                  ? std::abs(f.slope) + std::abs(f.amplitude * f.frequency)
                  : std::abs(f.constant) + std::abs(f.slope) * duration + std::abs(f.amplitude);
     }
-    double bound = 0.0;
-    auto at = [&](double t) { bound = std::max(bound, std::abs(velocity(t))); };
-    for (int i = 0; i <= 1000; ++i) at(duration * i / 1000.0);
-    for (double t : signal->breakpoints())
-      if (t >= 0.0 && t <= duration) at(t);
-    return bound;
+    return sampledBound(duration, signal->breakpoints(),
+                        [&](double t) { return std::abs(velocity(t)); });
   }
 };
 

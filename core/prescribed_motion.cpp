@@ -35,19 +35,6 @@ std::vector<double> PrescribedMotion::breakpoints() const {
   return times;
 }
 
-namespace {
-
-template <class Magnitude>
-double sampledBound(double duration, const std::vector<double>& breaks, Magnitude magnitude) {
-  double bound = 0.0;
-  for (int i = 0; i <= 1000; ++i) bound = std::max(bound, magnitude(duration * i / 1000.0));
-  for (double t : breaks)
-    if (t >= 0.0 && t <= duration) bound = std::max(bound, magnitude(t));
-  return bound;
-}
-
-}  // namespace
-
 double PrescribedMotion::speedBound(double duration) const {
   return sampledBound(duration, breakpoints(), [&](double t) {
     return Vec3(velocity[0].value(t), velocity[1].value(t), velocity[2].value(t)).norm();

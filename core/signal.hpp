@@ -54,6 +54,7 @@
 // them), finding the kinks of a function by itself.
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -126,5 +127,17 @@ class Signal {
   double functionIntegral(double a, double b) const;
   double antiderivative(double t) const;  // closed kinds: some F with F' = value
 };
+
+// The largest magnitude(t) over [0, duration] at 1001 even samples and at the `breakpoints`
+// inside it: the bound on an input's speed that the step estimate and the energy guard's
+// scales use (a peak narrower than duration / 1000 between breakpoints may be missed).
+template <class Magnitude>
+double sampledBound(double duration, const std::vector<double>& breakpoints, Magnitude magnitude) {
+  double bound = 0.0;
+  for (int i = 0; i <= 1000; ++i) bound = std::max(bound, magnitude(duration * i / 1000.0));
+  for (double t : breakpoints)
+    if (t >= 0.0 && t <= duration) bound = std::max(bound, magnitude(t));
+  return bound;
+}
 
 }  // namespace tribo
