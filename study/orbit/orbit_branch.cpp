@@ -130,58 +130,13 @@ struct Correction {
   double residual = 0;
 };
 
-// Newton from the prediction z_pred = z_k + ds d on the closing, phase and arclength rows.
-Correction correct(const BranchShooter& shooter, const Eigen::VectorXd& z_pred,
-                   const Eigen::VectorXd& d, double ds, int max_iterations, double tolerance) {
-  Correction c;
-  c.z = z_pred;
-  const Eigen::Index n = z_pred.size() - 2;
-  for (int it = 0;; ++it) {
-    try {
-      shooter.evaluate(c.z, c.F, c.A, c.monodromy);
-    } catch (const std::exception& e) {  // OrbitError, io::SceneError
-      c.why = e.what();
-      return c;
-    }
-    c.iterations = it;
-    c.residual = c.F.norm() / (1.0 + c.z.head(n).norm());
-    if (c.residual <= tolerance) {
-      c.ok = true;
-      return c;
-    }
-    if (it == max_iterations) {
-      c.why = "Newton's iteration did not converge in " + std::to_string(max_iterations) +
-              " iterations (residual " + number(c.residual) + ")";
-      return c;
-    }
-    Eigen::MatrixXd J(n + 2, n + 2);
-    J.topRows(n + 1) = c.A;
-    J.row(n + 1) = d.transpose();
-    Eigen::VectorXd rhs(n + 2);
-    rhs.head(n + 1) = -c.F;
-    rhs[n + 1] = -d.dot(c.z - z_pred);
-    const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(rhs);
-    // A damped step: the period changes by at most a quarter of itself.
-    const double T = c.z[n];
-    const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
-    c.z += scale * dz;
-    if (!(c.z[n] > 0.0) || !c.z.allFinite()) {
-      c.why = "Newton's iteration left the orbit (period " + number(c.z[n]) + " s)";
-      return c;
-    }
-    if ((c.z - z_pred).norm() > ds) {
-      c.why = "the correction (" + number((c.z - z_pred).norm()) +
-              ") went farther than the step (" + number(ds) + ")";
-      return c;
-    }
-  }
-}
-
-// Newton from z on the closing and phase rows and the amplitude row z[index] = value, which
-// keeps the first orbit off the equilibrium at a Hopf point (hopf_start.hpp).
-Correction solveFixedAmplitude(const BranchShooter& shooter, const Eigen::VectorXd& z0,
-                               Eigen::Index index, double value, int max_iterations,
-                               double tolerance) {
+// Newton from z0 on the closing and phase rows and one linear row, row . z = value: the
+// arclength row of a continuation step (row d, value d . z_pred) or the amplitude row of a
+// Hopf start (row e_obs, value the fixed peak, hopf_start.hpp). A correction farther than
+// `reach` from z0 fails.
+Correction newtonWithRow(const BranchShooter& shooter, const Eigen::VectorXd& z0,
+                         const Eigen::VectorXd& row, double value, double reach, int max_iterations,
+                         double tolerance) {
   Correction c;
   c.z = z0;
   const Eigen::Index n = z0.size() - 2;
@@ -193,7 +148,7 @@ Correction solveFixedAmplitude(const BranchShooter& shooter, const Eigen::Vector
       return c;
     }
     c.iterations = it;
-    const double gap = c.z[index] - value;
+    const double gap = row.dot(c.z) - value;
     c.residual = std::hypot(c.F.norm(), gap) / (1.0 + c.z.head(n).norm());
     if (c.residual <= tolerance) {
       c.ok = true;
@@ -204,21 +159,43 @@ Correction solveFixedAmplitude(const BranchShooter& shooter, const Eigen::Vector
               " iterations (residual " + number(c.residual) + ")";
       return c;
     }
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 2, n + 2);
+    Eigen::MatrixXd J(n + 2, n + 2);
     J.topRows(n + 1) = c.A;
-    J(n + 1, index) = 1.0;
+    J.row(n + 1) = row.transpose();
     Eigen::VectorXd rhs(n + 2);
     rhs.head(n + 1) = -c.F;
     rhs[n + 1] = -gap;
     const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(rhs);
-    // A damped step, as in correct().
-    const double scale = std::min(1.0, 0.25 * c.z[n] / std::max(std::abs(dz[n]), 1e-300));
+    // A damped step: the period changes by at most a quarter of itself.
+    const double T = c.z[n];
+    const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
     c.z += scale * dz;
     if (!(c.z[n] > 0.0) || !c.z.allFinite()) {
       c.why = "Newton's iteration left the orbit (period " + number(c.z[n]) + " s)";
       return c;
     }
+    if ((c.z - z0).norm() > reach) {
+      c.why = "the correction (" + number((c.z - z0).norm()) + ") went farther than the step (" +
+              number(reach) + ")";
+      return c;
+    }
   }
+}
+
+// The corrector of a continuation step from the prediction z_pred = z_k + ds d: the
+// correction normal to d, no longer than ds.
+Correction correct(const BranchShooter& shooter, const Eigen::VectorXd& z_pred,
+                   const Eigen::VectorXd& d, double ds, int max_iterations, double tolerance) {
+  return newtonWithRow(shooter, z_pred, d, d.dot(z_pred), ds, max_iterations, tolerance);
+}
+
+// The first orbit of a Hopf start: z[index] = value keeps it off the equilibrium.
+Correction solveFixedAmplitude(const BranchShooter& shooter, const Eigen::VectorXd& z0,
+                               Eigen::Index index, double value, int max_iterations,
+                               double tolerance) {
+  Eigen::VectorXd row = Eigen::VectorXd::Zero(z0.size());
+  row[index] = 1.0;
+  return newtonWithRow(shooter, z0, row, value, INFINITY, max_iterations, tolerance);
 }
 
 // Modulus of the largest multiplier among the non-trivial ones that `pick` selects (0: none).
