@@ -26,19 +26,25 @@ std::vector<std::string> dampedBelt(double c) {
   return {"friction=stribeck", "springs[wall_spring].damping=" + std::to_string(c)};
 }
 
+// The branch in the belt speed from the Hopf point between `from` and `to`, `points` at most.
+study::BranchSpec hopfSpec(double from, double to, int points = 20) {
+  study::BranchSpec spec;
+  spec.parameter = "v_b";
+  spec.from = from;
+  spec.to = to;
+  spec.from_hopf = true;
+  spec.step = 0.004;
+  spec.max_points = points;
+  return spec;
+}
+
 TEST(OrbitHopfStart, TheUnstableCycleOfTheSubcriticalHopfGrowsAsTheAveragedEquationSays) {
   // Two dampers: the Hopf point moves with c, the amplitude law with it.
   for (double c : {10.0, 6.0}) {
     const DampedStribeckBelt belt{c};
     const double v_h = belt.hopfSpeed();
-    study::BranchSpec spec;
-    spec.parameter = "v_b";
-    spec.from = 0.15;
-    spec.to = 0.5;
-    spec.from_hopf = true;
+    study::BranchSpec spec = hopfSpec(0.15, 0.5, 4);
     spec.hopf_amplitude = 1e-3;
-    spec.step = 0.004;
-    spec.max_points = 4;
     const study::BranchResult r = study::continueOrbit(kBelt, dampedBelt(c), spec);
     ASSERT_GE(r.points.size(), 3u) << r.stop_reason;
     // The Hopf point and its frequency: d(v_H) = 0 and the undamped sqrt(k / m).
@@ -79,13 +85,7 @@ TEST(OrbitHopfStart, LuGresBristlesAreUnknownsOfTheOrbitAndLeaveTheHopfPointWher
   // among the orbit's unknowns (semi-implicit Euler, which updates them exactly).
   const DampedStribeckBelt belt{10.0};
   const double v_h = belt.hopfSpeed();
-  study::BranchSpec spec;
-  spec.parameter = "v_b";
-  spec.from = 0.15;
-  spec.to = 0.5;
-  spec.from_hopf = true;
-  spec.step = 0.004;
-  spec.max_points = 3;
+  const study::BranchSpec spec = hopfSpec(0.15, 0.5, 3);
   const study::BranchResult r =
       study::continueOrbit(kBelt,
                            {"friction=lugre", "v_s=0.15", "sigma1=0",
@@ -110,11 +110,7 @@ TEST(OrbitHopfStart, LuGresBristlesAreUnknownsOfTheOrbitAndLeaveTheHopfPointWher
 
 TEST(OrbitHopfStart, ARangeWithoutAHopfPointIsRefusedWithTheGrowthRatesAtItsEnds) {
   // Above v_H steady sliding is stable all the way: nothing crosses.
-  study::BranchSpec spec;
-  spec.parameter = "v_b";
-  spec.from = 0.3;
-  spec.to = 0.6;
-  spec.from_hopf = true;
+  const study::BranchSpec spec = hopfSpec(0.3, 0.6);
   try {
     study::continueOrbit(kBelt, dampedBelt(10.0), spec);
     FAIL() << "expected OrbitError";
@@ -133,11 +129,7 @@ TEST(OrbitHopfStart, ALawWithAnchorsIsRefusedNamingTheModesAnalysis) {
   ASSERT_NE(text.find(at), std::string::npos);
   text.insert(text.find(at),
               "  elastic_stick: {mu_s: $mu_s, mu_k: $mu_k, stiffness: 1.0e5, damping: 100}\n");
-  study::BranchSpec spec;
-  spec.parameter = "v_b";
-  spec.from = 0.15;
-  spec.to = 0.5;
-  spec.from_hopf = true;
+  const study::BranchSpec spec = hopfSpec(0.15, 0.5);
   try {
     study::continueOrbitFromText(text, kBelt, {"friction=elastic_stick"}, spec);
     FAIL() << "expected OrbitError";
