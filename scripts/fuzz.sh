@@ -16,7 +16,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-HARNESSES=(scene_yaml_fuzzer urdf_fuzzer urdf_tree_fuzzer mesh_fuzzer hull_fuzzer cli_values_fuzzer)
+# Longest CI budget first (--ci runs them JOBS at a time in this order).
+HARNESSES=(urdf_fuzzer scene_yaml_fuzzer cli_values_fuzzer urdf_tree_fuzzer mesh_fuzzer hull_fuzzer)
 # Inputs per harness in CI, from the rates measured on the shared 2-core machine at load 5
 # (scene 830/s, urdf 15000/s, mesh 4000/s since Tribo reads OBJ itself, cli 25000/s;
 # docs/fuzzing.md): about 2.5 minutes together, three times that at load 15.
@@ -101,10 +102,10 @@ case "${1:-}" in
   --ci)
     build
     for h in "${HARNESSES[@]}"; do replay "$h"; done
-    # The fixed budgets run JOBS harnesses at a time (one per core), the longest first; each
-    # prints its line when it ends. xargs exits non-zero when any of them found a defect.
-    printf '%s\n' urdf_fuzzer scene_yaml_fuzzer cli_values_fuzzer urdf_tree_fuzzer mesh_fuzzer \
-      hull_fuzzer | BUILD_DIR="$BUILD_DIR" xargs -P "$JOBS" -n 1 "$0" --ci-one ;;
+    # The fixed budgets run JOBS harnesses at a time (one per core), in HARNESSES' order
+    # (longest first); each prints its line when it ends. xargs exits non-zero when any of
+    # them found a defect.
+    printf '%s\n' "${HARNESSES[@]}" | BUILD_DIR="$BUILD_DIR" xargs -P "$JOBS" -n 1 "$0" --ci-one ;;
   --ci-one)  # one harness's CI budget (called by --ci on a built tree)
     h=$2
     start=$(date +%s)

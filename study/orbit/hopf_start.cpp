@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <unordered_map>
 
 #include "study/orbit/periodic_orbit.hpp"
 
@@ -71,10 +72,6 @@ HopfPoint locateHopf(const std::function<io::Scene(double)>& sceneAt, double fro
         ": the growth rate of steady sliding's leading oscillatory mode keeps its sign (" +
         number(first_growth) + " 1/s at " + number(from) + ", " + number(lo.growth) + " 1/s at " +
         number(lo.p) + "); widen the range or start from an orbit");
-  h.lower = lo.p;
-  h.upper = hi.p;
-  h.growth_lower = lo.growth;
-  h.growth_upper = hi.growth;
   // Bisection: sigma(p) is smooth but its slope is not known, and 40 to 50 analyses of a
   // small scene cost milliseconds.
   const bool rising = hi.growth > 0.0;
@@ -110,36 +107,36 @@ Eigen::VectorXd hopfDirection(const HopfPoint& hopf, const Model& model,
                      " at rest: observe a coordinate the mode moves (output.summary)");
   const double deg = std::numbers::pi / 180.0;
   Eigen::VectorXd e = Eigen::VectorXd::Zero(coords.size());
-  // The mode's entries per body: translation (world) and rotation vector (world, as the
-  // modes analysis takes it; the orbit's is in the body's reference frame).
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const int bi = static_cast<int>(b);
-    if (coords.positionIndex(bi, 0) < 0) continue;
-    Eigen::Vector3d dx = Eigen::Vector3d::Zero(), dv = Eigen::Vector3d::Zero();
-    Eigen::Vector3d dth = Eigen::Vector3d::Zero(), dw = Eigen::Vector3d::Zero();
-    for (const ShapeEntry& s : hopf.shape) {
-      const std::string& name = s.coordinate;
-      const std::string prefix = model.bodies[b].name + ".";
-      if (name.compare(0, prefix.size(), prefix) != 0) continue;
-      const std::string which = name.substr(prefix.size());
-      const double phase = (s.phase_deg - obs->phase_deg) * deg;
-      const double amp = s.magnitude / obs->magnitude;
-      for (int k = 0; k < 3; ++k) {
-        if (which == kAxes[k]) {
-          dx[k] = amp * std::cos(phase);
-          dv[k] = -hopf.omega * amp * std::sin(phase);
-        } else if (which == std::string("r") + kAxes[k]) {
-          dth[k] = amp * std::cos(phase);
-          dw[k] = -hopf.omega * amp * std::sin(phase);
-        }
-      }
-    }
-    const Eigen::Matrix3d R0 = hopf.steady.bodies[b].orientation.toRotationMatrix();
-    const Eigen::Index p = coords.positionIndex(bi, 0), v = coords.velocityIndex(bi, 0);
-    e.segment<3>(p) = dx;
-    e.segment<3>(p + 3) = R0.transpose() * dth;
-    e.segment<3>(v) = dv;
-    e.segment<3>(v + 3) = dw;
+  // Each entry "BODY.c" once: c in x y z (translation, world) or rx ry rz (rotation vector,
+  // world as the modes analysis takes it; the orbit's is in the body's reference frame), at
+  // the mode's phase relative to the observed coordinate's.
+  std::unordered_map<std::string, int> dynamic;  // name -> body index, dynamic bodies only
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    if (coords.positionIndex(static_cast<int>(b), 0) >= 0)
+      dynamic.emplace(model.bodies[b].name, static_cast<int>(b));
+  for (const ShapeEntry& s : hopf.shape) {
+    const std::size_t dot = s.coordinate.rfind('.');
+    const auto it =
+        dot == std::string::npos ? dynamic.end() : dynamic.find(s.coordinate.substr(0, dot));
+    if (it == dynamic.end()) continue;
+    const std::string which = s.coordinate.substr(dot + 1);
+    const bool rotation = which.size() == 2 && which[0] == 'r';
+    const int k = which.back() - 'x';
+    if (k < 0 || k > 2 || which.size() != (rotation ? 2u : 1u)) continue;
+    const double phase = (s.phase_deg - obs->phase_deg) * deg;
+    const double amp = s.magnitude / obs->magnitude;
+    const Eigen::Index p = coords.positionIndex(it->second, 0) + (rotation ? 3 : 0);
+    const Eigen::Index v = coords.velocityIndex(it->second, 0) + (rotation ? 3 : 0);
+    e[p + k] = amp * std::cos(phase);
+    e[v + k] = -hopf.omega * amp * std::sin(phase);
+  }
+  // The rotation entries from world axes into each body's reference frame.
+  for (const auto& entry : dynamic) {
+    const int b = entry.second;
+    const Eigen::Index p = coords.positionIndex(b, 0) + 3;
+    const Eigen::Matrix3d R0 =
+        hopf.steady.bodies[static_cast<std::size_t>(b)].orientation.toRotationMatrix();
+    e.segment<3>(p) = (R0.transpose() * e.segment<3>(p)).eval();
   }
   return e;
 }

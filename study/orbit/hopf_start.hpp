@@ -41,9 +41,7 @@ struct HopfPoint {
   double omega = 0;               // [rad/s] the mode's angular frequency at p_H
   State steady;                   // steady sliding at p_H
   std::vector<ShapeEntry> shape;  // the mode's shape at p_H (study/modes/modes.hpp)
-  // The bracket the scan found and the growth rates [1/s] at its ends.
-  double lower = 0, upper = 0, growth_lower = 0, growth_upper = 0;
-  int analyses = 0;  // modes analyses done
+  int analyses = 0;               // modes analyses done
 };
 
 // The Hopf point in [from, to] of the scenes `sceneAt(p)` gives. Throws OrbitError when sigma
