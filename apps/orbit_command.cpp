@@ -29,6 +29,7 @@ struct Arguments {
   study::OrbitSpec spec;
   bool continuation = false;    // --continue given
   bool branch_options = false;  // --max-points, --step, --from-hopf or --hopf-amplitude given
+  bool forced_options = false;  // --period or --periods given
   study::BranchSpec branch;
 };
 
@@ -155,6 +156,12 @@ int runBranch(Arguments& a) {
 }
 
 int runOrbit(Arguments& a) {
+  if (a.continuation && a.forced_options) {
+    std::fprintf(stderr,
+                 "tribo orbit: --period and --periods find one forced orbit; --continue follows "
+                 "autonomous orbits only\n");
+    return 1;
+  }
   if (a.continuation) return runBranch(a);
   if (a.branch_options) {
     std::fprintf(stderr,
@@ -189,15 +196,24 @@ int runOrbit(Arguments& a) {
     std::fprintf(stderr, "tribo orbit: %s\n", e.what());
     return 4;
   }
-  std::printf("orbit            %s, %s\n", scene.path.c_str(), r.stable ? "stable" : "unstable");
-  std::printf("period           %.10g s (%.6g Hz); the settled run gave %.6g s\n", r.period,
-              1.0 / r.period, r.guess_period);
+  std::printf("orbit            %s, %s%s\n", scene.path.c_str(), r.stable ? "stable" : "unstable",
+              r.forced ? ", forced" : "");
+  if (r.forced)
+    std::printf("period           %.10g s = %d x the forcing's %.10g s (%s)\n", r.period, r.periods,
+                r.forcing_period, r.forcing.c_str());
+  else
+    std::printf("period           %.10g s (%.6g Hz); the settled run gave %.6g s\n", r.period,
+                1.0 / r.period, r.guess_period);
   std::printf("amplitude        %.10g peak to peak in %s (%.10g to %.10g)\n", r.amplitude_pp,
               r.observed.c_str(), r.x_min, r.x_max);
   std::printf("newton           %d iterations, residual %.3g\n", r.iterations, r.residual);
-  std::printf("multipliers      %zu; trivial one %.12g%+.3gi (|mu - 1| = %.3g)\n",
-              r.multipliers.size(), r.multipliers[static_cast<std::size_t>(r.trivial)].real(),
-              r.multipliers[static_cast<std::size_t>(r.trivial)].imag(), r.trivial_error);
+  if (r.forced)
+    std::printf("multipliers      %zu (no trivial one: the forcing fixes the phase)\n",
+                r.multipliers.size());
+  else
+    std::printf("multipliers      %zu; trivial one %.12g%+.3gi (|mu - 1| = %.3g)\n",
+                r.multipliers.size(), r.multipliers[static_cast<std::size_t>(r.trivial)].real(),
+                r.multipliers[static_cast<std::size_t>(r.trivial)].imag(), r.trivial_error);
   for (std::size_t i = 0, shown = 0; i < r.multipliers.size() && shown < 4; ++i) {
     if (static_cast<int>(i) == r.trivial) continue;
     std::printf("                 |mu| = %.6g (%.6g%+.6gi)\n", std::abs(r.multipliers[i]),
@@ -224,6 +240,20 @@ Command addOrbitCommand(CLI::App& tribo) {
   addCheckedOption(*orbit, "--tolerance", "X",
                    "Newton's tolerance on |phi_T(y0) - y0| / (1 + |y0|) (1e-9)",
                    [a](const std::string& v) { a->spec.tolerance = positive("--tolerance", v); });
+  addCheckedOption(*orbit, "--period", "SECONDS",
+                   "a forced scene: the forcing's period (default: read from its inputs,\n"
+                   "which must then be sines or sine drives; any input is checked to\n"
+                   "repeat with the period given)",
+                   [a](const std::string& v) {
+                     a->spec.period = positive("--period", v);
+                     a->forced_options = true;
+                   });
+  addCheckedOption(*orbit, "--periods", "K",
+                   "a forced scene: the orbit spans K forcing periods (a subharmonic; 1)",
+                   [a](const std::string& v) {
+                     a->spec.periods = wholeAtLeast("--periods", v, 1);
+                     a->forced_options = true;
+                   });
   addCheckedOption(*orbit, "--continue", "NAME=FROM:TO",
                    "follow the orbit's branch in parameter NAME from FROM towards TO\n"
                    "(pseudo-arclength): DIR/branch.csv, branch.json, branch_orbits.csv",
@@ -266,7 +296,9 @@ Command addOrbitCommand(CLI::App& tribo) {
       "the orbit where the summary's coordinate peaks, and the period; Newton with the\n"
       "Jacobian by finite differences of the flow (columns on the cores). The multipliers\n"
       "are the monodromy matrix's eigenvalues; one is 1 (reported with its error).\n"
-      "Autonomous scenes with rk4 or semi_implicit_euler (docs/orbits.md).\n"
+      "A scene whose inputs vary in time has forced orbits: their period is the\n"
+      "forcing's (or K times it, --periods), the unknowns the state alone, no\n"
+      "trivial multiplier. rk4 or semi_implicit_euler (docs/orbits.md).\n"
       "--continue follows the orbit in a parameter (pseudo-arclength continuation) and\n"
       "reports folds, period doublings, tori, stability changes, grazing and Hopf points\n"
       "between its points.\n"

@@ -9,6 +9,8 @@
 
 #include "apps/common_options.hpp"
 #include "io/scene_parameters.hpp"
+#include "study/file_commit.hpp"
+#include "study/view/view_branch.hpp"
 #include "study/view/view_page.hpp"
 #include "study/view/view_sweep.hpp"
 
@@ -44,6 +46,22 @@ int runView(const ViewArguments& a) {
   const std::string& run_dir = a.run_dir;
   const std::string& three_js = a.three_js;
   const std::size_t frames = a.frames;
+  if (study::isBranchDir(run_dir)) {
+    study::ViewOptions options;
+    options.frame_cap = frames;
+    try {
+      const study::BranchViewInfo info = study::writeBranchView(run_dir, options);
+      std::printf(
+          "view             %s (%.3g MB, %zu points, %zu events, %zu of %zu orbit samples)\n",
+          info.file.string().c_str(), static_cast<double>(info.bytes) / 1e6, info.points,
+          info.events, info.orbit_samples, info.orbit_rows);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tribo view: %s\n", e.what());
+      const auto partial = study::partialPath(std::filesystem::path(run_dir) / "view.html");
+      return std::filesystem::exists(partial) ? 4 : 2;
+    }
+    return 0;
+  }
   if (study::isSweepDir(run_dir)) {
     study::ViewOptions options;
     options.frame_cap = frames;
@@ -67,12 +85,14 @@ int runView(const ViewArguments& a) {
 Command addViewCommand(CLI::App& tribo) {
   auto a = std::make_shared<ViewArguments>();
   CLI::App* view = tribo.add_subcommand(
-      "view", "write RUN_DIR/view.html: replay a run (or map a sweep) in a browser");
+      "view", "write RUN_DIR/view.html: replay a run, map a sweep or draw an orbit branch");
   addPathArgument(*view, "RUN_DIR", a->run_dir,
-                  "a folder of tribo run, or of tribo sweep (sweep.json, results.csv)");
+                  "a folder of tribo run, of tribo sweep (sweep.json, results.csv) or of\n"
+                  "tribo orbit --continue (branch.json, branch.csv, branch_orbits.csv)");
   addCheckedOption(
       *view, "--frames", "N",
-      "frames the page holds at most, 2 to 1e8 (20000; long runs are decimated)",
+      "frames the page holds at most, 2 to 1e8 (20000; long runs are decimated;\n"
+      "a branch: samples of each orbit)",
       [a](const std::string& v) {
         const auto n = io::parseNumber(v);
         if (!n || !(*n >= 2) || *n > 1e8 || *n != static_cast<double>(static_cast<long>(*n)))
@@ -94,7 +114,12 @@ Command addViewCommand(CLI::App& tribo) {
       "tribo run SCENE --out DIR --view does the same after the run and records orientations.\n"
       "A sweep's folder gets a heat map of a chosen result over two swept parameters (a line\n"
       "over one); points kept with --keep-trajectories link to their replay.\n"
-      "exit status: 0 written, 1 usage, 2 run, scene or three.js unreadable, 4 write error");
+      "A branch's folder (tribo orbit --continue) gets its bifurcation diagram: amplitude\n"
+      "against the parameter, stable orbits solid, unstable dashed, steady sliding on the\n"
+      "axis, events labelled; a click on a point (left/right arrows: the previous/next one)\n"
+      "replays its orbit over one period; that page needs no three.js.\n"
+      "exit status: 0 written, 1 usage, 2 run, sweep, branch, scene or three.js unreadable,\n"
+      "4 write error");
   return {view, [a] { return runView(*a); }};
 }
 

@@ -92,6 +92,9 @@ class Signal {
                          std::vector<double> breakpoints = {}, double time_scale = 1e-3);
 
   Kind kind() const { return kind_; }
+  // The terms of a sines signal (empty for the other kinds): what a forced orbit's period is
+  // read from (study/orbit/forcing.hpp).
+  const std::vector<Sine>& sineTerms() const { return sines_; }
   // True for the constant 0 (a load component that is not there).
   bool isZero() const { return kind_ == Kind::kConstant && a_ == 0.0; }
   double value(double t) const;

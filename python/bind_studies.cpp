@@ -113,12 +113,17 @@ py::list runTradeoff(const py::object& scene, const py::object& set,
   return rows;
 }
 
-py::object runOrbit(const SceneHandle& scene, double settle, double tolerance) {
+py::object runOrbit(const SceneHandle& scene, double settle, double tolerance, double period,
+                    int periods) {
   study::OrbitSpec spec;
   spec.settle = settle;
   spec.tolerance = tolerance;
-  if (!(settle >= 0.0) || !(tolerance > 0.0))
-    throw py::value_error("orbit: settle must be >= 0 and tolerance > 0");
+  spec.period = period;
+  spec.periods = periods;
+  if (!(settle >= 0.0) || !(tolerance > 0.0) || !(period >= 0.0) || !std::isfinite(period) ||
+      periods < 1)
+    throw py::value_error(
+        "orbit: settle must be >= 0, tolerance > 0, period >= 0 (finite) and periods >= 1");
   if (!scene.user_laws.empty())
     throw py::value_error(
         "orbit: a scene with laws written in Python cannot be shot for an orbit (the flows "
@@ -214,10 +219,13 @@ void bindStudies(py::module_& m) {
         "B w with the names of their 'states' and 'inputs' (the loads' components and the "
         "actuators' targets). Raises NoSteadyState, ModesError.");
   m.def("orbit", &runOrbit, py::arg("scene"), py::arg("settle") = 0.0, py::arg("tolerance") = 1e-9,
-        "orbit(scene, settle=0, tolerance=1e-9) -> dict: the periodic orbit as `tribo orbit` "
-        "finds it (orbit.json's document: period, amplitude_pp, stable, multipliers, newton, "
-        "start...) with 't' and 'x', the observed coordinate over one period as arrays. "
-        "Raises OrbitError (not autonomous, no oscillation, no convergence).");
+        py::arg("period") = 0.0, py::arg("periods") = 1,
+        "orbit(scene, settle=0, tolerance=1e-9, period=0, periods=1) -> dict: the periodic "
+        "orbit as `tribo orbit` finds it (orbit.json's document: period, amplitude_pp, stable, "
+        "multipliers, newton, forced, start...) with 't' and 'x', the observed coordinate over "
+        "one period as arrays. A scene whose inputs vary in time has a forced orbit: period "
+        "is the forcing's (0: read from its sines), periods the orbit's length in forcing "
+        "periods. Raises OrbitError (no oscillation, no forcing period, no convergence).");
   m.def("orbit_branch", &runOrbitBranch, py::arg("scene"), py::arg("parameter"), py::arg("start"),
         py::arg("end"), py::arg("max_points") = 20, py::arg("step") = 0.0, py::arg("settle") = 0.0,
         py::arg("tolerance") = 1e-9, py::arg("from_hopf") = false, py::arg("hopf_amplitude") = 0.0,

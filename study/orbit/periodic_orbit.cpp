@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include <thread>
 
 #include "core/simulator.hpp"
+#include "study/orbit/forcing.hpp"
 #include "study/orbit/orbit_coordinates.hpp"
 #include "study/orbit/shooting.hpp"
 
@@ -17,14 +19,136 @@ namespace tribo::study {
 
 using shooting::Flow;
 
+namespace {
+
+unsigned threadsOf(const OrbitSpec& spec) {
+  return std::max(1u, spec.threads ? spec.threads : std::thread::hardware_concurrency());
+}
+
+// The observed coordinate over one period from y (r.t, r.x) and its extremes.
+void sampleOrbit(const Flow& flow, const OrbitCoordinates& coords, const Eigen::VectorXd& y,
+                 double T, int body, int axis, OrbitResult& r) {
+  const auto b = static_cast<std::size_t>(body);
+  r.t.push_back(0.0);
+  r.x.push_back(coords.fromVector(y).bodies[b].position[axis]);
+  flow(y, T, [&](double t, const State& s) {
+    r.t.push_back(t);
+    r.x.push_back(s.bodies[b].position[axis]);
+  });
+  std::vector<double> negated(r.x.size());
+  std::transform(r.x.begin(), r.x.end(), negated.begin(), [](double v) { return -v; });
+  r.x_max = r.forced ? -shooting::refinedMinimum(negated) : r.x.front();
+  r.x_min = shooting::refinedMinimum(r.x);
+  r.amplitude_pp = r.x_max - r.x_min;
+}
+
+// The forced orbit: unknowns the state at a whole number of forcing periods, the period fixed
+// (periodic_orbit.hpp).
+void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int axis,
+                 OrbitResult& r) {
+  const Model& model = *scene.model;
+  r.forced = true;
+  r.forcing = nonAutonomous(model);
+  r.forcing_period = forcingPeriod(model, spec.period);
+  r.periods = spec.periods;
+  const double T = spec.periods * r.forcing_period;
+  const double settle = spec.settle > 0.0 ? spec.settle : model.options.duration;
+  const double cycles = std::max(1.0, std::ceil(settle / T - 1e-9));
+  if (cycles > 1e7)
+    throw OrbitError("the settling run of " + std::to_string(settle) + " s holds more than 1e7 " +
+                     "periods of " + std::to_string(T) + " s: give a shorter --settle");
+  // The settling run: whole periods, so that its end has the forcing's phase at t = 0; the
+  // last period's extremes are the guess's amplitude, and how far it returns to its start
+  // tells a response that repeats from one that does not.
+  const auto b = static_cast<std::size_t>(body);
+  double lo = 1e300, hi = -1e300;
+  State before_last = Simulator(scene.model).state();
+  if (cycles > 1.0) before_last = shooting::advance(scene.model, before_last, (cycles - 1.0) * T);
+  const State settled =
+      shooting::advance(scene.model, before_last, T, [&](double, const State& st) {
+        lo = std::min(lo, st.bodies[b].position[axis]);
+        hi = std::max(hi, st.bodies[b].position[axis]);
+      });
+  r.guess_period = T;
+  r.guess_amplitude_pp = hi - lo;
+  const OrbitCoordinates coords(model, settled);
+  const Flow flow(scene.model, coords);
+  const Eigen::Index n = coords.size();
+  r.coordinates = coords.names();
+  Eigen::VectorXd y = coords.toVector(settled);
+  std::string settled_return = "unknown: contacts came or went";
+  try {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g",
+                  (y - coords.toVector(before_last)).norm() / (1.0 + y.norm()));
+    settled_return = text;
+  } catch (const std::runtime_error&) {
+  }
+  const Eigen::VectorXd floor = shooting::fdFloor(y, settled.friction_values.size());
+  Eigen::MatrixXd monodromy(n, n);
+  bool converged = false;
+  for (int it = 0;; ++it) {
+    const Eigen::VectorXd F = flow(y, T) - y;
+    r.residual = F.norm() / (1.0 + y.norm());
+    r.iterations = it;
+    shooting::parallelColumns(n, threadsOf(spec), [&](Eigen::Index j) {
+      const double d = spec.fd_step * std::max(std::abs(y[j]), floor[j]);
+      Eigen::VectorXd up = y, down = y;
+      up[j] += d;
+      down[j] -= d;
+      monodromy.col(j) = (flow(up, T) - flow(down, T)) / (2 * d);
+    });
+    if (r.residual <= spec.tolerance) {
+      converged = true;
+      break;
+    }
+    if (it == spec.max_iterations) break;
+    // Least squares: the joints' constraints make M - I singular in the directions they remove.
+    y += (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F);
+    if (!y.allFinite())
+      throw OrbitError(
+          "Newton's iteration left the orbit: start from a run closer to it (a "
+          "longer --settle)");
+  }
+  if (!converged)
+    throw OrbitError("Newton's iteration did not converge in " +
+                     std::to_string(spec.max_iterations) + " iterations (residual " +
+                     std::to_string(r.residual) +
+                     "; the settling run's last period returned "
+                     "to within " +
+                     settled_return +
+                     " of its start): the response may not repeat with this period (a "
+                     "subharmonic wants --periods, a quasi-periodic or chaotic one has none; a "
+                     "longer --settle brings the guess closer)");
+  r.period = T;
+  r.start = y;
+  shooting::Floquet f = shooting::floquet(monodromy, false);
+  r.multipliers = std::move(f.multipliers);
+  r.stable = f.stable;
+  r.reference = settled;
+  sampleOrbit(flow, coords, y, T, body, axis, r);
+}
+
+}  // namespace
+
 OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
   const auto wall = std::chrono::steady_clock::now();
   const Model& model = *scene.model;
   const io::SummarySpec& watched = scene.output.summary;
-  const int body = shooting::shootableBody(scene);
+  const int body = shooting::observedBody(scene);
   const int axis = watched.coordinate;
   OrbitResult r;
   r.observed = watched.body + "." + std::string(1, "xyz"[axis]);
+  if (spec.periods < 1) throw OrbitError("periods must be >= 1");
+  if (!nonAutonomous(model).empty()) {
+    forcedOrbit(scene, spec, body, axis, r);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+    return r;
+  }
+  if (spec.period > 0.0 || spec.periods != 1)
+    throw OrbitError(
+        "--period and --periods apply to forced scenes; this one is autonomous (no input "
+        "varies in time), its orbit's period is an unknown");
 
   const double settle = spec.settle > 0.0 ? spec.settle : model.options.duration;
   const shooting::Guess guess = shooting::settledGuess(scene.model, body, axis, settle);
@@ -38,8 +162,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
 
   Eigen::VectorXd y = coords.toVector(guess.state);
   double T = guess.period;
-  const unsigned threads =
-      std::max(1u, spec.threads ? spec.threads : std::thread::hardware_concurrency());
+  const unsigned threads = threadsOf(spec);
 
   // The finite-difference steps: relative to each unknown, with a floor per kind (1 cm, 1 cm/s
   // and 10 mrad for bodies; the largest friction state for those).
@@ -110,16 +233,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
   r.reference = guess.state;
 
   // One period sampled at the step, from the orbit's start (a maximum of x).
-  const auto b = static_cast<std::size_t>(body);
-  r.t.push_back(0.0);
-  r.x.push_back(coords.fromVector(y).bodies[b].position[axis]);
-  flow(y, T, [&](double t, const State& s) {
-    r.t.push_back(t);
-    r.x.push_back(s.bodies[b].position[axis]);
-  });
-  r.x_max = r.x.front();
-  r.x_min = shooting::refinedMinimum(r.x);
-  r.amplitude_pp = r.x_max - r.x_min;
+  sampleOrbit(flow, coords, y, T, body, axis, r);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
   return r;
 }
@@ -137,6 +251,12 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
   j["x_max"] = r.x_max;
   j["x_min"] = r.x_min;
   j["stable"] = r.stable;
+  j["forced"] = r.forced;
+  if (r.forced) {
+    j["forcing"] = r.forcing;
+    j["forcing_period"] = r.forcing_period;
+    j["periods"] = r.periods;
+  }
   nlohmann::ordered_json mu = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < r.multipliers.size(); ++i)
     mu.push_back({{"re", r.multipliers[i].real()},
@@ -144,7 +264,7 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
                   {"modulus", std::abs(r.multipliers[i])},
                   {"trivial", static_cast<int>(i) == r.trivial}});
   j["multipliers"] = mu;
-  j["trivial_multiplier_error"] = r.trivial_error;
+  if (!r.forced) j["trivial_multiplier_error"] = r.trivial_error;
   j["newton"] = {{"iterations", r.iterations},
                  {"residual", r.residual},
                  {"tolerance", spec.tolerance},

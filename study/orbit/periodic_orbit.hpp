@@ -17,9 +17,15 @@
 // 1 (the direction along the orbit) and its distance from 1 is reported as a quality check.
 // On a stick-slip orbit the stick phase collapses phase space: the other multipliers come out
 // near zero. The first guess is the settled tail of a run of the scene: its last two maxima.
-// Limits: autonomous scenes (no loads, actuators, drives, moving kinematic bodies or surface
-// velocities that vary: a forced orbit has the forcing's period); fixed-step integrators (rk4,
-// semi_implicit_euler); friction memory on contacts that stay the same along the orbit.
+// A forced scene (an input that varies in time, study/orbit/forcing.hpp) has orbits of the
+// forcing's period P (or K P, a subharmonic): the period is known and the phase is the
+// forcing's, so the unknowns are y0 alone, taken at a whole number of periods, and
+//   phi_KP(y0) - y0 = 0
+// is solved the same way; there is no trivial multiplier (every one inside the unit circle
+// for a stable orbit). The first guess is the state after the settling run's whole periods.
+// Limits: fixed-step integrators (rk4, semi_implicit_euler); friction memory on contacts that
+// stay the same along the orbit; forced scenes whose inputs repeat (sines, sine drives, or a
+// period the user gives and every input is checked against).
 // Continuation in a parameter and the bifurcations along a branch: study/orbit/orbit_branch.hpp.
 // Not here: a start from a Hopf point of `tribo modes`, matrix-free Krylov solves for large states.
 #pragma once
@@ -48,6 +54,8 @@ struct OrbitSpec {
   double tolerance = 1e-9;  // converged when |F| <= tolerance (1 + |y0|)
   double fd_step = 1e-7;    // finite-difference step, relative to each unknown's scale
   unsigned threads = 0;     // for the Jacobian's columns; 0: one per core
+  double period = 0.0;      // [s] forced scenes: the forcing's period; 0: read from the inputs
+  int periods = 1;          // forced scenes: the orbit spans this many forcing periods
 };
 
 struct OrbitResult {
@@ -58,11 +66,15 @@ struct OrbitResult {
   int iterations = 0;
   double residual = 0;                            // |F| at the end, relative to 1 + |y0|
   std::vector<std::complex<double>> multipliers;  // by decreasing modulus
-  int trivial = -1;                               // which one is the trivial multiplier (nearest 1)
-  double trivial_error = 0;                       // |mu_trivial - 1|
-  bool stable = false;                            // every other multiplier inside the unit circle
-  std::vector<std::string> coordinates;           // names of y0's entries
-  Eigen::VectorXd start;                          // y0
+  int trivial = -1;  // which one is the trivial multiplier (nearest 1); -1 for a forced orbit
+  double trivial_error = 0;   // |mu_trivial - 1|
+  bool stable = false;        // every other multiplier inside the unit circle
+  bool forced = false;        // the scene has inputs that vary in time: the period is theirs
+  std::string forcing;        // forced: the first input that varies, and how many more
+  double forcing_period = 0;  // [s] forced: the inputs' common period
+  int periods = 1;            // forced: the orbit's period over the forcing's
+  std::vector<std::string> coordinates;  // names of y0's entries
+  Eigen::VectorXd start;                 // y0
   State reference;           // the state y0's coordinates are taken against (its contacts and time)
   std::vector<double> t, x;  // the observed coordinate over one period, per step
   double seconds = 0;        // wall time

@@ -8,27 +8,12 @@
 
 #include "core/simulator.hpp"
 #include "core/thread_count.hpp"
+#include "study/orbit/forcing.hpp"
 #include "study/orbit/periodic_orbit.hpp"
 
 namespace tribo::study::shooting {
 
 namespace {
-
-// Why the scene's motion depends on the time itself (so its orbits are forced ones), or empty.
-std::string nonAutonomous(const Model& m) {
-  if (!m.loads.empty()) return "it has applied loads";
-  for (const Body& b : m.bodies) {
-    if (b.kind == BodyKind::kKinematic &&
-        (b.velocity.norm() > 0.0 || b.angular_velocity.norm() > 0.0 || b.motion))
-      return "kinematic body '" + b.name + "' moves";
-    if (b.surface_velocity_signal) return "body '" + b.name + "' has a surface velocity signal";
-  }
-  for (const Joint& j : m.joints) {
-    if (j.elements.drive) return "joint '" + j.name + "' is driven";
-    if (j.elements.actuator) return "joint '" + j.name + "' has an actuator";
-  }
-  return "";
-}
 
 void check(const StepStatus& s, double T) {
   if (!s.ok)
@@ -38,7 +23,7 @@ void check(const StepStatus& s, double T) {
 
 }  // namespace
 
-int shootableBody(const io::Scene& scene) {
+int observedBody(const io::Scene& scene) {
   const Model& model = *scene.model;
   const io::SummarySpec& watched = scene.output.summary;
   if (watched.body.empty() || !watched.channel.empty())
@@ -49,10 +34,6 @@ int shootableBody(const io::Scene& scene) {
                                     [&](const Body& b) { return b.name == watched.body; });
   if (body_it == model.bodies.end() || body_it->kind != BodyKind::kDynamic)
     throw OrbitError("the observed body '" + watched.body + "' is not a dynamic body");
-  if (const std::string why = nonAutonomous(model); !why.empty())
-    throw OrbitError("the scene is not autonomous (" + why +
-                     "): its orbits are forced, with the forcing's period, which shooting for a "
-                     "free period does not handle");
   const IntegratorType integrator = model.options.integrator;
   if (integrator != IntegratorType::kRk4 && integrator != IntegratorType::kSemiImplicitEuler)
     throw OrbitError("shooting needs a fixed-step integrator (rk4 or semi_implicit_euler), not " +
@@ -60,18 +41,24 @@ int shootableBody(const io::Scene& scene) {
   return static_cast<int>(body_it - model.bodies.begin());
 }
 
-Flow::Flow(std::shared_ptr<const Model> model, const OrbitCoordinates& coords)
-    : model_(std::move(model)), coords_(coords), h_(model_->options.time_step) {}
+int shootableBody(const io::Scene& scene) {
+  const int body = observedBody(scene);
+  if (const std::string why = nonAutonomous(*scene.model); !why.empty())
+    throw OrbitError("the scene is not autonomous (" + why +
+                     "): its orbits are forced, with the forcing's period; `tribo orbit` "
+                     "without --continue finds one, continuation follows autonomous orbits only");
+  return body;
+}
 
-Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
-                                 const std::function<void(double, const State&)>& sample,
-                                 const std::function<void(const Workspace&)>& contacts) const {
-  long n = static_cast<long>(std::floor(T / h_));
-  double rest = T - static_cast<double>(n) * h_;
-  if (rest > h_ * (1 - 1e-9)) ++n, rest = 0.0;
-  if (rest < h_ * 1e-9) rest = 0.0;
-  Simulator sim(model_);
-  State start = coords_.fromVector(y);
+State advance(const std::shared_ptr<const Model>& model, const State& start, double T,
+              const std::function<void(double, const State&)>& sample,
+              const std::function<void(const Workspace&)>& contacts) {
+  const double h = model->options.time_step;
+  long n = static_cast<long>(std::floor(T / h));
+  double rest = T - static_cast<double>(n) * h;
+  if (rest > h * (1 - 1e-9)) ++n, rest = 0.0;
+  if (rest < h * 1e-9) rest = 0.0;
+  Simulator sim(model);
   const double t0 = start.time;
   sim.setState(start);
   for (long i = 0; i < n; ++i) {
@@ -79,18 +66,24 @@ Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
     if (sample) sample(sim.state().time - t0, sim.state());
     if (contacts) contacts(sim.current());
   }
-  State end = sim.state();
-  if (rest > 0.0) {
-    auto last = std::make_shared<Model>(*model_);
-    last->options.time_step = rest;
-    Simulator tail(last);
-    tail.setState(end);
-    check(tail.step(), T);
-    end = tail.state();
-    if (sample) sample(T, end);
-    if (contacts) contacts(tail.current());
-  }
-  return coords_.toVector(end);
+  if (rest == 0.0) return sim.state();
+  auto last = std::make_shared<Model>(*model);
+  last->options.time_step = rest;
+  Simulator tail(last);
+  tail.setState(sim.state());
+  check(tail.step(), T);
+  if (sample) sample(T, tail.state());
+  if (contacts) contacts(tail.current());
+  return tail.state();
+}
+
+Flow::Flow(std::shared_ptr<const Model> model, const OrbitCoordinates& coords)
+    : model_(std::move(model)), coords_(coords) {}
+
+Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
+                                 const std::function<void(double, const State&)>& sample,
+                                 const std::function<void(const Workspace&)>& contacts) const {
+  return coords_.toVector(advance(model_, coords_.fromVector(y), T, sample, contacts));
 }
 
 Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds) {
@@ -165,7 +158,7 @@ void parallelColumns(Eigen::Index count, unsigned threads,
     if (e) std::rethrow_exception(e);
 }
 
-Floquet floquet(const Eigen::MatrixXd& monodromy) {
+Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous) {
   Floquet f;
   Eigen::EigenSolver<Eigen::MatrixXd> eig(monodromy, false);
   for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i)
@@ -173,10 +166,10 @@ Floquet floquet(const Eigen::MatrixXd& monodromy) {
   std::sort(f.multipliers.begin(), f.multipliers.end(),
             [](auto a, auto b) { return std::abs(a) > std::abs(b); });
   double nearest = 1e300;
-  for (std::size_t i = 0; i < f.multipliers.size(); ++i)
+  for (std::size_t i = 0; autonomous && i < f.multipliers.size(); ++i)
     if (std::abs(f.multipliers[i] - 1.0) < nearest)
       nearest = std::abs(f.multipliers[i] - 1.0), f.trivial = static_cast<int>(i);
-  f.trivial_error = nearest;
+  f.trivial_error = autonomous ? nearest : 0.0;
   f.stable = true;
   for (std::size_t i = 0; i < f.multipliers.size(); ++i)
     if (static_cast<int>(i) != f.trivial && std::abs(f.multipliers[i]) >= 1.0) f.stable = false;

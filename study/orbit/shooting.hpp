@@ -2,7 +2,7 @@
 // (study/orbit/periodic_orbit.hpp) and its continuation in a parameter
 // (study/orbit/orbit_branch.hpp); internal to study/orbit/. The flow phi_T(y) of the scene's
 // own fixed-step integrator (the last step shortened so that it ends at T exactly), the
-// checks that a scene can be shot (autonomous, fixed step, an observed body coordinate), the
+// checks that a scene can be shot (fixed step, an observed body coordinate, autonomous), the
 // first guess from a settled run, the finite-difference steps of the Jacobian's columns and
 // their spread over threads, and the Floquet multipliers of a monodromy matrix (Seydel,
 // "Practical Bifurcation and Stability Analysis", 3rd ed., Springer 2010, sec. 7.3-7.4).
@@ -24,10 +24,20 @@
 
 namespace tribo::study::shooting {
 
-// The observed body's index in the model after checking that `scene` can be shot: its
-// summary observes a dynamic body's coordinate, it is autonomous, its integrator has a fixed
-// step. Throws OrbitError naming what is missing.
+// The observed body's index in the model after checking that its summary observes a
+// dynamic body's coordinate and its integrator has a fixed step. Throws OrbitError naming
+// what is missing.
+int observedBody(const io::Scene& scene);
+// observedBody after checking that the scene is autonomous (study/orbit/forcing.hpp).
 int shootableBody(const io::Scene& scene);
+
+// The state T after `start` on the scene's integrator (the last step shortened so that it
+// ends at T exactly); `sample(t - start.time, state)` after each step if given, then
+// `contacts(workspace)` with the forces and contacts at that state if given. Throws
+// OrbitError for a failed step.
+State advance(const std::shared_ptr<const Model>& model, const State& start, double T,
+              const std::function<void(double, const State&)>& sample = {},
+              const std::function<void(const Workspace&)>& contacts = {});
 
 // The flow of the scene's integrator: from y over T, with the last step shortened.
 class Flow {
@@ -42,7 +52,6 @@ class Flow {
  private:
   std::shared_ptr<const Model> model_;
   const OrbitCoordinates& coords_;
-  double h_;
 };
 
 // The last two maxima of the observed coordinate in a run of `seconds`: the state at the
@@ -63,14 +72,16 @@ void parallelColumns(Eigen::Index count, unsigned threads,
                      const std::function<void(Eigen::Index)>& column);
 
 // The multipliers of a monodromy matrix by decreasing modulus, the trivial one (nearest 1)
-// and its distance from 1, and stability (every other one inside the unit circle).
+// and its distance from 1, and stability (every other one inside the unit circle). A forced
+// orbit's monodromy (`autonomous` false) has no trivial multiplier: trivial stays -1 and
+// every multiplier must be inside the unit circle.
 struct Floquet {
   std::vector<std::complex<double>> multipliers;
   int trivial = -1;
   double trivial_error = 0;
   bool stable = false;
 };
-Floquet floquet(const Eigen::MatrixXd& monodromy);
+Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous = true);
 
 // The smallest value of x by a parabola through the smallest sample and its neighbours.
 double refinedMinimum(const std::vector<double>& x);

@@ -16,6 +16,7 @@
 #include "io/urdf_scene.hpp"
 #include "study/csv_text.hpp"
 #include "study/file_commit.hpp"
+#include "study/view/page_template.hpp"
 #include "study/view/view_assets.hpp"
 #include "study/view/view_scene.hpp"
 #include "study/view/view_trajectory.hpp"
@@ -26,17 +27,6 @@ namespace {
 
 std::string readText(const std::filesystem::path& file, const std::string& what) {
   return io::readFileBounded(file, what, io::kMaxJsonBytes);
-}
-
-// Text placed inside <script> must not close it.
-std::string scriptSafe(std::string text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    out.push_back(text[i]);
-    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') out.push_back('\\');
-  }
-  return out;
 }
 
 void appendSeries(std::string& out, const std::vector<double>& values) {
@@ -53,12 +43,6 @@ void appendSeries(std::string& out, const std::vector<double>& values) {
     out.append(buf, end);
   }
   out.push_back(']');
-}
-
-void replaceOnce(std::string& page, const std::string& marker, const std::string& text) {
-  const std::size_t at = page.find(marker);
-  if (at == std::string::npos) throw std::logic_error("view page template lacks " + marker);
-  page.replace(at, marker.size(), text);
 }
 
 }  // namespace
@@ -168,12 +152,12 @@ std::string runViewPage(const io::Scene& scene, const std::filesystem::path& run
   data += "]}";
 
   std::string page(view_assets::kPageHtml);
-  replaceOnce(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss));
-  replaceOnce(page, "/*TRIBO_THREE*/", scriptSafe(readText(three_path, "three.js")));
-  replaceOnce(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data) + ";");
+  replaceMarker(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss), "replay");
+  replaceMarker(page, "/*TRIBO_THREE*/", scriptSafe(readText(three_path, "three.js")), "replay");
+  replaceMarker(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data) + ";", "replay");
   std::string js;
   for (std::string_view part : view_assets::kScripts) js += std::string(part) + "\n";
-  replaceOnce(page, "/*TRIBO_JS*/", scriptSafe(js));
+  replaceMarker(page, "/*TRIBO_JS*/", scriptSafe(js), "replay");
   info.bytes = page.size();
   if (info_out) *info_out = info;
   return page;

@@ -9,6 +9,7 @@
 
 #include "io/file_read.hpp"
 #include "study/file_commit.hpp"
+#include "study/view/page_template.hpp"
 #include "study/view/view_assets.hpp"
 #include "study/view/view_trajectory.hpp"
 
@@ -18,21 +19,6 @@ namespace {
 
 std::string readText(const std::filesystem::path& file) {
   return io::readFileBounded(file, "sweep manifest", io::kMaxJsonBytes);
-}
-
-void replaceOnce(std::string& page, const std::string& marker, const std::string& text) {
-  const std::size_t at = page.find(marker);
-  if (at == std::string::npos) throw std::logic_error("sweep page template lacks " + marker);
-  page.replace(at, marker.size(), text);
-}
-
-std::string scriptSafe(const std::string& text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    out.push_back(text[i]);
-    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') out.push_back('\\');
-  }
-  return out;
 }
 
 }  // namespace
@@ -102,9 +88,10 @@ SweepViewInfo writeSweepView(const std::filesystem::path& dir, const ViewOptions
                                {"rows", rows},
                                {"linked", linked}};
   std::string page(view_assets::kSweepHtml);
-  replaceOnce(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss));
-  replaceOnce(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data.dump()) + ";");
-  replaceOnce(page, "/*TRIBO_JS*/", scriptSafe(std::string(view_assets::kSweepScript)));
+  replaceMarker(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss), "sweep");
+  replaceMarker(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data.dump()) + ";",
+                "sweep");
+  replaceMarker(page, "/*TRIBO_JS*/", scriptSafe(std::string(view_assets::kSweepScript)), "sweep");
   info.file = dir / "view.html";
   writeFileWhole(info.file, page);
   info.bytes = page.size();

@@ -52,6 +52,28 @@ TEST_F(OrbitCli, TheBeltsStableOrbitExitsZeroAndWritesBothFiles) {
   EXPECT_FALSE(fs::exists(dir_ / "orbit.json.partial"));
 }
 
+TEST_F(OrbitCli, AForcedSceneGivesTheForcingsPeriodAndRefusesContinuation) {
+  const std::string forced = std::string(TRIBO_SOURCE_DIR) + "/scenes/forced_oscillator.yaml";
+  const Result r = runTribo("orbit " + forced + " --out " + dir_.string() + " --periods 2");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("2 x the forcing's 0.8333333333 s (load 'shaker' force x varies"),
+            std::string::npos)
+      << r.output;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "orbit.json"));
+  EXPECT_TRUE(j["forced"].get<bool>());
+  EXPECT_EQ(j["periods"].get<int>(), 2);
+  EXPECT_NEAR(j["period"].get<double>(), 2 / 1.2, 1e-12);  // f = 1.2 Hz in the scene
+  EXPECT_FALSE(j.contains("trivial_multiplier_error"));
+  for (const auto& mu : j["multipliers"]) EXPECT_FALSE(mu["trivial"].get<bool>());
+  // Continuation takes autonomous orbits only; --period with it is a usage error.
+  EXPECT_EQ(runTribo("orbit " + forced + " --out " + dir_.string() + " --continue f=1:2").status,
+            11);
+  EXPECT_EQ(runTribo("orbit " + forced + " --out " + dir_.string() + " --continue f=1:2 --period 1")
+                .status,
+            1);
+  EXPECT_EQ(runTribo("orbit " + forced + " --out " + dir_.string() + " --periods 0").status, 1);
+}
+
 TEST_F(OrbitCli, NoOrbitElevenBadSceneTwoUsageOne) {
   const Result none =
       runTribo("orbit " + kBelt + " --set v_b=0 --set duration=3 --out " + dir_.string());

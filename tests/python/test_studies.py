@@ -130,6 +130,30 @@ def test_orbit_is_the_cli_orbit_json(cli, belt, tmp_path):
         tribo.orbit(tribo.load_scene(belt, set={"v_b": 0, "duration": 3}))
 
 
+def test_forced_orbit_is_the_linear_oscillators_closed_form_response(source_dir):
+    """A block shaken by F0 sin(w t) on a spring and a damper has a forced orbit of the
+    forcing's period, of peak-to-peak 2 F0 / |k - m w^2 + i c w| (closed form here), with
+    both multipliers of the slide at exp(-c T / 2m); periods=2 gives the same response over
+    two forcing periods; a period that does not fit the forcing is refused naming it."""
+    scene = tribo.load_scene(str(source_dir / "scenes" / "forced_oscillator.yaml"),
+                             set={"m": 2.0, "k": 300.0, "c": 3.0, "F0": 6.0, "f": 2.0})
+    m, k, c, f0, w = 2.0, 300.0, 3.0, 6.0, 2 * math.pi * 2.0
+    o = tribo.orbit(scene)
+    assert o["forced"] and o["forcing_period"] == pytest.approx(0.5, rel=1e-12)
+    assert o["period"] == pytest.approx(0.5, rel=1e-12)
+    assert o["amplitude_pp"] == pytest.approx(2 * f0 / math.hypot(k - m * w * w, c * w), rel=1e-6)
+    slide = math.exp(-c * 0.5 / (2 * m))
+    assert [mu["modulus"] for mu in o["multipliers"][:2]] == pytest.approx([slide] * 2, rel=1e-6)
+    assert "trivial_multiplier_error" not in o
+    two = tribo.orbit(scene, periods=2)
+    assert two["period"] == pytest.approx(1.0, rel=1e-12)
+    assert two["amplitude_pp"] == pytest.approx(o["amplitude_pp"], rel=1e-7)
+    with pytest.raises(tribo.OrbitError, match="not a whole number of load 'shaker'"):
+        tribo.orbit(scene, period=0.3)
+    with pytest.raises(ValueError, match="periods >= 1"):
+        tribo.orbit(scene, periods=0)
+
+
 def test_orbit_branch_points_are_the_orbits_at_their_parameter(belt):
     """tribo.orbit_branch continues the belt's orbit in v_b as `tribo orbit --continue` does;
     each point is the orbit tribo.orbit finds at that v_b (the same shooting: equal to

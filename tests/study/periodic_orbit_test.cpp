@@ -88,9 +88,6 @@ TEST(PeriodicOrbit, RefusesWhatItCannotShootNamingWhy) {
   };
   // A belt at rest: nothing oscillates.
   refused(io::loadScene(kBelt, {"v_b=0", "duration=5"}), "no oscillation");
-  // A belt whose speed is modulated: forced, not autonomous.
-  refused(io::loadScene(std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/belt_modulated.yaml"),
-          "not autonomous");
   // A variable-step integrator: the flow must end on the period exactly.
   refused(io::loadScene(kBelt, {"integrator=dopri5"}), "fixed-step integrator");
 }

@@ -4,8 +4,9 @@ page is opened in headless Chromium (software WebGL), and its DOM status and scr
 checked against expectations computed here from trajectory.csv and the camera parameters.
 
     view_browser_test.py TRIBO SOURCE_DIR WORK_DIR CASE
-CASE: loads | position | controls | orientation | orientation_note | sweep | elements. Exit 0
-pass, 1 fail, 77 skipped (no chromium, PIL or yaml). Not here: the page's own logic (view/*.js), the C++ generator's unit tests.
+CASE: loads | position | controls | orientation | orientation_note | sweep | elements | branch.
+Exit 0 pass, 1 fail, 77 skipped (no chromium, PIL or yaml). Not here: the page's own logic
+(view/*.js), the C++ generators' unit tests.
 """
 import csv
 import html
@@ -13,6 +14,7 @@ import html.parser
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -568,6 +570,130 @@ def case_elements(tribo, source, work):
           (head, tail))
 
 
+def case_branch(tribo, source, work):
+    """A short branch of the belt's orbit in the belt speed (tribo orbit --continue) and its page
+    (tribo view): one dot per row of branch.csv where its parameter and amplitude put it, a
+    click on a dot chooses that point and shows its period, the replay plot spans its
+    peak-to-peak amplitude and replays its sampled orbit, the arrow keys step along the branch."""
+    out = os.path.join(work, "branch")
+    if os.path.exists(out):
+        shutil.rmtree(out)
+    result = subprocess.run([tribo, "orbit", os.path.join(source, "scenes", "belt.yaml"), "--continue",
+                             "v_b=1:1.5", "--step", "0.25", "--max-points", "4", "--out", out],
+                            capture_output=True, text=True, timeout=120)
+    check(result.returncode == 0, "tribo orbit --continue v_b=1:1.5: " + result.stdout.strip()[-300:] +
+          result.stderr.strip()[-300:])
+    with open(os.path.join(out, "branch.csv")) as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(out, "branch.json")) as f:
+        manifest = json.load(f)
+    samples, times = {}, {}
+    with open(os.path.join(out, "branch_orbits.csv")) as f:
+        for r in list(csv.reader(f))[1:]:
+            times.setdefault(int(r[0]), []).append(float(r[1]))
+            samples.setdefault(int(r[0]), []).append(float(r[2]))
+    n = len(rows)
+    check(n >= 2, "the branch has %d points" % n)
+    result = subprocess.run([tribo, "view", out], capture_output=True, text=True, timeout=120)
+    check(result.returncode == 0 and ("%d points" % n) in result.stdout and
+          os.path.exists(os.path.join(out, "view.html")),
+          "tribo view BRANCH_DIR: " + result.stdout.strip() + result.stderr.strip())
+
+    def close(a, b, rel):
+        return abs(a - b) <= rel * max(abs(a), abs(b))
+
+    # A click on the last point's dot (the page dispatches it at the dot's pixel), then the
+    # replay twice, 300 ms of the page's clock apart.
+    last = n - 1
+    status = browse(work, "file://%s/view.html#click=%d,wait,wait&clickdelay=300" % (out, last), "dom",
+                    width=1000, height=800, budget=2000)
+    check(status["errors"] == [], "no JavaScript or console errors: %s" % status["errors"])
+    drawn = status["drawn_points"]
+    check(status["points"] == n and len(drawn) == n,
+          "%d points drawn, branch.csv has %d rows" % (len(drawn), n))
+    for d in drawn:
+        r = rows[d["index"]]
+        check(close(d["parameter"], float(r["parameter"]), 1e-12) and
+              close(d["amplitude_pp"], float(r["amplitude_pp"]), 1e-12) and
+              d["stable"] == (r["stable"] == "1"),
+              "point %d drawn at %s = %.6g, amplitude %.6g, %s, as branch.csv says" %
+              (d["index"], manifest["parameter"], d["parameter"], d["amplitude_pp"],
+               "stable" if d["stable"] else "unstable"))
+    by_parameter = sorted(drawn, key=lambda d: d["parameter"])
+    by_amplitude = sorted(drawn, key=lambda d: d["amplitude_pp"])
+    check(all(a["x"] < b["x"] for a, b in zip(by_parameter, by_parameter[1:])) and
+          all(a["y"] > b["y"] for a, b in zip(by_amplitude, by_amplitude[1:])),
+          "the dots lie rightwards as the parameter grows and upwards as the amplitude does")
+    cw, ch = status["canvas"]
+    check(all(0 <= d["x"] <= cw and 0 <= d["y"] <= ch for d in drawn), "every dot inside the canvas")
+    labels = {l["name"]: l for l in status["labels"]}
+    check(labels["x_axis"]["text"] == manifest["parameter"] and
+          labels["y_axis"]["text"] == "peak to peak of " + manifest["observed"],
+          "axes labelled %r and %r" % (labels["x_axis"]["text"], labels["y_axis"]["text"]))
+    for l in status["labels"]:
+        x0, y0, x1, y1 = l["canvas_box"]
+        check(0 <= x0 < x1 <= cw and 0 <= y0 < y1 <= ch,
+              "label %s %r lies inside the %d x %d canvas" % (l["name"], l["text"], cw, ch))
+    steady = status["segments"]["steady_solid"] + status["segments"]["steady_dashed"]
+    check(steady >= n - 1, "steady sliding drawn on the axis (%d segments)" % steady)
+
+    check(status["actions"] and status["actions"][0]["action"] == "click:%d" % last and
+          status["selected"]["index"] == last,
+          "the click chose point %d: %s" % (last, status["actions"]))
+    period = float(rows[last]["period"])
+    check(close(status["selected"]["period"], period, 1e-12),
+          "the chosen point's period %.12g s, branch.csv's %.12g s" % (status["selected"]["period"], period))
+    m = re.search(r"period (\S+) s", status["selected"]["text"])
+    check(m is not None and close(float(m.group(1)), period, 1e-9),
+          "the page shows it: %r" % status["selected"]["text"])
+    replay = status["replay"]
+    amplitude = float(rows[last]["amplitude_pp"])
+    lo, hi = replay["x_range"]
+    check(replay["point"] == last and close(hi - lo, amplitude, 1e-6),
+          "the replay plot spans %.10g of %s, point %d's amplitude_pp %.10g" %
+          (hi - lo, manifest["observed"], last, amplitude))
+    check(replay["samples"] == len(samples[last]) and
+          close(replay["t_range"][1] - replay["t_range"][0], period, 1e-6),
+          "it replays point %d's %d samples of branch_orbits.csv over one period" %
+          (last, replay["samples"]))
+    # The samples' own extremes: the minimum is refined between samples for amplitude_pp
+    # (docs/orbits.md), about 1e-6 of it lower than the lowest sample.
+    slo, shi = replay["sample_range"]
+    check(close(shi - slo, max(samples[last]) - min(samples[last]), 1e-8) and
+          close(shi - slo, amplitude, 1e-5),
+          "its samples span %.10g (branch_orbits.csv: %.10g)" %
+          (shi - slo, max(samples[last]) - min(samples[last])))
+    # The marker: on the orbit (branch_orbits.csv interpolated here), and running in time: one
+    # period in seconds_per_period of the page's clock.
+    waits = [a for a in status["actions"] if a["action"] == "wait"]
+    check(len(waits) == 2, "two replays logged")
+    for a in waits:
+        t, x = a["marker"]["t"], a["marker"]["x"]
+        expected = interpolate(times[last], samples[last], t)
+        check(0 <= t <= replay["t_range"][1] and abs(x - expected) <= 1e-6 * amplitude,
+              "the marker at t = %.4f s is on the orbit: %s = %.8g (branch_orbits.csv: %.8g)" %
+              (t, manifest["observed"], x, expected))
+    clock = (waits[1]["clock"] - waits[0]["clock"]) / 1000.0
+    advance = clock / replay["seconds_per_period"] * period % period
+    moved = (waits[1]["marker"]["t"] - waits[0]["marker"]["t"]) % period
+    check(clock > 0.2 and abs(moved - advance) < 1e-3,
+          "the marker moved %.4f s along the orbit in %.4f s of the page's clock (%.4f s expected at "
+          "%.3g s a period)" % (moved, clock, advance, replay["seconds_per_period"]))
+
+    # Arrow keys: right and left step along the branch, held at its ends.
+    status = browse(work, "file://%s/view.html#click=0,right,right,left,left,left" % out, "dom",
+                    width=1000, height=800, budget=2000)
+    expected, k = [0], 0
+    for step in (1, 1, -1, -1, -1):
+        k = max(0, min(n - 1, k + step))
+        expected.append(k)
+    got = [a["selected"] for a in status["actions"]]
+    check(status["errors"] == [] and got == expected, "selections %s, expected %s" % (got, expected))
+    for a in status["actions"]:
+        check(close(a["period"], float(rows[a["selected"]]["period"]), 1e-12),
+              "%s: point %d, period %.10g s" % (a["action"], a["selected"], a["period"]))
+
+
 def main():
     tribo, source, work, case = sys.argv[1:5]
     if not chromium():
@@ -584,7 +710,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     {"loads": case_loads, "position": case_position, "controls": case_controls,
      "orientation_note": case_orientation_note, "orientation": case_orientation, "sweep": case_sweep,
-     "elements": case_elements}[case](os.path.abspath(tribo), source, work)
+     "elements": case_elements, "branch": case_branch}[case](os.path.abspath(tribo), source, work)
     print("PASS")
 
 
