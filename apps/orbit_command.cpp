@@ -206,13 +206,18 @@ int runOrbit(Arguments& a) {
                 1.0 / r.period, r.guess_period);
   std::printf("amplitude        %.10g peak to peak in %s (%.10g to %.10g)\n", r.amplitude_pp,
               r.observed.c_str(), r.x_min, r.x_max);
-  std::printf("newton           %d iterations, residual %.3g\n", r.iterations, r.residual);
+  std::printf("newton           %d iterations, residual %.3g (%s: %ld flows", r.iterations,
+              r.residual, r.solver.c_str(), r.flows);
+  if (r.solver == "krylov") std::printf(", %ld Krylov products", r.krylov_products);
+  std::printf(")\n");
+  const char* which = r.solver == "krylov" ? " leading" : "";
   if (r.forced)
-    std::printf("multipliers      %zu (no trivial one: the forcing fixes the phase)\n",
-                r.multipliers.size());
+    std::printf("multipliers      %zu%s (no trivial one: the forcing fixes the phase)\n",
+                r.multipliers.size(), which);
   else
-    std::printf("multipliers      %zu; trivial one %.12g%+.3gi (|mu - 1| = %.3g)\n",
-                r.multipliers.size(), r.multipliers[static_cast<std::size_t>(r.trivial)].real(),
+    std::printf("multipliers      %zu%s; trivial one %.12g%+.3gi (|mu - 1| = %.3g)\n",
+                r.multipliers.size(), which,
+                r.multipliers[static_cast<std::size_t>(r.trivial)].real(),
                 r.multipliers[static_cast<std::size_t>(r.trivial)].imag(), r.trivial_error);
   for (std::size_t i = 0, shown = 0; i < r.multipliers.size() && shown < 4; ++i) {
     if (static_cast<int>(i) == r.trivial) continue;
@@ -253,6 +258,21 @@ Command addOrbitCommand(CLI::App& tribo) {
                    [a](const std::string& v) {
                      a->spec.periods = wholeAtLeast("--periods", v, 1);
                      a->forced_options = true;
+                   });
+  addCheckedOption(*orbit, "--solver", "KIND",
+                   "Newton's linear systems: dense (every multiplier), krylov (GMRES and\n"
+                   "Arnoldi on products, one flow each; the 8 leading multipliers) or auto\n"
+                   "(krylov from 40 unknowns; default)",
+                   [a](const std::string& v) {
+                     if (v == "dense")
+                       a->spec.solver = study::OrbitSolver::kDense;
+                     else if (v == "krylov")
+                       a->spec.solver = study::OrbitSolver::kKrylov;
+                     else if (v == "auto")
+                       a->spec.solver = study::OrbitSolver::kAuto;
+                     else
+                       throw std::invalid_argument(
+                           "--solver: expected dense, krylov or auto, found '" + v + "'");
                    });
   addCheckedOption(*orbit, "--continue", "NAME=FROM:TO",
                    "follow the orbit's branch in parameter NAME from FROM towards TO\n"

@@ -114,8 +114,15 @@ py::list runTradeoff(const py::object& scene, const py::object& set,
 }
 
 py::object runOrbit(const SceneHandle& scene, double settle, double tolerance, double period,
-                    int periods) {
+                    int periods, const std::string& solver) {
   study::OrbitSpec spec;
+  if (solver == "dense")
+    spec.solver = study::OrbitSolver::kDense;
+  else if (solver == "krylov")
+    spec.solver = study::OrbitSolver::kKrylov;
+  else if (solver != "auto")
+    throw py::value_error("orbit: solver must be 'auto', 'dense' or 'krylov', not '" + solver +
+                          "'");
   spec.settle = settle;
   spec.tolerance = tolerance;
   spec.period = period;
@@ -219,13 +226,16 @@ void bindStudies(py::module_& m) {
         "B w with the names of their 'states' and 'inputs' (the loads' components and the "
         "actuators' targets). Raises NoSteadyState, ModesError.");
   m.def("orbit", &runOrbit, py::arg("scene"), py::arg("settle") = 0.0, py::arg("tolerance") = 1e-9,
-        py::arg("period") = 0.0, py::arg("periods") = 1,
-        "orbit(scene, settle=0, tolerance=1e-9, period=0, periods=1) -> dict: the periodic "
+        py::arg("period") = 0.0, py::arg("periods") = 1, py::arg("solver") = "auto",
+        "orbit(scene, settle=0, tolerance=1e-9, period=0, periods=1, solver='auto') -> dict: "
+        "the periodic "
         "orbit as `tribo orbit` finds it (orbit.json's document: period, amplitude_pp, stable, "
         "multipliers, newton, forced, start...) with 't' and 'x', the observed coordinate over "
         "one period as arrays. A scene whose inputs vary in time has a forced orbit: period "
         "is the forcing's (0: read from its sines), periods the orbit's length in forcing "
-        "periods. Raises OrbitError (no oscillation, no forcing period, no convergence).");
+        "periods. solver: 'dense', 'krylov' (GMRES and Arnoldi on flows; the 8 leading "
+        "multipliers) or 'auto' (krylov from 40 unknowns). Raises OrbitError (no oscillation, no "
+        "forcing period, no convergence).");
   m.def("orbit_branch", &runOrbitBranch, py::arg("scene"), py::arg("parameter"), py::arg("start"),
         py::arg("end"), py::arg("max_points") = 20, py::arg("step") = 0.0, py::arg("settle") = 0.0,
         py::arg("tolerance") = 1e-9, py::arg("from_hopf") = false, py::arg("hopf_amplitude") = 0.0,

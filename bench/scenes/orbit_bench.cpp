@@ -5,16 +5,22 @@
 // cores, the Floquet multipliers; counter over_settled_run); BM_OrbitBranch/belt (the branch
 // from v_b = 1.5 to 3 in steps of 0.5, `tribo orbit --continue`: counters points and
 // per_point_over_settled_run). What a branch point costs against a sweep point is the
-// question a user of `--continue` asks.
+// question a user of `--continue` asks. BM_OrbitLanes/<dense|krylov>/N: the orbit of N belt
+// oscillators side by side (tests/support/belt_lanes.hpp, 12 N unknowns) by dense shooting
+// (2 (12 N + 1) flows a Newton iteration, on the cores) and by matrix-free Krylov shooting
+// (GMRES and Arnoldi, a flow a product); counters unknowns, flows, krylov_products and, for
+// Krylov, over_dense (its time over dense shooting's at the same N, measured before it).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <map>
 #include <string>
 
 #include "io/scene_loader.hpp"
 #include "study/orbit/orbit_branch.hpp"
 #include "study/orbit/periodic_orbit.hpp"
 #include "study/scene_run.hpp"
+#include "support/belt_lanes.hpp"
 
 namespace {
 
@@ -70,8 +76,44 @@ void BM_OrbitBranch(benchmark::State& st) {
         each / static_cast<double>(points) / settledSeconds();
 }
 
+std::map<long, double>& denseSeconds() {
+  static std::map<long, double> seconds;
+  return seconds;
+}
+
+void BM_OrbitLanes(benchmark::State& st, tribo::study::OrbitSolver solver) {
+  const long lanes = st.range(0);
+  const auto scene =
+      tribo::io::loadSceneFromString(tribo::test::beltLanes(static_cast<int>(lanes)), "lanes.yaml");
+  tribo::study::OrbitSpec spec;
+  spec.solver = solver;
+  tribo::study::OrbitResult r;
+  const double each = timed(st, [&] { r = tribo::study::findPeriodicOrbit(scene, spec); });
+  st.counters["unknowns"] = static_cast<double>(r.start.size());
+  st.counters["flows"] = static_cast<double>(r.flows);
+  st.counters["krylov_products"] = static_cast<double>(r.krylov_products);
+  st.counters["newton_iterations"] = r.iterations;
+  if (solver == tribo::study::OrbitSolver::kDense) {
+    denseSeconds()[lanes] = each;
+  } else if (denseSeconds().count(lanes)) {
+    st.counters["over_dense"] = each / denseSeconds()[lanes];
+  }
+}
+
 }  // namespace
 
+BENCHMARK_CAPTURE(BM_OrbitLanes, dense, tribo::study::OrbitSolver::kDense)
+    ->Arg(4)
+    ->Arg(10)
+    ->Arg(25)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_OrbitLanes, krylov, tribo::study::OrbitSolver::kKrylov)
+    ->Arg(4)
+    ->Arg(10)
+    ->Arg(25)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 BENCHMARK(BM_Baseline_SettledRun)
     ->Name("BM_Baseline_SettledRun/belt")
     ->Unit(benchmark::kMillisecond);

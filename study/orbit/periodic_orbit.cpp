@@ -12,6 +12,7 @@
 
 #include "core/simulator.hpp"
 #include "study/orbit/forcing.hpp"
+#include "study/orbit/krylov.hpp"
 #include "study/orbit/orbit_coordinates.hpp"
 #include "study/orbit/shooting.hpp"
 
@@ -23,6 +24,67 @@ namespace {
 
 unsigned threadsOf(const OrbitSpec& spec) {
   return std::max(1u, spec.threads ? spec.threads : std::thread::hardware_concurrency());
+}
+
+// Relative accuracy GMRES solves Newton's step to, and the products it may spend on one step.
+constexpr double kGmresTolerance = 1e-8;
+constexpr int kGmresMostProducts = 400;
+// Arnoldi's tolerance on the leading multipliers.
+constexpr double kArnoldiTolerance = 1e-8;
+
+bool useKrylov(const OrbitSpec& spec, Eigen::Index unknowns) {
+  if (spec.solver == OrbitSolver::kAuto) return unknowns >= kKrylovFromUnknowns;
+  return spec.solver == OrbitSolver::kKrylov;
+}
+
+// Each unknown's scale: its size, with the finite differences' floor.
+Eigen::VectorXd scalesOf(const Eigen::VectorXd& y, const Eigen::VectorXd& floor) {
+  return y.cwiseAbs().cwiseMax(floor);
+}
+
+// The leading multipliers by Arnoldi on D^-1 M D (the same eigenvalues as the monodromy M;
+// D the unknowns' scales), each product a central difference of two flows.
+shooting::Floquet leadingFloquet(const Flow& flow, const Eigen::VectorXd& y, double T,
+                                 const Eigen::VectorXd& scale, const OrbitSpec& spec,
+                                 bool autonomous, OrbitResult& r) {
+  const Eigen::Index n = y.size();
+  const Eigen::Index count = std::min<Eigen::Index>(spec.leading_multipliers, n - 2);
+  const krylov::Product monodromy = [&](const Eigen::VectorXd& u) {
+    const double size = u.cwiseAbs().maxCoeff();
+    if (size == 0.0) return Eigen::VectorXd(Eigen::VectorXd::Zero(n));
+    const double eps = spec.fd_step / size;
+    const Eigen::VectorXd v = scale.cwiseProduct(u);
+    return Eigen::VectorXd(
+        ((flow(y + eps * v, T) - flow(y - eps * v, T)) / (2 * eps)).cwiseQuotient(scale));
+  };
+  try {
+    const krylov::Leading leading =
+        krylov::leadingEigenvalues(monodromy, n, count, kArnoldiTolerance);
+    r.krylov_products += leading.products;
+    return shooting::classify(leading.values, autonomous);
+  } catch (const std::runtime_error& e) {
+    throw OrbitError(std::string("the orbit converged, but its multipliers did not: ") + e.what() +
+                     " (--solver dense computes all of them)");
+  }
+}
+
+// Newton's step dz with J dz = -F by GMRES on the scaled system (rows and columns by the
+// unknowns' scales, so that metres, radians and bristle deflections weigh alike).
+// `apply(v)` is J v.
+Eigen::VectorXd krylovStep(const krylov::Product& apply, const Eigen::VectorXd& F,
+                           const Eigen::VectorXd& column_scale, const Eigen::VectorXd& row_scale,
+                           OrbitResult& r) {
+  const krylov::Product scaled = [&](const Eigen::VectorXd& u) {
+    return Eigen::VectorXd(apply(column_scale.cwiseProduct(u)).cwiseQuotient(row_scale));
+  };
+  const krylov::Solution sol =
+      krylov::gmres(scaled, -F.cwiseQuotient(row_scale), kGmresTolerance, kGmresMostProducts);
+  r.krylov_products += sol.products;
+  if (!sol.converged)
+    throw OrbitError("GMRES did not solve Newton's step in " + std::to_string(sol.products) +
+                     " products (relative error " + std::to_string(sol.error) +
+                     "): --solver dense factorizes the whole Jacobian instead");
+  return column_scale.cwiseProduct(sol.x);
 }
 
 // The observed coordinate over one period from y (r.t, r.x) and its extremes.
@@ -85,26 +147,43 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
   } catch (const std::runtime_error&) {
   }
   const Eigen::VectorXd floor = shooting::fdFloor(y, settled.friction_values.size());
-  Eigen::MatrixXd monodromy(n, n);
+  const bool krylov = useKrylov(spec, n);
+  r.solver = krylov ? "krylov" : "dense";
+  Eigen::MatrixXd monodromy(krylov ? 0 : n, krylov ? 0 : n);
   bool converged = false;
   for (int it = 0;; ++it) {
-    const Eigen::VectorXd F = flow(y, T) - y;
+    const Eigen::VectorXd end = flow(y, T);
+    const Eigen::VectorXd F = end - y;
     r.residual = F.norm() / (1.0 + y.norm());
     r.iterations = it;
-    shooting::parallelColumns(n, threadsOf(spec), [&](Eigen::Index j) {
-      const double d = spec.fd_step * std::max(std::abs(y[j]), floor[j]);
-      Eigen::VectorXd up = y, down = y;
-      up[j] += d;
-      down[j] -= d;
-      monodromy.col(j) = (flow(up, T) - flow(down, T)) / (2 * d);
-    });
+    if (!krylov)
+      shooting::parallelColumns(n, threadsOf(spec), [&](Eigen::Index j) {
+        const double d = spec.fd_step * std::max(std::abs(y[j]), floor[j]);
+        Eigen::VectorXd up = y, down = y;
+        up[j] += d;
+        down[j] -= d;
+        monodromy.col(j) = (flow(up, T) - flow(down, T)) / (2 * d);
+      });
     if (r.residual <= spec.tolerance) {
       converged = true;
       break;
     }
     if (it == spec.max_iterations) break;
-    // Least squares: the joints' constraints make M - I singular in the directions they remove.
-    y += (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F);
+    if (krylov) {
+      // (M - I) v by a forward difference of the flow: one flow per product.
+      const krylov::Product apply = [&](const Eigen::VectorXd& v) {
+        const double size = v.cwiseQuotient(scalesOf(y, floor)).cwiseAbs().maxCoeff();
+        if (size == 0.0) return Eigen::VectorXd(Eigen::VectorXd::Zero(n));
+        const double eps = spec.fd_step / size;
+        return Eigen::VectorXd((flow(y + eps * v, T) - end) / eps - v);
+      };
+      const Eigen::VectorXd scale = scalesOf(y, floor);
+      y += krylovStep(apply, F, scale, scale, r);
+    } else {
+      // Least squares: the joints' constraints make M - I singular in the directions they
+      // remove.
+      y += (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F);
+    }
     if (!y.allFinite())
       throw OrbitError(
           "Newton's iteration left the orbit: start from a run closer to it (a "
@@ -122,11 +201,13 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
                      "longer --settle brings the guess closer)");
   r.period = T;
   r.start = y;
-  shooting::Floquet f = shooting::floquet(monodromy, false);
+  shooting::Floquet f = krylov ? leadingFloquet(flow, y, T, scalesOf(y, floor), spec, false, r)
+                               : shooting::floquet(monodromy, false);
   r.multipliers = std::move(f.multipliers);
   r.stable = f.stable;
   r.reference = settled;
   sampleOrbit(flow, coords, y, T, body, axis, r);
+  r.flows = flow.count();
 }
 
 }  // namespace
@@ -168,7 +249,9 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
   // and 10 mrad for bodies; the largest friction state for those).
   const Eigen::VectorXd floor = shooting::fdFloor(y, guess.state.friction_values.size());
 
-  Eigen::MatrixXd monodromy(n, n);
+  const bool krylov = useKrylov(spec, n);
+  r.solver = krylov ? "krylov" : "dense";
+  Eigen::MatrixXd monodromy(krylov ? 0 : n, krylov ? 0 : n);
   Eigen::VectorXd along(n);
   auto jacobian = [&] {
     // Column j < n: d phi / d y_j; column n: d phi / d T. Columns split over the threads.
@@ -197,17 +280,37 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
     F[n] = y[phase];
     r.residual = F.norm() / (1.0 + y.norm());
     r.iterations = it;
-    jacobian();  // also the monodromy at the final point
+    if (!krylov) jacobian();  // also the monodromy at the final point
     if (r.residual <= spec.tolerance) {
       converged = true;
       break;
     }
     if (it == spec.max_iterations) break;
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
-    J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
-    J.topRightCorner(n, 1) = along;
-    J(n, phase) = 1.0;
-    Eigen::VectorXd dz = J.colPivHouseholderQr().solve(-F);
+    Eigen::VectorXd dz;
+    if (krylov) {
+      // J (v, v_T) = ((phi_{T + eps v_T}(y + eps v) - phi_T(y)) / eps - v, v_phase): one flow
+      // per product.
+      Eigen::VectorXd scale(n + 1);
+      scale << scalesOf(y, floor), T;
+      Eigen::VectorXd row_scale = scale;
+      row_scale[n] = scale[phase];
+      const krylov::Product apply = [&](const Eigen::VectorXd& v) {
+        Eigen::VectorXd out(n + 1);
+        const double size = v.cwiseQuotient(scale).cwiseAbs().maxCoeff();
+        if (size == 0.0) return Eigen::VectorXd(Eigen::VectorXd::Zero(n + 1));
+        const double eps = spec.fd_step / size;
+        out.head(n) = (flow(y + eps * v.head(n), T + eps * v[n]) - end) / eps - v.head(n);
+        out[n] = v[phase];
+        return out;
+      };
+      dz = krylovStep(apply, F, scale, row_scale, r);
+    } else {
+      Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
+      J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
+      J.topRightCorner(n, 1) = along;
+      J(n, phase) = 1.0;
+      dz = J.colPivHouseholderQr().solve(-F);
+    }
     // A damped step: the period changes by at most a quarter of itself.
     const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
     y += scale * dz.head(n);
@@ -225,7 +328,8 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
 
   r.period = T;
   r.start = y;
-  shooting::Floquet f = shooting::floquet(monodromy);
+  shooting::Floquet f = krylov ? leadingFloquet(flow, y, T, scalesOf(y, floor), spec, true, r)
+                               : shooting::floquet(monodromy);
   r.multipliers = std::move(f.multipliers);
   r.trivial = f.trivial;
   r.trivial_error = f.trivial_error;
@@ -234,6 +338,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
 
   // One period sampled at the step, from the orbit's start (a maximum of x).
   sampleOrbit(flow, coords, y, T, body, axis, r);
+  r.flows = flow.count();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
   return r;
 }
@@ -268,7 +373,10 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
   j["newton"] = {{"iterations", r.iterations},
                  {"residual", r.residual},
                  {"tolerance", spec.tolerance},
-                 {"fd_step", spec.fd_step}};
+                 {"fd_step", spec.fd_step},
+                 {"solver", r.solver},
+                 {"flows", r.flows},
+                 {"krylov_products", r.krylov_products}};
   j["guess"] = {{"settle", spec.settle > 0.0 ? spec.settle : scene.model->options.duration},
                 {"period", r.guess_period},
                 {"amplitude_pp", r.guess_amplitude_pp}};

@@ -27,7 +27,11 @@
 // stay the same along the orbit; forced scenes whose inputs repeat (sines, sine drives, or a
 // period the user gives and every input is checked against).
 // Continuation in a parameter and the bifurcations along a branch: study/orbit/orbit_branch.hpp.
-// Not here: a start from a Hopf point of `tribo modes`, matrix-free Krylov solves for large states.
+// Large states: with OrbitSolver::kKrylov (auto from 40 unknowns) Newton's step is GMRES on
+// products of the Jacobian with a vector, each one flow, and only the leading multipliers are
+// computed, by Arnoldi (study/orbit/krylov.hpp).
+// Not here: a start from a Hopf point of `tribo modes` (hopf_start.hpp); continuation
+// (orbit_branch.hpp), whose linear systems stay dense.
 #pragma once
 
 #include <Eigen/Dense>
@@ -48,6 +52,15 @@ class OrbitError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// How Newton's linear systems and the multipliers are solved: dense (a Jacobian column of two
+// flows per unknown, on the cores; every multiplier) or Krylov (matrix-free: GMRES for Newton's
+// step, one flow per product, and Arnoldi for the leading multipliers;
+// study/orbit/krylov.hpp); auto takes Krylov from kKrylovFromUnknowns unknowns on (measured,
+// bench/scenes/orbit_bench.cpp BM_OrbitLanes: Krylov takes 0.87 of dense shooting's time at 12
+// unknowns, 0.34 at 48, 0.17 at 120 and 0.15 at 300).
+enum class OrbitSolver { kAuto, kDense, kKrylov };
+inline constexpr long kKrylovFromUnknowns = 40;
+
 struct OrbitSpec {
   double settle = 0.0;      // [s] the run that gives the first guess; 0: the scene's duration
   int max_iterations = 12;  // Newton iterations at most
@@ -56,6 +69,8 @@ struct OrbitSpec {
   unsigned threads = 0;     // for the Jacobian's columns; 0: one per core
   double period = 0.0;      // [s] forced scenes: the forcing's period; 0: read from the inputs
   int periods = 1;          // forced scenes: the orbit spans this many forcing periods
+  OrbitSolver solver = OrbitSolver::kAuto;
+  long leading_multipliers = 8;  // Krylov: the multipliers of largest modulus computed
 };
 
 struct OrbitResult {
@@ -73,6 +88,9 @@ struct OrbitResult {
   std::string forcing;        // forced: the first input that varies, and how many more
   double forcing_period = 0;  // [s] forced: the inputs' common period
   int periods = 1;            // forced: the orbit's period over the forcing's
+  std::string solver;         // "dense" or "krylov"
+  long flows = 0;             // flows of one period computed (the settling run aside)
+  long krylov_products = 0;   // Krylov: GMRES and Arnoldi products
   std::vector<std::string> coordinates;  // names of y0's entries
   Eigen::VectorXd start;                 // y0
   State reference;           // the state y0's coordinates are taken against (its contacts and time)

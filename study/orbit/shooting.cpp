@@ -83,6 +83,7 @@ Flow::Flow(std::shared_ptr<const Model> model, const OrbitCoordinates& coords)
 Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
                                  const std::function<void(double, const State&)>& sample,
                                  const std::function<void(const Workspace&)>& contacts) const {
+  ++count_;
   return coords_.toVector(advance(model_, coords_.fromVector(y), T, sample, contacts));
 }
 
@@ -159,10 +160,16 @@ void parallelColumns(Eigen::Index count, unsigned threads,
 }
 
 Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous) {
-  Floquet f;
   Eigen::EigenSolver<Eigen::MatrixXd> eig(monodromy, false);
+  std::vector<std::complex<double>> multipliers;
   for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i)
-    f.multipliers.push_back(eig.eigenvalues()[i]);
+    multipliers.push_back(eig.eigenvalues()[i]);
+  return classify(std::move(multipliers), autonomous);
+}
+
+Floquet classify(std::vector<std::complex<double>> multipliers, bool autonomous) {
+  Floquet f;
+  f.multipliers = std::move(multipliers);
   std::sort(f.multipliers.begin(), f.multipliers.end(),
             [](auto a, auto b) { return std::abs(a) > std::abs(b); });
   double nearest = 1e300;

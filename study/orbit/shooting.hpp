@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <atomic>
 #include <complex>
 #include <functional>
 #include <memory>
@@ -48,10 +49,13 @@ class Flow {
   Eigen::VectorXd operator()(const Eigen::VectorXd& y, double T,
                              const std::function<void(double, const State&)>& sample = {},
                              const std::function<void(const Workspace&)>& contacts = {}) const;
+  // Flows computed so far (on any thread).
+  long count() const { return count_.load(); }
 
  private:
   std::shared_ptr<const Model> model_;
   const OrbitCoordinates& coords_;
+  mutable std::atomic<long> count_{0};
 };
 
 // The last two maxima of the observed coordinate in a run of `seconds`: the state at the
@@ -82,6 +86,9 @@ struct Floquet {
   bool stable = false;
 };
 Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous = true);
+// The same from multipliers already computed (all of them, or the leading ones: the trivial
+// one and stability are decided among those given).
+Floquet classify(std::vector<std::complex<double>> multipliers, bool autonomous);
 
 // The smallest value of x by a parabola through the smallest sample and its neighbours.
 double refinedMinimum(const std::vector<double>& x);

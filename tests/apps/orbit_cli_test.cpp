@@ -72,6 +72,15 @@ TEST_F(OrbitCli, AForcedSceneGivesTheForcingsPeriodAndRefusesContinuation) {
                 .status,
             1);
   EXPECT_EQ(runTribo("orbit " + forced + " --out " + dir_.string() + " --periods 0").status, 1);
+  const Result krylov =
+      runTribo("orbit " + forced + " --out " + dir_.string() + " --solver krylov");
+  EXPECT_EQ(krylov.status, 0) << krylov.output;
+  EXPECT_NE(krylov.output.find("(krylov: "), std::string::npos) << krylov.output;
+  EXPECT_NE(krylov.output.find("8 leading"), std::string::npos) << krylov.output;
+  const Result bad = runTribo("orbit " + forced + " --out " + dir_.string() + " --solver lu");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.output.find("expected dense, krylov or auto, found 'lu'"), std::string::npos)
+      << bad.output;
 }
 
 TEST_F(OrbitCli, NoOrbitElevenBadSceneTwoUsageOne) {

@@ -152,6 +152,13 @@ def test_forced_orbit_is_the_linear_oscillators_closed_form_response(source_dir)
         tribo.orbit(scene, period=0.3)
     with pytest.raises(ValueError, match="periods >= 1"):
         tribo.orbit(scene, periods=0)
+    # Matrix-free shooting: the same orbit, the 8 leading multipliers.
+    k = tribo.orbit(scene, solver="krylov")
+    assert k["newton"]["solver"] == "krylov" and o["newton"]["solver"] == "dense"
+    assert k["amplitude_pp"] == pytest.approx(o["amplitude_pp"], rel=1e-9)
+    assert len(k["multipliers"]) == 8 and k["multipliers"][0]["modulus"] == pytest.approx(slide)
+    with pytest.raises(ValueError, match="solver must be"):
+        tribo.orbit(scene, solver="lu")
 
 
 def test_orbit_branch_points_are_the_orbits_at_their_parameter(belt):
