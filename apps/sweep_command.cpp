@@ -257,16 +257,19 @@ Command addSweepCommand(CLI::App& tribo) {
                      scene->required(false);
                      out->required(false);
                    });
-  addCheckedOption(
-      *sweep, "--analysis", "run|modes",
-      "modes: per point the linear stability of the steady state instead of a run\n"
-      "(tribo modes): columns max_growth_rate, frequency, unstable_modes",
-      [a](const std::string& v) {
-        const auto analysis = study::kSweepAnalysisNames.find(v);
-        if (!analysis)
-          throw std::invalid_argument("--analysis: expected run or modes, found '" + v + "'");
-        a->spec.analysis = *analysis;
-      });
+  addCheckedOption(*sweep, "--analysis", "run|modes|orbit",
+                   "modes: per point the linear stability of the steady state instead of a run\n"
+                   "(tribo modes): columns max_growth_rate, frequency, unstable_modes;\n"
+                   "orbit: per point the periodic orbit (tribo orbit; a forced scene's over a\n"
+                   "forcing frequency is its frequency-response curve): columns period,\n"
+                   "amplitude_pp, x_min, x_max, largest_multiplier, stable, iterations, residual",
+                   [a](const std::string& v) {
+                     const auto analysis = study::kSweepAnalysisNames.find(v);
+                     if (!analysis)
+                       throw std::invalid_argument(
+                           "--analysis: expected run, modes or orbit, found '" + v + "'");
+                     a->spec.analysis = *analysis;
+                   });
   sweep->footer(
       "Rows are written to DIR/results.csv as each point finishes; run again with the same\n"
       "arguments to resume an interrupted sweep. Under mpirun the points are spread over the\n"

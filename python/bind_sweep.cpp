@@ -87,8 +87,10 @@ study::SweepAxis axisFrom(const std::string& name, const py::handle& values) {
 
 study::SweepAnalysis analysisFrom(const std::string& analysis) {
   if (analysis == "modes") return study::SweepAnalysis::kModes;
+  if (analysis == "orbit") return study::SweepAnalysis::kOrbit;
   if (analysis != "run")
-    throw py::value_error("sweep: analysis must be 'run' or 'modes' (got '" + analysis + "')");
+    throw py::value_error("sweep: analysis must be 'run', 'modes' or 'orbit' (got '" + analysis +
+                          "')");
   return study::SweepAnalysis::kRun;
 }
 

@@ -1,9 +1,12 @@
 #include "study/sweep/sweep_point.hpp"
 
+#include <algorithm>
+#include <complex>
 #include <exception>
 
 #include "io/scene_loader.hpp"
 #include "study/modes/modes.hpp"
+#include "study/orbit/periodic_orbit.hpp"
 #include "study/result_writer.hpp"
 #include "study/scene_run.hpp"
 
@@ -45,6 +48,23 @@ PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& p
       out.growth_frequency = m.leading().frequency;
       out.unstable_modes = m.unstable_count;
       out.warnings = m.warnings;
+      return out;
+    }
+    if (setup.analysis == SweepAnalysis::kOrbit) {
+      OrbitSpec spec;
+      spec.threads = 1;  // the sweep's points share the cores
+      const OrbitResult r = findPeriodicOrbit(scene, spec);
+      out.status = PointStatus::kComplete;
+      out.period = r.period;
+      out.amplitude_pp = r.amplitude_pp;
+      out.x_min = r.x_min;
+      out.x_max = r.x_max;
+      for (std::size_t i = 0; i < r.multipliers.size(); ++i)
+        if (static_cast<int>(i) != r.trivial)
+          out.largest_multiplier = std::max(out.largest_multiplier, std::abs(r.multipliers[i]));
+      out.stable = r.stable;
+      out.iterations = r.iterations;
+      out.residual = r.residual;
       return out;
     }
     std::optional<SettleWatch> watch;

@@ -27,12 +27,17 @@ class SceneDocument;
 
 namespace tribo::study {
 
-// What a point computes: a run of the scene (the oscillation figures), or the linear
+// What a point computes: a run of the scene (the oscillation figures), the linear
 // stability of its steady state (study/modes/modes.hpp: largest growth rate, its frequency, the
-// number of unstable modes; milliseconds instead of a simulation).
-enum class SweepAnalysis { kRun, kModes };
-inline constexpr NameTable<SweepAnalysis, 2> kSweepAnalysisNames{
-    "analysis", {{{SweepAnalysis::kRun, "run"}, {SweepAnalysis::kModes, "modes"}}}};
+// number of unstable modes; milliseconds instead of a simulation), or its periodic orbit
+// (study/orbit/periodic_orbit.hpp: period, amplitude, stability; a forced scene's orbit has the
+// forcing's period, so a sweep of the forcing frequency is a frequency-response curve).
+enum class SweepAnalysis { kRun, kModes, kOrbit };
+inline constexpr NameTable<SweepAnalysis, 3> kSweepAnalysisNames{
+    "analysis",
+    {{{SweepAnalysis::kRun, "run"},
+      {SweepAnalysis::kModes, "modes"},
+      {SweepAnalysis::kOrbit, "orbit"}}}};
 
 // What every point of one sweep shares.
 struct SweepSetup {
@@ -72,6 +77,14 @@ struct PointOutcome {
   double max_growth_rate = 0;   // [1/s]
   double growth_frequency = 0;  // of the leading mode [Hz]
   int unstable_modes = 0;
+  // SweepAnalysis::kOrbit only (with amplitude_pp and period above): the orbit's extremes of
+  // the observed coordinate, its largest multiplier's modulus (the trivial one aside),
+  // stability and Newton's iterations and residual.
+  double x_min = 0, x_max = 0;
+  double largest_multiplier = 0;
+  bool stable = false;
+  int iterations = 0;
+  double residual = 0;
   std::vector<std::string> warnings;
   std::string message;  // the scene error or the divergence, empty when complete
 };
@@ -79,10 +92,11 @@ struct PointOutcome {
 std::string pointStatusName(PointStatus status);
 
 // Runs one point (with SweepAnalysis::kModes: analyses it; a scene without a steady state
-// or whose eigenproblem fails is an error point). With `trajectory_dir`, also writes the run's
-// trajectory.csv and summary.json there (a write failure makes the point an error).
-// `document`: the setup's scene text already parsed (io::SceneDocument, one per thread), so
-// the point only rebuilds the model with its overrides; null: parsed here.
+// or whose eigenproblem fails is an error point; with kOrbit: shoots for its orbit on one
+// thread, the sweep spreading points over the cores; no orbit found is an error point). With
+// `trajectory_dir`, also writes the run's trajectory.csv and summary.json there (a write failure
+// makes the point an error). `document`: the setup's scene text already parsed (io::SceneDocument,
+// one per thread), so the point only rebuilds the model with its overrides; null: parsed here.
 PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& point_overrides,
                       const std::filesystem::path* trajectory_dir = nullptr,
                       const io::SceneDocument* document = nullptr);

@@ -24,6 +24,10 @@ constexpr const char* kFigureColumns[] = {
 constexpr const char* kModesColumns[] = {"status",         "max_growth_rate", "frequency",
                                          "unstable_modes", "warnings",        "message"};
 
+constexpr const char* kOrbitColumns[] = {
+    "status", "period",     "amplitude_pp", "x_min",    "x_max",  "largest_multiplier",
+    "stable", "iterations", "residual",     "warnings", "message"};
+
 std::string number(double v) { return csvNumber(v); }
 
 std::string join(const std::vector<std::string>& fields) { return csvLine(fields); }
@@ -53,6 +57,8 @@ std::vector<std::string> sweepColumns(const SweepGrid& grid, SweepAnalysis analy
   for (const auto& a : grid.axes()) c.push_back(a.name);
   if (analysis == SweepAnalysis::kModes)
     c.insert(c.end(), std::begin(kModesColumns), std::end(kModesColumns));
+  else if (analysis == SweepAnalysis::kOrbit)
+    c.insert(c.end(), std::begin(kOrbitColumns), std::end(kOrbitColumns));
   else
     c.insert(c.end(), std::begin(kFigureColumns), std::end(kFigureColumns));
   return c;
@@ -68,6 +74,12 @@ std::string formatSweepRow(std::size_t index, const SweepGrid& grid, const Point
     f.push_back(ok ? number(o.max_growth_rate) : "");
     f.push_back(ok ? number(o.growth_frequency) : "");
     f.push_back(ok ? std::to_string(o.unstable_modes) : "");
+  } else if (analysis == SweepAnalysis::kOrbit) {
+    for (const double v : {o.period, o.amplitude_pp, o.x_min, o.x_max, o.largest_multiplier})
+      f.push_back(ok ? number(v) : "");
+    f.push_back(ok ? (o.stable ? "1" : "0") : "");
+    f.push_back(ok ? std::to_string(o.iterations) : "");
+    f.push_back(ok ? number(o.residual) : "");
   } else {
     for (const double v : {o.amplitude_pp, o.period, o.time_to_98, o.rise_time, o.stuck_fraction,
                            o.x_mean, o.first_pp})

@@ -8,6 +8,9 @@
 //                    or, for --analysis modes,
 //                      point,<swept parameters...>,status,max_growth_rate,frequency,
 //                      unstable_modes,warnings,message
+//                    or, for --analysis orbit,
+//                      point,<swept parameters...>,status,period,amplitude_pp,x_min,x_max,
+//                      largest_multiplier,stable,iterations,residual,warnings,message
 //                    (figures as study/sweep/sweep_point.hpp; numbers with 10 significant digits);
 //                    status is complete, diverged or error; the figures are empty unless
 //                    complete (never NaN); text fields are quoted as CSV needs.

@@ -95,10 +95,11 @@ SweepPlan planSweep(const SweepSpec& spec) {
 }
 
 SweepPlan planSweep(const SweepSpec& spec, const std::string& scene_text) {
-  if (spec.settle && spec.analysis == SweepAnalysis::kModes)
-    throw SweepSpecError("--settle applies to runs, not to --analysis modes");
-  if (spec.keep_trajectories && spec.analysis == SweepAnalysis::kModes)
-    throw SweepSpecError("--keep-trajectories applies to runs, not to --analysis modes");
+  const std::string analysis = kSweepAnalysisNames.name(spec.analysis);
+  if (spec.settle && spec.analysis != SweepAnalysis::kRun)
+    throw SweepSpecError("--settle applies to runs, not to --analysis " + analysis);
+  if (spec.keep_trajectories && spec.analysis != SweepAnalysis::kRun)
+    throw SweepSpecError("--keep-trajectories applies to runs, not to --analysis " + analysis);
   requireNoFixedSweptParameter(spec);
   if (const std::size_t bad = io::firstBadUtf8(spec.scene_path); bad != std::string::npos)
     throw io::SceneError("scene file path '" + io::printableText(spec.scene_path) +

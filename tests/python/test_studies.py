@@ -161,6 +161,21 @@ def test_forced_orbit_is_the_linear_oscillators_closed_form_response(source_dir)
         tribo.orbit(scene, solver="lu")
 
 
+def test_sweep_of_forced_orbits_is_the_frequency_response_curve(source_dir):
+    """analysis="orbit" gives each point's orbit: over the forcing frequency of the forced
+    oscillator, the closed-form response 2 F0 / |k - m w^2 + i c w| through resonance."""
+    scene = str(source_dir / "scenes" / "forced_oscillator.yaml")
+    rows = tribo.sweep(scene, grid={"f": [0.8, 1.59, 2.4]}, set={"duration": 10}, jobs=2,
+                       analysis="orbit")
+    assert [r["status"] for r in rows] == ["complete"] * 3
+    for r in rows:
+        w = 2 * math.pi * r["f"]
+        assert r["amplitude_pp"] == pytest.approx(20 / math.hypot(100 - w * w, 2 * w), rel=1e-6)
+        assert r["stable"] == 1
+    with pytest.raises(ValueError, match="'run', 'modes' or 'orbit'"):
+        tribo.sweep(scene, grid={"f": [1]}, analysis="orbits")
+
+
 def test_orbit_branch_points_are_the_orbits_at_their_parameter(belt):
     """tribo.orbit_branch continues the belt's orbit in v_b as `tribo orbit --continue` does;
     each point is the orbit tribo.orbit finds at that v_b (the same shooting: equal to
