@@ -410,9 +410,7 @@ BranchResult continueOrbitFromText(
     pt.trivial = f.trivial;
     pt.trivial_error = f.trivial_error;
     pt.stable = f.stable;
-    for (std::size_t i = 0; i < pt.multipliers.size(); ++i)
-      if (static_cast<int>(i) != pt.trivial)
-        pt.largest = std::max(pt.largest, std::abs(pt.multipliers[i]));
+    pt.largest = f.largest;
     const io::Scene at = shooter.sceneAt(pt.parameter);
     const shooting::Flow flow(at.model, coords);
     const auto b = static_cast<std::size_t>(body);

@@ -205,6 +205,7 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
                                : shooting::floquet(monodromy, false);
   r.multipliers = std::move(f.multipliers);
   r.stable = f.stable;
+  r.largest_multiplier = f.largest;
   r.reference = settled;
   sampleOrbit(flow, coords, y, T, body, axis, r);
   r.flows = flow.count();
@@ -334,6 +335,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
   r.trivial = f.trivial;
   r.trivial_error = f.trivial_error;
   r.stable = f.stable;
+  r.largest_multiplier = f.largest;
   r.reference = guess.state;
 
   // One period sampled at the step, from the orbit's start (a maximum of x).
@@ -356,6 +358,7 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
   j["x_max"] = r.x_max;
   j["x_min"] = r.x_min;
   j["stable"] = r.stable;
+  j["largest_multiplier"] = r.largest_multiplier;
   j["forced"] = r.forced;
   if (r.forced) {
     j["forcing"] = r.forcing;

@@ -82,15 +82,16 @@ struct OrbitResult {
   double residual = 0;                            // |F| at the end, relative to 1 + |y0|
   std::vector<std::complex<double>> multipliers;  // by decreasing modulus
   int trivial = -1;  // which one is the trivial multiplier (nearest 1); -1 for a forced orbit
-  double trivial_error = 0;   // |mu_trivial - 1|
-  bool stable = false;        // every other multiplier inside the unit circle
-  bool forced = false;        // the scene has inputs that vary in time: the period is theirs
-  std::string forcing;        // forced: the first input that varies, and how many more
-  double forcing_period = 0;  // [s] forced: the inputs' common period
-  int periods = 1;            // forced: the orbit's period over the forcing's
-  std::string solver;         // "dense" or "krylov"
-  long flows = 0;             // flows of one period computed (the settling run aside)
-  long krylov_products = 0;   // Krylov: GMRES and Arnoldi products
+  double trivial_error = 0;       // |mu_trivial - 1|
+  bool stable = false;            // every other multiplier inside the unit circle
+  double largest_multiplier = 0;  // the largest modulus of the others
+  bool forced = false;            // the scene has inputs that vary in time: the period is theirs
+  std::string forcing;            // forced: the first input that varies, and how many more
+  double forcing_period = 0;      // [s] forced: the inputs' common period
+  int periods = 1;                // forced: the orbit's period over the forcing's
+  std::string solver;             // "dense" or "krylov"
+  long flows = 0;                 // flows of one period computed (the settling run aside)
+  long krylov_products = 0;       // Krylov: GMRES and Arnoldi products
   std::vector<std::string> coordinates;  // names of y0's entries
   Eigen::VectorXd start;                 // y0
   State reference;           // the state y0's coordinates are taken against (its contacts and time)

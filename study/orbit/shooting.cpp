@@ -177,9 +177,10 @@ Floquet classify(std::vector<std::complex<double>> multipliers, bool autonomous)
     if (std::abs(f.multipliers[i] - 1.0) < nearest)
       nearest = std::abs(f.multipliers[i] - 1.0), f.trivial = static_cast<int>(i);
   f.trivial_error = autonomous ? nearest : 0.0;
-  f.stable = true;
   for (std::size_t i = 0; i < f.multipliers.size(); ++i)
-    if (static_cast<int>(i) != f.trivial && std::abs(f.multipliers[i]) >= 1.0) f.stable = false;
+    if (static_cast<int>(i) != f.trivial)
+      f.largest = std::max(f.largest, std::abs(f.multipliers[i]));
+  f.stable = f.largest < 1.0;
   return f;
 }
 

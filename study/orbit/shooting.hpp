@@ -84,6 +84,7 @@ struct Floquet {
   int trivial = -1;
   double trivial_error = 0;
   bool stable = false;
+  double largest = 0;  // the largest modulus of the others (the trivial one aside)
 };
 Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous = true);
 // The same from multipliers already computed (all of them, or the leading ones: the trivial

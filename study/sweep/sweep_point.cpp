@@ -1,7 +1,5 @@
 #include "study/sweep/sweep_point.hpp"
 
-#include <algorithm>
-#include <complex>
 #include <exception>
 
 #include "io/scene_loader.hpp"
@@ -59,9 +57,7 @@ PointOutcome runPoint(const SweepSetup& setup, const std::vector<std::string>& p
       out.amplitude_pp = r.amplitude_pp;
       out.x_min = r.x_min;
       out.x_max = r.x_max;
-      for (std::size_t i = 0; i < r.multipliers.size(); ++i)
-        if (static_cast<int>(i) != r.trivial)
-          out.largest_multiplier = std::max(out.largest_multiplier, std::abs(r.multipliers[i]));
+      out.largest_multiplier = r.largest_multiplier;
       out.stable = r.stable;
       out.iterations = r.iterations;
       out.residual = r.residual;

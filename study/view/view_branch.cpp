@@ -317,6 +317,7 @@ BranchViewInfo writeBranchView(const std::filesystem::path& dir, const ViewOptio
 
   std::string page(view_assets::kBranchHtml);
   replaceMarker(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss), "branch");
+  replaceMarker(page, "/*TRIBO_ERRORS*/", std::string(view_assets::kErrorsScript), "branch");
   replaceMarker(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data) + ";", "branch");
   replaceMarker(page, "/*TRIBO_JS*/",
                 scriptSafe(std::string(view_assets::kPlotScript) + "\n" +

@@ -153,6 +153,7 @@ std::string runViewPage(const io::Scene& scene, const std::filesystem::path& run
 
   std::string page(view_assets::kPageHtml);
   replaceMarker(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss), "replay");
+  replaceMarker(page, "/*TRIBO_ERRORS*/", std::string(view_assets::kErrorsScript), "replay");
   replaceMarker(page, "/*TRIBO_THREE*/", scriptSafe(readText(three_path, "three.js")), "replay");
   replaceMarker(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data) + ";", "replay");
   std::string js;

@@ -89,6 +89,7 @@ SweepViewInfo writeSweepView(const std::filesystem::path& dir, const ViewOptions
                                {"linked", linked}};
   std::string page(view_assets::kSweepHtml);
   replaceMarker(page, "/*TRIBO_CSS*/", std::string(view_assets::kPageCss), "sweep");
+  replaceMarker(page, "/*TRIBO_ERRORS*/", std::string(view_assets::kErrorsScript), "sweep");
   replaceMarker(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data.dump()) + ";",
                 "sweep");
   replaceMarker(page, "/*TRIBO_JS*/", scriptSafe(std::string(view_assets::kSweepScript)), "sweep");
