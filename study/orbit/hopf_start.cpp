@@ -9,15 +9,10 @@
 #include <unordered_map>
 
 #include "study/orbit/periodic_orbit.hpp"
+#include "study/orbit/shooting.hpp"
 
 namespace tribo::study {
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 struct Sample {
   double p = 0, growth = 0;
@@ -33,14 +28,14 @@ Sample sampleAt(const std::function<io::Scene(double)>& sceneAt, double p) {
     s.modes = analyzeModes(sceneAt(p));
   } catch (const std::exception& e) {
     throw OrbitError(
-        "no Hopf point to start from: the modes analysis of steady sliding failed at " + number(p) +
-        ": " + e.what());
+        "no Hopf point to start from: the modes analysis of steady sliding failed at " +
+        shooting::messageNumber(p) + ": " + e.what());
   }
   for (const Mode& m : s.modes.modes)
     if (m.frequency > 0.0 && (!s.mode || m.growth_rate > s.mode->growth_rate)) s.mode = &m;
   if (!s.mode)
     throw OrbitError("no Hopf point to start from: steady sliding has no oscillatory mode at " +
-                     number(p));
+                     shooting::messageNumber(p));
   s.growth = s.mode->growth_rate;
   return s;
 }
@@ -68,10 +63,12 @@ HopfPoint locateHopf(const std::function<io::Scene(double)>& sceneAt, double fro
   }
   if (!bracketed)
     throw OrbitError(
-        "no Hopf point between " + number(from) + " and " + number(to) +
+        "no Hopf point between " + shooting::messageNumber(from) + " and " +
+        shooting::messageNumber(to) +
         ": the growth rate of steady sliding's leading oscillatory mode keeps its sign (" +
-        number(first_growth) + " 1/s at " + number(from) + ", " + number(lo.growth) + " 1/s at " +
-        number(lo.p) + "); widen the range or start from an orbit");
+        shooting::messageNumber(first_growth) + " 1/s at " + shooting::messageNumber(from) + ", " +
+        shooting::messageNumber(lo.growth) + " 1/s at " + shooting::messageNumber(lo.p) +
+        "); widen the range or start from an orbit");
   // Bisection: sigma(p) is smooth but its slope is not known, and 40 to 50 analyses of a
   // small scene cost milliseconds.
   const bool rising = hi.growth > 0.0;

@@ -34,12 +34,6 @@ std::string assignment(const std::string& name, double value) {
   return name + "=" + buf;
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 // The shooting rows and their Jacobian at z = (y0, T, p), the scene reloaded at p and p +- dp.
 class BranchShooter {
  public:
@@ -156,7 +150,7 @@ Correction newtonWithRow(const BranchShooter& shooter, const Eigen::VectorXd& z0
     }
     if (it == max_iterations) {
       c.why = "Newton's iteration did not converge in " + std::to_string(max_iterations) +
-              " iterations (residual " + number(c.residual) + ")";
+              " iterations (residual " + shooting::messageNumber(c.residual) + ")";
       return c;
     }
     Eigen::MatrixXd J(n + 2, n + 2);
@@ -171,12 +165,13 @@ Correction newtonWithRow(const BranchShooter& shooter, const Eigen::VectorXd& z0
     const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
     c.z += scale * dz;
     if (!(c.z[n] > 0.0) || !c.z.allFinite()) {
-      c.why = "Newton's iteration left the orbit (period " + number(c.z[n]) + " s)";
+      c.why =
+          "Newton's iteration left the orbit (period " + shooting::messageNumber(c.z[n]) + " s)";
       return c;
     }
     if ((c.z - z0).norm() > reach) {
-      c.why = "the correction (" + number((c.z - z0).norm()) + ") went farther than the step (" +
-              number(reach) + ")";
+      c.why = "the correction (" + shooting::messageNumber((c.z - z0).norm()) +
+              ") went farther than the step (" + shooting::messageNumber(reach) + ")";
       return c;
     }
   }
@@ -315,8 +310,8 @@ BranchResult continueOrbitFromText(
     const BranchSpec& spec, const std::function<void(const BranchPoint&, std::size_t)>& progress) {
   const auto wall = std::chrono::steady_clock::now();
   if (!std::isfinite(spec.from) || !std::isfinite(spec.to) || spec.from == spec.to)
-    throw std::invalid_argument("the branch's range " + number(spec.from) + ":" + number(spec.to) +
-                                " is empty or not finite");
+    throw std::invalid_argument("the branch's range " + shooting::messageNumber(spec.from) + ":" +
+                                shooting::messageNumber(spec.to) + " is empty or not finite");
   const io::SceneDocument document(yaml, path);
   {
     const io::Scene base = document.load(overrides);
@@ -355,10 +350,11 @@ BranchResult continueOrbitFromText(
     // A damped settling run can lead Newton onto the equilibrium it decays to, which closes on
     // itself for any T: no orbit to follow.
     if (!(orbit->amplitude_pp > kCollapsed * orbit->guess_amplitude_pp))
-      throw OrbitError("the orbit found at " + spec.parameter + " = " + number(spec.from) +
-                       " is an equilibrium (amplitude " + number(orbit->amplitude_pp) +
-                       " against the settling run's " + number(orbit->guess_amplitude_pp) +
-                       "): the oscillation decays there; start the branch where it does not");
+      throw OrbitError(
+          "the orbit found at " + spec.parameter + " = " + shooting::messageNumber(spec.from) +
+          " is an equilibrium (amplitude " + shooting::messageNumber(orbit->amplitude_pp) +
+          " against the settling run's " + shooting::messageNumber(orbit->guess_amplitude_pp) +
+          "): the oscillation decays there; start the branch where it does not");
   }
   const double p0 = hopf ? hopf->parameter : spec.from;
   const io::Scene first = sceneAt(p0);
@@ -474,8 +470,9 @@ BranchResult continueOrbitFromText(
         shooter, z, amplitude_index, y_steady[amplitude_index] + eps,
         std::max(spec.max_corrector, spec.orbit.max_iterations), spec.orbit.tolerance);
     if (!c.ok)
-      throw OrbitError("no orbit of amplitude " + number(eps) + " at the Hopf point " +
-                       spec.parameter + " ~ " + number(hopf->parameter) + ": " + c.why +
+      throw OrbitError("no orbit of amplitude " + shooting::messageNumber(eps) +
+                       " at the Hopf point " + spec.parameter + " ~ " +
+                       shooting::messageNumber(hopf->parameter) + ": " + c.why +
                        " (a smaller --hopf-amplitude, or a time step the scene's laws "
                        "resolve, may help)");
     z = c.z;
@@ -505,12 +502,12 @@ BranchResult continueOrbitFromText(
     if (spec.stop && spec.stop->load()) {
       r.interrupted = true;
       r.stop_reason = "interrupted after " + std::to_string(r.points.size()) + " points, at " +
-                      spec.parameter + " = " + number(r.points.back().parameter);
+                      spec.parameter + " = " + shooting::messageNumber(r.points.back().parameter);
       break;
     }
     if (static_cast<int>(r.points.size()) >= spec.max_points) {
       r.stop_reason = "the largest number of points (" + std::to_string(spec.max_points) +
-                      ") was reached before " + number(spec.to);
+                      ") was reached before " + shooting::messageNumber(spec.to);
       break;
     }
     const Eigen::VectorXd z_pred = z + ds * d;
@@ -525,16 +522,18 @@ BranchResult continueOrbitFromText(
       if (!(pt.amplitude_pp > kCollapsed * r.points.front().amplitude_pp)) {
         c.ok = false;
         c.why = "the orbit collapsed onto an equilibrium at " + spec.parameter + " = " +
-                number(pt.parameter) + " (amplitude " + number(pt.amplitude_pp) + ")";
+                shooting::messageNumber(pt.parameter) + " (amplitude " +
+                shooting::messageNumber(pt.amplitude_pp) + ")";
       }
     }
     if (!c.ok) {
       ds /= 2;
       if (ds < min_step) {
         r.lost = true;
-        r.stop_reason = "the branch was lost after " + spec.parameter + " = " + number(z[n + 1]) +
+        r.stop_reason = "the branch was lost after " + spec.parameter + " = " +
+                        shooting::messageNumber(z[n + 1]) +
                         ": the corrector failed with the step at its " + "smallest (" +
-                        number(2 * ds) + "): " + c.why;
+                        shooting::messageNumber(2 * ds) + "): " + c.why;
         break;
       }
       continue;
@@ -551,24 +550,25 @@ BranchResult continueOrbitFromText(
     tangent = t;
     if (hopf && (p <= low || p >= high)) {  // a Hopf start's branch goes either way
       r.reached_end = true;
-      r.stop_reason = "reached " + spec.parameter + " = " + number(p <= low ? low : high) +
-                      " (the range's end)";
+      r.stop_reason = "reached " + spec.parameter + " = " +
+                      shooting::messageNumber(p <= low ? low : high) + " (the range's end)";
       break;
     }
     if (!hopf && (p - spec.to) * direction >= 0.0) {
       r.reached_end = true;
-      r.stop_reason = "reached " + spec.parameter + " = " + number(spec.to);
+      r.stop_reason = "reached " + spec.parameter + " = " + shooting::messageNumber(spec.to);
       break;
     }
     if (!hopf && (p - spec.from) * direction < 0.0) {
-      r.stop_reason = "the branch turned back past the start value " + number(spec.from);
+      r.stop_reason =
+          "the branch turned back past the start value " + shooting::messageNumber(spec.from);
       break;
     }
     const std::vector<BranchEvent> events = detectBranchEvents(r.points, stick_speed);
     if (!events.empty() && events.back().kind == BranchEventKind::kHopf &&
         events.back().after + 1 == r.points.size()) {
       r.stop_reason = "the orbit shrank onto the steady state at a Hopf point, " + spec.parameter +
-                      " ~ " + number(events.back().parameter) +
+                      " ~ " + shooting::messageNumber(events.back().parameter) +
                       " (past it the branch retraces itself)";
       break;
     }

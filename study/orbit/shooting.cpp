@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <optional>
 #include <thread>
@@ -182,6 +183,12 @@ Floquet classify(std::vector<std::complex<double>> multipliers, bool autonomous)
       f.largest = std::max(f.largest, std::abs(f.multipliers[i]));
   f.stable = f.largest < 1.0;
   return f;
+}
+
+std::string messageNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
 }
 
 double refinedMinimum(const std::vector<double>& x) {

@@ -91,6 +91,9 @@ Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous = true);
 // one and stability are decided among those given).
 Floquet classify(std::vector<std::complex<double>> multipliers, bool autonomous);
 
+// v to 6 significant digits (printf's %.6g), for messages.
+std::string messageNumber(double v);
+
 // The smallest value of x by a parabola through the smallest sample and its neighbours.
 double refinedMinimum(const std::vector<double>& x);
 
