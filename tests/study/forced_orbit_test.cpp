@@ -4,7 +4,9 @@
 // exp(-c T / 2m) at several masses, stiffnesses, dampings and frequencies, below and above
 // resonance; a subharmonic request (two forcing periods) giving the same response; Den
 // Hartog's forced oscillator with Coulomb friction (continuous sliding) against its exact
-// piecewise solution, solved here; and the forced scenes it must refuse, by name.
+// piecewise solution, solved here; the same with stops (stick-slip under forcing) against an
+// event-by-event integration of the ideal Coulomb law done here; and the forced scenes it
+// must refuse, by name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -193,6 +195,73 @@ INSTANTIATE_TEST_SUITE_P(LoadsAndMasses, DenHartogOrbit,
                                            FrictionCase{{1.0, 100.0, 2.0, 10.0, 1.2}, 3.0},
                                            FrictionCase{{4.0, 400.0, 2.0, 40.0, 1.8}, 6.0}),
                          [](const auto& info) { return caseName(info.param.o, info.param.F); });
+
+// The same oscillator with ideal Coulomb friction F and stops, integrated here event by event:
+// RK4 at h while it slides (friction -F sign(v)); where v changes sign within a step, the
+// crossing by linear interpolation and a substep to it, then stuck (v = 0) while the force on
+// the block |F0 sin(w t) - k x| stays at or below F, sliding again the other way when it
+// exceeds it (checked at each step). The last of `periods` forcing periods gives the
+// peak-to-peak amplitude.
+double coulombWithStops(const Oscillator& o, double F, double h, int periods) {
+  const double w = 2 * kPi * o.f, T = 1 / o.f;
+  auto acc = [&](double t, double x, double v, double s) {
+    return (o.F0 * std::sin(w * t) - o.k * x - o.c * v - s * F) / o.m;
+  };
+  auto rk4 = [&](double t, double& x, double& v, double s, double dt) {
+    const double k1x = v, k1v = acc(t, x, v, s);
+    const double k2x = v + dt / 2 * k1v,
+                 k2v = acc(t + dt / 2, x + dt / 2 * k1x, v + dt / 2 * k1v, s);
+    const double k3x = v + dt / 2 * k2v,
+                 k3v = acc(t + dt / 2, x + dt / 2 * k2x, v + dt / 2 * k2v, s);
+    const double k4x = v + dt * k3v, k4v = acc(t + dt, x + dt * k3x, v + dt * k3v, s);
+    x += dt / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
+    v += dt / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+  };
+  double t = 0, x = 0, v = 0, s = 0, lo = 1e300, hi = -1e300;
+  bool stuck = true;
+  const long steps = std::lround(periods * T / h);
+  for (long i = 0; i < steps; ++i) {
+    if (stuck) {
+      const double net = o.F0 * std::sin(w * t) - o.k * x;
+      if (std::abs(net) > F) stuck = false, s = net > 0 ? 1.0 : -1.0;
+    }
+    if (!stuck) {
+      double xn = x, vn = v;
+      rk4(t, xn, vn, s, h);
+      if (vn * s < 0) {
+        const double share = v / (v - vn);
+        rk4(t, x, v, s, share * h);
+        v = 0;
+        stuck = true;
+      } else {
+        x = xn, v = vn;
+      }
+    }
+    t = static_cast<double>(i + 1) * h;
+    if (t > (periods - 1) * T) lo = std::min(lo, x), hi = std::max(hi, x);
+  }
+  return hi - lo;
+}
+
+TEST(ForcedOrbit, StickSlipUnderForcingConvergesToTheCoulombOscillatorWithStops) {
+  // mu N = 7 N against F0 = 10 N: the block stops twice a period. The scene's law is
+  // Coulomb's regularized by tanh(v / v_eps), which creeps while the block should stick, so
+  // the orbit approaches the ideal law's as v_eps shrinks (measured -2.0e-3 at 1e-4 m/s and
+  // -1.9e-4 at 1e-5 m/s, each at a step of v_eps seconds).
+  const Oscillator o{1.0, 100.0, 2.0, 10.0, 1.2};
+  const double reference = coulombWithStops(o, 7.0, 2e-6, 12);
+  std::vector<double> error;
+  for (const char* v_eps : {"1e-4", "1e-5"}) {
+    std::vector<std::string> set_all = overrides(o);
+    set_all.insert(set_all.end(), {"mu_N=7", std::string("v_eps=") + v_eps,
+                                   std::string("dt=") + v_eps, "duration=10"});
+    const study::OrbitResult r = study::findPeriodicOrbit(io::loadScene(kForced, set_all));
+    EXPECT_TRUE(r.stable);
+    error.push_back(std::abs(r.amplitude_pp / reference - 1.0));
+  }
+  EXPECT_LT(error[0], 3e-3) << error[0];
+  EXPECT_LT(error[1], 3e-4) << error[1];
+}
 
 TEST(ForcedOrbit, RefusesWhatHasNoPeriodNamingTheInput) {
   auto refused = [](const io::Scene& scene, const study::OrbitSpec& spec,
