@@ -6,7 +6,7 @@
 // and the chosen point's orbit replayed: the observed coordinate over one period with a marker
 // running along it in time and the located extremes dotted. Clicking a point chooses it,
 // hovering shows its values, left and right arrows choose the previous and next point along
-// the branch. Uses TriboView.niceTicks and tickText (plot.js). Writes #tribo-status (errors,
+// the branch. Uses TriboView.niceTicks, tickText and label (plot.js). Writes #tribo-status (errors,
 // the points drawn and their pixels, the events, the labels and their boxes, the chosen point,
 // the replay's ranges and marker, the actions) for tests. URL hash: point=K (chosen first),
 // click=K,right,left,wait (a click on point K's dot, an arrow key, or the replay drawn and its
@@ -108,22 +108,7 @@
     replay.height = 200;
   }
 
-  // Writes text at (x, y) on `ctx` (rotated a quarter turn anticlockwise when `up`) and records
-  // its bounding box in canvas pixels, from the font's measured glyph extents.
-  function label(ctx, list, name, text, x, y, align, up) {
-    ctx.textAlign = align;
-    var m = ctx.measureText(text);
-    var l = m.actualBoundingBoxLeft, r = m.actualBoundingBoxRight;
-    var a = m.actualBoundingBoxAscent, d = m.actualBoundingBoxDescent;
-    if (up) {
-      ctx.save(); ctx.translate(x, y); ctx.rotate(-Math.PI / 2); ctx.fillText(text, 0, 0); ctx.restore();
-      list.push({ name: name, text: text, box: [x - a, y - r, x + d, y + l] });
-    } else {
-      ctx.fillText(text, x, y);
-      list.push({ name: name, text: text, box: [x - l, y - a, x + r, y + d] });
-    }
-    ctx.textAlign = "left";
-  }
+  var label = TriboView.label;
 
   // The largest font size (12 px down to 8 px) at which `text` is at most `room` wide.
   function fit(ctx, text, room) {

@@ -29,6 +29,24 @@ TriboView.tickText = function (v, step) {
   return v.toFixed(Math.max(0, -Math.floor(Math.log10(step) + 1e-9)));
 };
 
+// Writes text at (x, y) on `ctx` (rotated a quarter turn anticlockwise when `up`) and pushes
+// {name, text, box} onto `list`, box its bounding box in canvas pixels from the font's
+// measured glyph extents (the sweep and branch pages report their labels' boxes for tests).
+TriboView.label = function (ctx, list, name, text, x, y, align, up) {
+  ctx.textAlign = align;
+  var m = ctx.measureText(text);
+  var l = m.actualBoundingBoxLeft, r = m.actualBoundingBoxRight;
+  var a = m.actualBoundingBoxAscent, d = m.actualBoundingBoxDescent;
+  if (up) {
+    ctx.save(); ctx.translate(x, y); ctx.rotate(-Math.PI / 2); ctx.fillText(text, 0, 0); ctx.restore();
+    list.push({ name: name, text: text, box: [x - a, y - r, x + d, y + l] });
+  } else {
+    ctx.fillText(text, x, y);
+    list.push({ name: name, text: text, box: [x - l, y - a, x + r, y + d] });
+  }
+  ctx.textAlign = "left";
+};
+
 TriboView.Plot = function (canvas, view, onSeek) {
   var self = this;
   var colours = ["#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948"];

@@ -5,7 +5,7 @@
 // kept its trajectory. Writes #tribo-status (errors, points, each drawn cell's centre and
 // value, each label's text and bounding box) for tests. URL hash: metric=NAME. The canvas
 // fits the window and its margins fit the labels' measured sizes, so that no label is cut.
-// Not here: a run's replay (page.js).
+// Uses TriboView.label (plot.js, embedded before it). Not here: a run's replay (page.js).
 (function () {
   var data = window.TRIBO_DATA, meta = data.meta;
   var statusEl = document.getElementById("tribo-status");
@@ -55,21 +55,9 @@
   canvas.width = Math.max(420, Math.min(900, window.innerWidth - 24));
   canvas.height = Math.max(300, Math.min(560, window.innerHeight - panel.offsetHeight - 16));
   var cells = [], labels = [];
-  // Writes text at (x, y) (rotated a quarter turn anticlockwise when `up`) and records its
-  // bounding box in canvas pixels, from the font's measured glyph extents.
+  // Writes text at (x, y) and records its box in `labels` (TriboView.label, plot.js).
   function label(name, text, x, y, align, up) {
-    g.textAlign = align;
-    var m = g.measureText(text);
-    var l = m.actualBoundingBoxLeft, r = m.actualBoundingBoxRight;
-    var a = m.actualBoundingBoxAscent, d = m.actualBoundingBoxDescent;
-    if (up) {
-      g.save(); g.translate(x, y); g.rotate(-Math.PI / 2); g.fillText(text, 0, 0); g.restore();
-      labels.push({ name: name, text: text, box: [x - a, y - r, x + d, y + l] });
-    } else {
-      g.fillText(text, x, y);
-      labels.push({ name: name, text: text, box: [x - l, y - a, x + r, y + d] });
-    }
-    g.textAlign = "left";
+    TriboView.label(g, labels, name, text, x, y, align, up);
   }
   // The largest font size (12 px down to 8 px) at which `text` is at most `room` wide.
   function fit(text, room) {

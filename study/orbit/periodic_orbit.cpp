@@ -171,13 +171,13 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
     if (it == spec.max_iterations) break;
     if (krylov) {
       // (M - I) v by a forward difference of the flow: one flow per product.
+      const Eigen::VectorXd scale = scalesOf(y, floor);
       const krylov::Product apply = [&](const Eigen::VectorXd& v) {
-        const double size = v.cwiseQuotient(scalesOf(y, floor)).cwiseAbs().maxCoeff();
+        const double size = v.cwiseQuotient(scale).cwiseAbs().maxCoeff();
         if (size == 0.0) return Eigen::VectorXd(Eigen::VectorXd::Zero(n));
         const double eps = spec.fd_step / size;
         return Eigen::VectorXd((flow(y + eps * v, T) - end) / eps - v);
       };
-      const Eigen::VectorXd scale = scalesOf(y, floor);
       y += krylovStep(apply, F, scale, scale, r);
     } else {
       // Least squares: the joints' constraints make M - I singular in the directions they

@@ -92,7 +92,10 @@ SweepViewInfo writeSweepView(const std::filesystem::path& dir, const ViewOptions
   replaceMarker(page, "/*TRIBO_ERRORS*/", std::string(view_assets::kErrorsScript), "sweep");
   replaceMarker(page, "/*TRIBO_DATA*/", "window.TRIBO_DATA = " + scriptSafe(data.dump()) + ";",
                 "sweep");
-  replaceMarker(page, "/*TRIBO_JS*/", scriptSafe(std::string(view_assets::kSweepScript)), "sweep");
+  replaceMarker(page, "/*TRIBO_JS*/",
+                scriptSafe(std::string(view_assets::kPlotScript) + "\n" +
+                           std::string(view_assets::kSweepScript)),
+                "sweep");
   info.file = dir / "view.html";
   writeFileWhole(info.file, page);
   info.bytes = page.size();
