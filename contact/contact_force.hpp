@@ -16,8 +16,10 @@
 #include <Eigen/Geometry>
 #include <memory>
 
+#include "contact/anisotropy.hpp"
 #include "contact/contact_point.hpp"
 #include "contact/normal_law.hpp"
+#include "contact/rolling_resistance.hpp"
 #include "friction/friction_law.hpp"
 
 namespace tribo::contact {
@@ -38,6 +40,8 @@ struct GeometryMotion {
 struct Material {
   NormalLaw normal;
   std::shared_ptr<const friction::FrictionLaw> friction;  // never null in a built model
+  Anisotropy anisotropy;         // direction-dependent ratios of the law (contact/anisotropy.hpp)
+  RollingResistance resistance;  // rolling and spinning (contact/rolling_resistance.hpp)
 };
 
 // Kinematics stage: fills out.point, out.depth_rate and out.slip for point `cp` between A
@@ -49,6 +53,7 @@ inline void contactKinematics(const ContactPoint& cp, const GeometryMotion& a,
   const double vn = n.dot(v_rel);
   out.point = cp;
   out.depth_rate = -vn;
+  out.moment.setZero();
   const Eigen::Vector3d v_slide = v_rel + b.surface_velocity - a.surface_velocity;
   out.slip = v_slide - n.dot(v_slide) * n;
 }

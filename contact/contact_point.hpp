@@ -28,6 +28,9 @@ struct ContactRecord {
   double normal_force = 0.0;                       // >= 0 [N]
   Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();  // on B, tangential [N]
   double mu = 0.0;  // effective coefficient |F_t| / F_n at this contact
+  // Rolling and spinning resistance on B [N m] (contact/rolling_resistance.hpp); A gets the
+  // opposite. Zero without it.
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
   Eigen::Vector3d force() const { return normal_force * point.normal + friction_force; }
 };
 

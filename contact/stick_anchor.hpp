@@ -1,4 +1,5 @@
-// The anchors of stateful friction laws (elastic_stick): one per contact point.
+// The anchors of stateful friction laws (elastic_stick) and of rolling and spinning
+// resistance: one per contact point.
 //
 // A StickAnchor remembers, for one contact point, the two material points (one on each
 // geometry, in the geometry's own frame) that a tangential spring joins, and whether the
@@ -22,6 +23,7 @@
 
 #include "contact/contact_identity.hpp"
 #include "contact/contact_point.hpp"
+#include "contact/rolling_resistance.hpp"
 #include "friction/friction_law.hpp"
 
 namespace tribo::contact {
@@ -33,6 +35,7 @@ struct StickAnchor {
   Eigen::Vector3d anchor_b = Eigen::Vector3d::Zero();  // material point, geometry B frame [m]
   double time = 0.0;                                   // when set [s]
   bool sliding = false;
+  AngularAnchor angular;  // rolling and spinning resistance (contact/rolling_resistance.hpp)
 
   bool operator==(const StickAnchor&) const = default;
 };

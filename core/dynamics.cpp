@@ -239,10 +239,13 @@ void Dynamics::assemble(const State& state) {
     const auto [a, b] = bodiesOf(rec);
     const Vec3 f = rec.force();
     point_force_[i] = f;
+    // Plus the rolling and spinning resistance's pure moment (zero without it).
     if (!b.isWorld())
-      point_torque_b_[i] = (rec.point.position - state.bodies[b.value].position).cross(f);
+      point_torque_b_[i] =
+          (rec.point.position - state.bodies[b.value].position).cross(f) + rec.moment;
     if (!a.isWorld())
-      point_torque_a_[i] = (rec.point.position - state.bodies[a.value].position).cross(-f);
+      point_torque_a_[i] =
+          (rec.point.position - state.bodies[a.value].position).cross(-f) - rec.moment;
   });
   for (std::size_t i = 0; i < n; ++i) {
     const auto [a, b] = bodiesOf(ws_.contacts[i]);

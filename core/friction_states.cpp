@@ -24,6 +24,37 @@ contact::AnchorFrames anchorFrames(const Model& model, const Workspace& ws,
           surfaceVelocityOf(model, ws.rotation, ws.surface_velocity, pair.geometry_b)};
 }
 
+// The principal axes at a contact of an anisotropic material (contact/anisotropy.hpp).
+contact::SlipAxes slipAxesOf(const Workspace& ws, const ContactPair& pair,
+                             const contact::Anisotropy& an, const contact::ContactRecord& rec) {
+  const int g = an.frame_is_b ? pair.geometry_b : pair.geometry_a;
+  return contact::slipAxes(an, ws.geometry_poses[static_cast<std::size_t>(g)].linear(),
+                           rec.point.normal);
+}
+
+// A geometry's angular velocity (its body's; zero on the world).
+Vec3 angularVelocityOf(const Model& m, const State& state, int geometry) {
+  const BodyIndex b = m.geometries[static_cast<std::size_t>(geometry)].body;
+  return b.isWorld() ? Vec3::Zero() : state.bodies[b.value].angular_velocity;
+}
+
+// Rolling and spinning resistance (contact/rolling_resistance.hpp): rec.moment from the
+// pair's relative angular velocity and the point's angular anchor (none: just anchored).
+void resistingMoment(const Model& m, const State& state, const Workspace& ws,
+                     const ContactPair& pair, const contact::StickAnchor* anchor,
+                     contact::ContactRecord& rec) {
+  const contact::RollingResistance& r = m.materials[pair.material].resistance;
+  const Eigen::Matrix3d rot_a = ws.geometry_poses[pair.geometry_a].linear();
+  const Eigen::Matrix3d rot_b = ws.geometry_poses[pair.geometry_b].linear();
+  const contact::AngularAnchor none;
+  const contact::AngularAnchor& angular = anchor ? anchor->angular : none;
+  const Vec3 theta = anchor ? contact::angularElongation(angular, rot_a, rot_b) : Vec3::Zero();
+  const Vec3 w =
+      angularVelocityOf(m, state, pair.geometry_b) - angularVelocityOf(m, state, pair.geometry_a);
+  rec.moment = contact::resistingMoment(r, rec.point.normal, w, rec.normal_force, anchor != nullptr,
+                                        angular, theta);
+}
+
 std::string bodyOfPair(const Model& m, int pair_id) {
   const Geometry& g = m.geometries[m.contactPair(pair_id).geometry_b];
   return g.body.isWorld() ? "world" : m.bodies[g.body.value].name;
@@ -35,7 +66,8 @@ FrictionStates::FrictionStates(const Model& model, const JointForces& joints)
     : model_(&model), joint_values_(joints.jointStateSize()) {
   for (const auto& material : model.materials) {
     stateful_material_.push_back(material.friction->stateful() ? 1 : 0);
-    any_stateful_ = any_stateful_ || material.friction->stateful();
+    anchored_material_.push_back(material.friction->stateful() || material.resistance.active());
+    any_stateful_ = any_stateful_ || anchored_material_.back();
     dynamic_law_.push_back(material.friction->dynamic());
     any_dynamic_ = any_dynamic_ || material.friction->dynamic() != nullptr;
   }
@@ -61,15 +93,27 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
   auto independent = [&](contact::ContactRecord& rec) {
     const ContactPair& pair = pairOf(ws, rec);
     const contact::Material& material = m.materials[pair.material];
-    if (!stateful_material_[pair.material]) {
-      contact::frictionForce(material, rec);
-      return;
+    const contact::Anisotropy& an = material.anisotropy;
+    contact::SlipAxes axes;
+    Eigen::Vector3d slip;
+    if (an.active) {
+      axes = slipAxesOf(ws, pair, an, rec);
+      slip = contact::enterLawPlane(an, axes, rec);
     }
     const contact::StickAnchor* anchor =
-        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
-    const friction::StickView view =
-        contact::stickView(anchor, rec.point, anchorFrames(m, ws, pair), state.time);
-    contact::frictionForce(material, view, rec);
+        anchored_material_[pair.material]
+            ? contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius)
+            : nullptr;
+    if (!stateful_material_[pair.material]) {
+      contact::frictionForce(material, rec);
+    } else {
+      friction::StickView view =
+          contact::stickView(anchor, rec.point, anchorFrames(m, ws, pair), state.time);
+      if (an.active) view.elongation = contact::toLawPlane(an, axes, view.elongation);
+      contact::frictionForce(material, view, rec);
+    }
+    if (an.active) contact::leaveLawPlane(an, axes, slip, rec);
+    if (material.resistance.active()) resistingMoment(m, state, ws, pair, anchor, rec);
   };
   if (!any_dynamic_ || steady_) {
     contact::parallelFor(ws.contacts.size(), threads,
@@ -77,25 +121,43 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
     return;
   }
   // Dynamic laws: the first point using a record drives it, so in contact order.
+  auto resistance = [&](contact::ContactRecord& rec, const ContactPair& pair) {
+    if (!m.materials[pair.material].resistance.active()) return;
+    resistingMoment(
+        m, state, ws, pair,
+        contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius), rec);
+  };
   const std::span<const contact::FrictionStateRecord> records(state.friction_states);
   std::array<double, contact::kMaxFrictionState> z, zdot, back;
   for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
     contact::ContactRecord& rec = ws.contacts[i];
-    const friction::DynamicFrictionLaw* law = dynamic_law_[pairOf(ws, rec).material];
+    const ContactPair& pair = pairOf(ws, rec);
+    const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
     if (law == nullptr) {
       independent(rec);
       continue;
+    }
+    const contact::Anisotropy& an = m.materials[pair.material].anisotropy;
+    contact::SlipAxes axes;
+    Eigen::Vector3d slip;
+    if (an.active) {
+      axes = slipAxesOf(ws, pair, an, rec);
+      slip = contact::enterLawPlane(an, axes, rec);
     }
     const contact::FrictionStateRecord* record =
         contact::findRecord(records, rec.point, m.options.collision.match_radius);
     if (record == nullptr) {
       law->initialState(z.data());  // a contact new within the step: not integrated yet
       contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
+      if (an.active) contact::leaveLawPlane(an, axes, slip, rec);
+      resistance(rec, pair);
       continue;
     }
     contact::transportState(*law, &state.friction_values[record->state], record->normal,
                             rec.point.normal, z.data());
     contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
+    if (an.active) contact::leaveLawPlane(an, axes, slip, rec);
+    resistance(rec, pair);
     const auto r = static_cast<std::size_t>(record - records.data());
     if (ws.friction_state_contact[r] >= 0) continue;  // the first point using it drives it
     ws.friction_state_contact[r] = static_cast<int>(i);
@@ -156,15 +218,38 @@ bool FrictionStates::afterStep(State& state, const Workspace& ws) {
   anchor_book_.begin(state.stick_anchors);
   for (const contact::ContactRecord& rec : ws.contacts) {
     const ContactPair& pair = pairOf(ws, rec);
-    if (!stateful_material_[pair.material]) continue;
+    if (!anchored_material_[pair.material]) continue;
     const contact::AnchorFrames frames = anchorFrames(m, ws, pair);
     const contact::StickAnchor* old =
         contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
-    const friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
-    const friction::StickUpdate update =
-        m.materials[pair.material].friction->advance(rec.slip, rec.normal_force, view);
-    anchor_book_.add(contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point, frames,
-                                       state.time, update));
+    friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
+    const contact::Material& material = m.materials[pair.material];
+    const contact::Anisotropy& an = material.anisotropy;
+    friction::StickUpdate update;
+    if (!stateful_material_[pair.material]) {
+      // A memoryless or dynamic law: the anchor is only the angular one's (below).
+    } else if (an.active) {  // the law decides in its scaled plane (contact/anisotropy.hpp)
+      const contact::SlipAxes axes = slipAxesOf(ws, pair, an, rec);
+      view.elongation = contact::toLawPlane(an, axes, view.elongation);
+      update = material.friction->advance(contact::toLawPlane(an, axes, rec.slip), rec.normal_force,
+                                          view);
+      update.elongation = contact::fromLawPlane(an, axes, update.elongation);
+    } else {
+      update = material.friction->advance(rec.slip, rec.normal_force, view);
+    }
+    contact::StickAnchor next = contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point,
+                                                  frames, state.time, update);
+    if (const contact::RollingResistance& r = material.resistance; r.active()) {
+      const Eigen::Matrix3d rot_a = frames.pose_a->linear(), rot_b = frames.pose_b->linear();
+      const contact::AngularAnchor none;
+      const contact::AngularAnchor& angular = old ? old->angular : none;
+      const Vec3 theta = old ? contact::angularElongation(angular, rot_a, rot_b) : Vec3::Zero();
+      const Vec3 w = angularVelocityOf(m, state, pair.geometry_b) -
+                     angularVelocityOf(m, state, pair.geometry_a);
+      next.angular = contact::advanceAngular(r, rec.point.normal, w, rec.normal_force,
+                                             old != nullptr, angular, theta, rot_a, rot_b);
+    }
+    anchor_book_.add(next);
   }
   return anchor_book_.finish(state.stick_anchors);
 }
@@ -177,11 +262,15 @@ void FrictionStates::stepStable(State& state, const Workspace& ws, const JointFo
     if (r >= ws.friction_state_contact.size() || ws.friction_state_contact[r] < 0) continue;
     const contact::ContactRecord& rec =
         ws.contacts[static_cast<std::size_t>(ws.friction_state_contact[r])];
-    const friction::DynamicFrictionLaw& law = *dynamic_law_[pairOf(ws, rec).material];
+    const ContactPair& pair = pairOf(ws, rec);
+    const friction::DynamicFrictionLaw& law = *dynamic_law_[pair.material];
+    const contact::Anisotropy& an = model_->materials[pair.material].anisotropy;
     const contact::FrictionStateRecord& record = state.friction_states[r];
     double* stored = &state.friction_values[static_cast<std::size_t>(record.state)];
     contact::transportState(law, stored, record.normal, rec.point.normal, z.data());
-    law.stableStep(z.data(), rec.slip, rec.normal_force, h);
+    const Eigen::Vector3d slip =
+        an.active ? contact::toLawPlane(an, slipAxesOf(ws, pair, an, rec), rec.slip) : rec.slip;
+    law.stableStep(z.data(), slip, rec.normal_force, h);
     contact::transportState(law, z.data(), record.normal, rec.point.normal, back.data(), true);
     std::copy_n(back.data(), record.state_size, stored);
   }

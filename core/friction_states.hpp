@@ -22,7 +22,8 @@
 //   the integrator advances z with the bodies: semi-implicit Euler through stepStable (the
 //               law's bounded update), RK4 through addRates (z + dt dz/dt), SUNDIALS as part
 //               of its vector y;
-//   afterStep   stateful laws move their anchors.
+//   afterStep   stateful laws and rolling and spinning resistance (contact/
+//               rolling_resistance.hpp: an angular anchor) move their anchors.
 // Quasi-steady friction (setSteady): dynamic laws act through their steady-state curve, as
 // memoryless laws (the steady-state search of `tribo modes`).
 // Not here: the laws (friction/), contact identity (contact/), the step (core/simulator.hpp).
@@ -80,7 +81,8 @@ class FrictionStates {
  private:
   const Model* model_;
   int joint_values_ = 0;
-  std::vector<char> stateful_material_;                           // per material
+  std::vector<char> stateful_material_;  // per material
+  std::vector<char> anchored_material_;  // per material: stateful, or rolling resistance
   std::vector<const friction::DynamicFrictionLaw*> dynamic_law_;  // per material, or nullptr
   bool any_stateful_ = false;
   bool any_dynamic_ = false;

@@ -135,12 +135,14 @@ void ModelBuilder::checkGeometry(const std::string& name, const contact::Shape& 
 
 int ModelBuilder::addMaterial(const contact::Material& material) {
   if (!material.friction) throw ModelError("contact material without a friction law");
+  contact::Material checked = material;
   try {
-    material.normal.validate();
+    checked.normal.validate();
+    if (checked.anisotropy.active) checked.anisotropy.validate();  // normalises the axis
   } catch (const std::invalid_argument& e) {
     throw ModelError(std::string("contact material: ") + e.what());
   }
-  model_.materials.push_back(material);
+  model_.materials.push_back(std::move(checked));
   return static_cast<int>(model_.materials.size()) - 1;
 }
 
@@ -162,6 +164,15 @@ void ModelBuilder::addContactPair(int a, int b, int material) {
   if (ga.shape.type == contact::ShapeType::kHalfSpace &&
       gb.shape.type == contact::ShapeType::kHalfSpace)
     throw ModelError(who + ": two half-spaces cannot touch");
+  if (const contact::Anisotropy& an = model_.materials[material].anisotropy; an.active) {
+    const auto& frame = an.frame_is_b ? gb : ga;
+    if (frame.shape.type == contact::ShapeType::kSphere)
+      throw ModelError(who + ": the material's anisotropy is fixed in the frame of sphere '" +
+                       frame.name +
+                       "', whose surface has no direction of its own; fix it in the other "
+                       "geometry (anisotropy.frame: " +
+                       (an.frame_is_b ? "a" : "b") + ")");
+  }
   model_.contact_pairs.push_back({a, b, material});
 }
 

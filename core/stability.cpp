@@ -91,6 +91,19 @@ double reducedMass(const Model& model, BodyIndex a, BodyIndex b) {
   return ma * mb / (ma + mb);
 }
 
+// The smaller of the two bodies' smallest principal moments of inertia [kg m^2] (infinite for
+// the world and kinematic bodies): what an angular spring between them turns.
+double smallestInertia(const Model& model, BodyIndex a, BodyIndex b) {
+  auto of = [&](BodyIndex i) {
+    if (std::isinf(bodyMass(model, i))) return std::numeric_limits<double>::infinity();
+    return Eigen::SelfAdjointEigenSolver<Mat3>(model.bodies[i.value].inertia,
+                                               Eigen::EigenvaluesOnly)
+        .eigenvalues()
+        .minCoeff();
+  };
+  return std::min(of(a), of(b));
+}
+
 // The load a contact pair carries at rest [N]: the weight of its dynamic body, or of the
 // heavier one when both are dynamic (whichever rests on the other; a stack's lower contacts
 // carry more and are stiffer than this).
@@ -356,12 +369,37 @@ StabilityReport estimateStableStep(const Model& model) {
       report.notes.push_back(note.str());
     }
 
+    // Rolling and spinning resistance: the stuck angular spring-damper per point turning the
+    // lighter body (contact/rolling_resistance.hpp).
+    for (const auto& [part, what] : {std::pair{mat.resistance.rolling.get(), "rolling"},
+                                     std::pair{mat.resistance.spinning.get(), "spinning"}}) {
+      const double inertia = smallestInertia(model, ga.body, gb.body);
+      if (part == nullptr || !(inertia > 0.0) || std::isinf(inertia)) continue;
+      const friction::ElasticStickParams& p = part->params();
+      const char* name = what;
+      consider(kPoints * p.stiffness / inertia, kPoints * p.damping / inertia,
+               [&] { return who() + " " + name + " resistance (angular stick spring)"; });
+    }
+    // Friction: every tangent stiffness and damping of the law, times r^2 for the largest
+    // ratio r of an anisotropic material (contact/anisotropy.hpp: the law acts in the plane
+    // scaled by R, so its stiffness along an axis is r^2 times the law's).
+    const contact::Anisotropy& an = mat.anisotropy;
+    const double r_max =
+        an.active ? std::max({an.forward[0], an.forward[1], an.backward[0], an.backward[1]}) : 1.0;
+    auto considerFriction = [&](double k, double c, auto&& what) {
+      if (r_max == 1.0) return consider(k, c, what);
+      consider(r_max * r_max * k, r_max * r_max * c, [&] {
+        std::ostringstream e;
+        e << what() << " x " << r_max * r_max << " (anisotropy's largest ratio, squared)";
+        return e.str();
+      });
+    };
     // Friction: a stateful law's stick spring-damper on the same points, tangentially.
     const friction::FrictionLaw& friction_law = *mat.friction;
     // The same per-point tangential stiffness and damping turning the body about the normal.
     auto consider_yaw = [&](double k_point, double c_point, const char* what) {
       if (yaw > 0.0)
-        consider(k_point * yaw, c_point * yaw, [&] {
+        considerFriction(k_point * yaw, c_point * yaw, [&] {
           return who() + " friction (" + std::string(friction_law.name()) + what + ", yaw)";
         });
     };
@@ -372,7 +410,7 @@ StabilityReport estimateStableStep(const Model& model) {
       // whose update of the state is exact at frozen slip).
       const friction::DynamicFrictionLaw::Presliding p = dynamic->presliding();
       if (total > 0.0 && p.stiffness > 0.0) {
-        consider(p.stiffness * total / m, p.damping * total / m, [&] {
+        considerFriction(p.stiffness * total / m, p.damping * total / m, [&] {
           return who() + " friction (" + std::string(friction_law.name()) + " presliding)";
         });
         consider_yaw(p.stiffness * load, p.damping * load, " presliding");
@@ -386,7 +424,7 @@ StabilityReport estimateStableStep(const Model& model) {
       }
       if (integrator != IntegratorType::kSemiImplicitEuler) {
         const double v = kSlipSpeedFactor * std::max(drive_speed, friction_law.stickSpeed());
-        consider(0.0, dynamic->stateStiffness(v), [&] {
+        considerFriction(0.0, dynamic->stateStiffness(v), [&] {
           std::ostringstream e;
           e << who() << " friction (" << friction_law.name() << " internal state at slip speed "
             << v << " m/s)";
@@ -397,7 +435,8 @@ StabilityReport estimateStableStep(const Model& model) {
       const double v_ref = std::max(drive_speed, friction_law.stickSpeed());
       const double direct = dynamic->directSlope(v_ref);
       if (total > 0.0 && direct > 0.0 && std::isfinite(direct)) {
-        consider(0.0, direct * total / m, [&] { return who() + directEffect(*dynamic, v_ref); });
+        considerFriction(0.0, direct * total / m,
+                         [&] { return who() + directEffect(*dynamic, v_ref); });
         consider_yaw(0.0, direct * load, " direct effect");
       }
       if (direct > 0.0 && first_of_material)
@@ -413,7 +452,7 @@ StabilityReport estimateStableStep(const Model& model) {
       const bool slides = g > 0.0 && (turns->canSlideAcross(model, ga.body, normal) ||
                                       turns->canSlideAcross(model, gb.body, normal));
       if (total > 0.0 && p.stiffness == 0.0 && across > 0.0 && std::isfinite(across) && slides)
-        consider(0.0, across * total / m, [&] {
+        considerFriction(0.0, across * total / m, [&] {
           std::ostringstream e;
           e << who() << " friction (" << friction_law.name() << " across the slip at " << v_ref
             << " m/s)";
@@ -424,7 +463,7 @@ StabilityReport estimateStableStep(const Model& model) {
     }
     if (friction_law.stateful()) {
       const Tangent stick = stickTangent(friction_law);
-      consider(kPoints * stick.stiffness / m, kPoints * stick.damping / m, [&] {
+      considerFriction(kPoints * stick.stiffness / m, kPoints * stick.damping / m, [&] {
         return who() + " friction (" + std::string(friction_law.name()) + " stick spring)";
       });
       consider_yaw(stick.stiffness, stick.damping, " stick spring");
@@ -447,8 +486,9 @@ StabilityReport estimateStableStep(const Model& model) {
       }
     }
     if (std::isfinite(slope) && slope > 0.0) {
-      consider(0.0, slope * g,
-               [&] { return who() + " friction (" + std::string(friction_law.name()) + ")"; });
+      considerFriction(0.0, slope * g, [&] {
+        return who() + " friction (" + std::string(friction_law.name()) + ")";
+      });
       consider_yaw(0.0, slope * load, "");
     }
   }

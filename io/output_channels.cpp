@@ -22,6 +22,7 @@ const std::vector<Group>& bodyGroups() {
       {"angular_velocity", {".wx", ".wy", ".wz"}},
       {"contact", {".slip", ".normal_force"}},
       {"friction", {".friction_force"}},
+      {"resistance", {".resisting_moment"}},  // rolling and spinning (|sum of moments|)
   };
   return groups;
 }

@@ -10,6 +10,8 @@
 //     contact           NAME.slip NAME.normal_force     largest slip speed of its contacts
 //                                                       [m/s], sum of their normal forces [N]
 //     friction          NAME.friction_force             |sum of its contacts' friction| [N]
+//     resistance        NAME.resisting_moment           |sum of its contacts' rolling and
+//                                                       spinning resistance moments| [N m]
 //   pairs               A/B.normal_force A/B.friction_force A/B.slip
 //                                                       per contact pair (geometry names A, B;
 //                                                       forces on B): the sum of its points'

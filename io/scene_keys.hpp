@@ -76,7 +76,12 @@ inline const List kSineTerm{"amplitude", "frequency", "phase", "offset"};
 inline const List kTableSignal{"points", "file", "column", "interpolation"};
 inline const List kExpressionSignal{"value", "derivative", "time_scale", "breakpoints"};
 inline const List kInterpolations{"linear", "cubic"};
-inline const List kMaterial{"name", "normal", "friction", "surfaces", "default"};
+inline const List kMaterial{"name",    "normal",   "friction", "anisotropy",
+                            "rolling", "spinning", "surfaces", "default"};
+inline const List kRolling{"length", "stiffness", "damping", "stick_speed"};
+inline const List kSpinning{"mu", "radius", "stiffness", "damping", "stick_speed"};
+inline const List kAnisotropy{"frame", "axis", "ratio", "backward"};
+inline const List kFrameSides{"a", "b"};
 inline const List kNormal{"law",       "stiffness",   "damping",     "exponent",
                           "max_depth", "restitution", "impact_speed"};
 inline const List kContact{"a", "b", "material"};
@@ -133,6 +138,9 @@ inline const std::vector<Section>& sections() {
                                         {"loads[] signal.expression", &kExpressionSignal},
                                         {"materials[]", &kMaterial},
                                         {"materials[].normal", &kNormal},
+                                        {"materials[].anisotropy", &kAnisotropy},
+                                        {"materials[].rolling", &kRolling},
+                                        {"materials[].spinning", &kSpinning},
                                         {"contacts[]", &kContact},
                                         {"output", &kOutput},
                                         {"output.summary", &kSummary},

@@ -1,6 +1,7 @@
 // Scene reader (io/scene_reader.hpp): friction laws (read with the scene, built when a
 // material or a joint selects one), materials and their normal laws, listed contacts.
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <initializer_list>
 #include <memory>
@@ -138,6 +139,9 @@ void Loader::readMaterial(const Value& v) {
   contact::Material material;
   if (auto n = m.get("normal")) material.normal = readNormalLaw(*n);
   material.friction = frictionLaw(m.required("friction"));
+  if (auto a = m.get("anisotropy")) material.anisotropy = readAnisotropy(*a);
+  if (auto r = m.get("rolling")) material.resistance.rolling = readAngularStick(*r, false);
+  if (auto s = m.get("spinning")) material.resistance.spinning = readAngularStick(*s, true);
   const int index = guarded(v, [&] { return builder_.addMaterial(material); });
   materials_[name] = index;
   material_values_[name] = material;
@@ -157,6 +161,43 @@ void Loader::readMaterial(const Value& v) {
       surface_pairs_.insert({std::min(a, b), std::max(a, b)});
     }
   }
+}
+
+// Direction-dependent ratios of the material's law (contact/anisotropy.hpp); the axis is a
+// direction, normalised.
+contact::Anisotropy Loader::readAnisotropy(const Value& v) {
+  const Map m(v, scene_keys::kAnisotropy);
+  contact::Anisotropy an;
+  an.active = true;
+  if (auto f = m.get("frame")) an.frame_is_b = f->choice(scene_keys::kFrameSides) == 1;
+  an.axis = m.vec3("axis", Vec3::UnitX());
+  auto ratios = [](const Value& x) {
+    const auto r = x.numbers({2}, "2 ratios [along the axis, across it]");
+    for (double value : r)
+      if (!(value > 0.0))  // NaN too
+        x.fail("expected 2 ratios > 0 [along the axis, across it], found " + x.found());
+    return std::array<double, 2>{r[0], r[1]};
+  };
+  if (auto r = m.get("ratio")) an.forward = an.backward = ratios(*r);
+  if (auto b = m.get("backward")) an.backward = ratios(*b);
+  guarded(v, [&] { an.validate(); });
+  return an;
+}
+
+// Rolling resistance (length) or spinning friction (mu times radius) with its angular stick
+// spring (contact/rolling_resistance.hpp).
+std::shared_ptr<const friction::ElasticStickLaw> Loader::readAngularStick(const Value& v,
+                                                                          bool spinning) {
+  const Map m(v, spinning ? scene_keys::kSpinning : scene_keys::kRolling);
+  contact::AngularStickParams p;
+  if (spinning)
+    p.limit = m.required("mu").positive() * m.required("radius").positive();
+  else
+    p.limit = m.required("length").positive();
+  p.stiffness = m.required("stiffness").positive();
+  if (auto c = m.get("damping")) p.damping = c->nonNegative();
+  if (auto s = m.get("stick_speed")) p.stick_speed = s->positive();
+  return guarded(v, [&] { return contact::angularStick(p, spinning ? "spinning" : "rolling"); });
 }
 
 contact::NormalLaw Loader::readNormalLaw(const Value& v) {

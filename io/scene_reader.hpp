@@ -114,6 +114,8 @@ class Loader {
   void readFrictionLaws(const Value& v);
   void readMaterial(const Value& v);
   contact::NormalLaw readNormalLaw(const Value& v);
+  contact::Anisotropy readAnisotropy(const Value& v);
+  std::shared_ptr<const friction::ElasticStickLaw> readAngularStick(const Value& v, bool spinning);
   void readContact(const Value& v);
 
   std::string file_;

@@ -122,6 +122,24 @@ std::string summaryJsonText(const io::Scene& scene, const RunResult& result) {
       material["exponent"] = m.normal.exponent;
     if (m.normal.type == contact::NormalLawType::kRecurDyn)
       material["max_depth"] = m.normal.max_depth;
+    // The limit surface of an anisotropic material (contact/anisotropy.hpp): its principal
+    // axis (unit) in the frame geometry and the ratios along and across it, per sense.
+    if (const contact::Anisotropy& an = m.anisotropy; an.active)
+      material["anisotropy"] = {{"frame", an.frame_is_b ? "b" : "a"},
+                                {"axis", {an.axis.x(), an.axis.y(), an.axis.z()}},
+                                {"forward", {an.forward[0], an.forward[1]}},
+                                {"backward", {an.backward[0], an.backward[1]}}};
+    // Rolling and spinning resistance (contact/rolling_resistance.hpp): the moment per
+    // newton of load [m] (mu_r; mu_spin r_c) and the angular stick spring.
+    for (const auto& [part, key] : {std::pair{m.resistance.rolling.get(), "rolling"},
+                                    std::pair{m.resistance.spinning.get(), "spinning"}}) {
+      if (part == nullptr) continue;
+      const friction::ElasticStickParams& p = part->params();
+      material[key] = {{"limit", p.mu_s},
+                       {"stiffness", p.stiffness},
+                       {"damping", p.damping},
+                       {"stick_speed", p.stick_speed}};
+    }
     materials.push_back(std::move(material));
   }
   j["settings"]["materials"] = materials;

@@ -22,6 +22,7 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
   angular_velocity_ = io::hasGroup(groups, "angular_velocity");
   contact_ = io::hasGroup(groups, "contact");
   friction_force_ = io::hasGroup(groups, "friction");
+  resistance_ = io::hasGroup(groups, "resistance");
   pairs_ = io::hasGroup(groups, "pairs");
   joints_ = io::hasGroup(groups, "joints");
   friction_states_ = io::hasGroup(groups, "friction_states");
@@ -60,6 +61,7 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
     pair_points_.resize(pairs);
   }
   friction_.resize(model.bodies.size());
+  moment_.resize(model.bodies.size());
   data_.resize(names_.size());
   if (keep_rows_)
     for (auto& col : data_) col.reserve(std::min(expected_rows, kMaxReservedRows));
@@ -75,10 +77,11 @@ std::size_t TrajectoryRecorder::columnIndex(const std::string& name) const {
 }
 
 void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
-  if (contact_ || friction_force_) {
+  if (contact_ || friction_force_ || resistance_) {
     std::fill(slip_.begin(), slip_.end(), 0.0);
     std::fill(normal_.begin(), normal_.end(), 0.0);
     std::fill(friction_.begin(), friction_.end(), Vec3::Zero());
+    std::fill(moment_.begin(), moment_.end(), Vec3::Zero());
     for (const auto& c : ws.contacts) {
       const ContactPair pair = model_.contactPair(c.point.pair);
       for (const auto& [g, sign] : {std::pair{pair.geometry_a, -1.0}, {pair.geometry_b, 1.0}}) {
@@ -87,6 +90,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
         slip_[b.value] = std::max(slip_[b.value], c.slip.stableNorm());
         normal_[b.value] += c.normal_force;
         friction_[b.value] += sign * c.friction_force;
+        moment_[b.value] += sign * c.moment;
       }
     }
   }
@@ -140,6 +144,7 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
       row_[col++] = normal_[b];
     }
     if (friction_force_) row_[col++] = friction_[b].stableNorm();
+    if (resistance_) row_[col++] = moment_[b].stableNorm();
   }
   if (pairs_)
     for (std::size_t p = 0; p < pair_normal_.size(); ++p) {

@@ -67,6 +67,7 @@ class TrajectoryRecorder {
   std::vector<double> row_;            // scratch: the row being recorded
   std::vector<double> slip_, normal_;  // per body, scratch
   std::vector<Vec3> friction_;         // per body, scratch
+  std::vector<Vec3> moment_;           // per body: rolling and spinning resistance, scratch
   // Per contact pair, scratch: normal force sum, friction force sum, largest slip; and for
   // friction_states the sum of its records' states and their count.
   std::vector<double> pair_normal_, pair_slip_, pair_state_;
@@ -76,7 +77,8 @@ class TrajectoryRecorder {
   // The groups asked for, by flag (io/output_channels.hpp's order).
   bool position_ = false, orientation_ = false, rpy_ = false, velocity_ = false,
        angular_velocity_ = false, contact_ = false, friction_force_ = false, pairs_ = false,
-       joints_ = false, friction_states_ = false, energy_ = false, loads_ = false;
+       joints_ = false, friction_states_ = false, energy_ = false, loads_ = false,
+       resistance_ = false;
   std::vector<int> actuated_joints_;  // joints whose actuator is recorded, in model order
   struct RecordedJoint {
     int joint = -1;

@@ -291,6 +291,45 @@ TEST(SceneLoader, ModelErrorsComeBackWithFileAndKeyPath) {
                   "joints[0].type: unknown joint type"));
 }
 
+// materials[].anisotropy (contact/anisotropy.hpp): bad ratios, axes, frames and a sphere's
+// frame are refused at their key; a non-unit axis is a direction, normalised.
+TEST(SceneLoader, AnisotropyErrorsNameTheirKey) {
+  auto with = [](const std::string& anisotropy) {
+    return replaced(kBase, "friction: $law}", "friction: $law, anisotropy: " + anisotropy + "}");
+  };
+  for (const char* bad : {"[0, 1]", "[1, -2]", "[1, .nan]", "[1]", "[1, 2, 3]"}) {
+    const std::string yaml = with(std::string("{ratio: ") + bad + "}");
+    EXPECT_TRUE(Has(errorOfScene(yaml), "materials[0].anisotropy.ratio")) << bad;
+  }
+  const std::string backward = with("{backward: [1, 0]}");
+  EXPECT_TRUE(Has(errorOfScene(backward),
+                  at(backward, "[1, 0]") +
+                      ": materials[0].anisotropy.backward: expected 2 ratios > 0 [along the "
+                      "axis, across it], found"));
+  const std::string zero = with("{axis: [0, 0, 0]}");
+  EXPECT_TRUE(Has(errorOfScene(zero),
+                  "materials[0].anisotropy: anisotropy: axis must be a finite, non-zero "
+                  "direction (got [0, 0, 0])"));
+  EXPECT_TRUE(Has(errorOfScene(with("{frame: c}")), "materials[0].anisotropy.frame"));
+  EXPECT_TRUE(Has(errorOfScene(with("{grain: 1}")),
+                  "materials[0].anisotropy.grain: unknown key 'grain' (accepted keys: frame, axis, "
+                  "ratio, backward)"));
+  // A sphere has no direction its surface keeps: refused at the contact, naming the other side.
+  const std::string ball =
+      replaced(with("{frame: b}"), "{name: block, shape: box, size: [0.2, 0.2, 0.1]}",
+               "{name: block, shape: sphere, radius: 0.05}");
+  EXPECT_TRUE(Has(errorOfScene(ball),
+                  "whose surface has no direction of its own; fix it in the "
+                  "other geometry (anisotropy.frame: a)"));
+  // A direction of any length; the model holds it unit.
+  const Scene scene = loadSceneFromString(with("{axis: [3, 4, 0], ratio: [0.5, 2]}"), "t.yaml");
+  const contact::Anisotropy& an = scene.model->materials[0].anisotropy;
+  EXPECT_TRUE(an.active);
+  EXPECT_NEAR(an.axis.x(), 0.6, 1e-15);
+  EXPECT_NEAR(an.axis.y(), 0.8, 1e-15);
+  EXPECT_EQ(an.backward[1], 2.0);
+}
+
 TEST(SceneLoader, WrongTypesSayWhatWasExpectedAndFound) {
   const std::string two = replaced(kBase, "position: [0, 0, 0.05]", "position: [0, 0.05]");
   EXPECT_TRUE(Has(errorOfScene(two),

@@ -83,3 +83,91 @@ def test_presliding_drift_follows_the_block_equations(source_dir, law, f_b, f_a,
         assert walk > 1e-6  # measured 6.2e-6 m (2 Hz) and 1.7e-6 m (5 Hz) per two cycles
     else:
         assert abs(walk) < 1e-12  # measured 9e-17 m: it ends each cycle where it began
+
+
+def ratchet_reference(ratio, samples, mu=0.3, g=9.81, v_eps=1e-3, freq=2.0, h=1e-4):
+    """x at the sample times of the ratchet's block (scenes/experiments/ratchet_drive.yaml):
+    u' = ratio mu g sin(2 pi f t) - r mu g tanh(r u / v_eps), r = 0.5 forward, 1.5 backward
+    (the law sees the speed r u along its axis: contact/anisotropy.hpp); RK4 at the scene's
+    step."""
+
+    def accel(t, u):
+        r = 0.5 if u >= 0 else 1.5
+        return ratio * mu * g * math.sin(2 * math.pi * freq * t) - r * mu * g * math.tanh(
+            r * u / v_eps)
+
+    x = u = 0.0
+    out = []
+    every = int(round((samples[1] - samples[0]) / h))
+    steps = int(round(samples[-1] / h))
+    for i in range(steps + 1):
+        if i % every == 0:
+            out.append(x)
+        if i == steps:
+            break
+        t = i * h
+        k1 = accel(t, u)
+        k2 = accel(t + h / 2, u + h / 2 * k1)
+        k3 = accel(t + h / 2, u + h / 2 * k2)
+        k4 = accel(t + h, u + h * k3)
+        x += h * (u + h / 6 * (k1 + k2 + k3))
+        u += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    return np.array(out)
+
+
+@pytest.mark.parametrize("ratio", [0.8, 1.2])
+def test_ratchet_walks_as_its_block_equation_says(source_dir, ratio):
+    """Direction-dependent friction from Python: a symmetric push drives the block forward
+    along the axis where its sole's coefficient is lower."""
+    scene = pathlib.Path(source_dir) / "scenes" / "experiments" / "ratchet_drive.yaml"
+    run = tribo.load_scene(str(scene), set={"ratio": ratio, "duration": 1.0}).run()
+    assert run.status == "complete", run.message
+    t, x = run["t"], run["block.x"]
+    ref = ratchet_reference(ratio, t)
+    assert len(ref) == len(x)
+    # The engine (four corners at their static depth, a planar joint) against the equation at
+    # the same step: rounding apart.
+    assert np.max(np.abs(x - ref)) < 1e-9
+    assert x[-1] > 0.01  # forward by centimetres under a push whose mean is zero
+
+
+def test_slider_records_its_limit_surface_and_stops_where_coulomb_says(cli, source_dir, tmp_path):
+    """The anisotropic slider from the command line: summary.json records the material's
+    limit surface (unit axis, ratios per sense), and the block launched along its grain stops
+    after v0^2 / (2 r mu g) (tanh's v_eps = 1e-3 adds 3e-6 of it)."""
+    import json
+    import subprocess
+
+    scene = pathlib.Path(source_dir) / "scenes" / "experiments" / "anisotropic_slider.yaml"
+    out = tmp_path / "slider"
+    subprocess.run([cli, "run", str(scene), "--set", "beta=0", "--out", str(out), "--quiet"],
+                   check=True, capture_output=True)
+    result = json.loads((out / "summary.json").read_text())
+    assert result["status"] == "complete"
+    surface = result["settings"]["materials"][0]["anisotropy"]
+    assert surface == {"frame": "b", "axis": [1.0, 0.0, 0.0], "forward": [0.5, 1.5],
+                       "backward": [3.0, 1.5]}
+    with open(out / "trajectory.csv") as f:
+        header = f.readline().strip().split(",")
+    x = np.loadtxt(out / "trajectory.csv", delimiter=",", skiprows=1)[:, header.index("block.x")]
+    coulomb = 1.0 / (2 * 0.5 * 0.3 * 9.81)
+    assert abs(x[-1] - coulomb) < 1e-4 * coulomb
+
+
+def test_spinning_ball_spins_down_as_the_closed_form_says(source_dir):
+    """Spinning friction from Python (scenes/experiments/spinning_ball.yaml): I w' =
+    -mu_spin r_c m g, so the spin falls linearly to zero at I w0 / (mu_spin r_c m g) and stays
+    there; the resistance channel records the moment while it spins."""
+    scene = pathlib.Path(source_dir) / "scenes" / "experiments" / "spinning_ball.yaml"
+    run = tribo.load_scene(str(scene)).run()
+    assert run.status == "complete", run.message
+    t, w, moment = run["t"], run["ball.wz"], run["ball.resisting_moment"]
+    m, r, w0, torque = 1.0, 0.05, 20.0, 0.3 * 0.005 * 1.0 * 9.81
+    rate = torque / (0.4 * m * r * r)
+    spinning = t < 0.9 * w0 / rate
+    assert np.max(np.abs(w[spinning] - (w0 - rate * t[spinning]))) < 1e-3 * w0
+    assert np.max(np.abs(moment[spinning][1:] - torque)) < 1e-6 * torque
+    # Stopped, the angular stick spring rings down (about 100 rad/s, damping ratio 0.5) and
+    # holds: nothing left 0.3 s after the stop.
+    stopped = t > w0 / rate + 0.3
+    assert np.max(np.abs(w[stopped])) < 1e-6

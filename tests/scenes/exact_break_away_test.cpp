@@ -48,7 +48,10 @@ constexpr double kMasses[3] = {0.2, 2.0, 20.0};  // [kg]
 // damping per corner scale with the mass (1e5 m N/m, 100 m N s/m; elastic_stick's
 // tangential spring alike), so that rk4 at 1 ms is inside every block's stable step and the
 // static depth m g / (4 k) is the same for all.
-std::string scene(const std::string& law, double ratio, double duration) {
+// With a grain (`anisotropy`, a material's mapping text) the push is `sense` (+1 or -1) times
+// `ratio` r_axis mu_s m g along x, r_axis the grain's ratio for that sense.
+std::string scene(const std::string& law, double ratio, double duration,
+                  const std::string& anisotropy = "", double sense = 1.0, double r_axis = 1.0) {
   std::string bodies, loads, materials, contacts;
   for (int i = 0; i < 3; ++i) {
     const double m = kMasses[i];
@@ -59,12 +62,14 @@ std::string scene(const std::string& law, double ratio, double duration) {
     loads += "  - {name: push" + n + ", body: block" + n +
              ", frame: world, point: [0, 0, -0.05], force: [{smooth_step: {start: 0, before: "
              "0, end: " +
-             number(kRamp) + ", after: " + number(ratio * kMuS * m * kG) + "}}, 0, 0]}\n";
+             number(kRamp) + ", after: " + number(sense * ratio * r_axis * kMuS * m * kG) +
+             "}}, 0, 0]}\n";
     const std::string friction =
         law == "elastic_stick" ? "elastic_stick" + n
                                : law;  // the bristle laws' stiffness is per newton of load already
     materials += "  - {name: m" + n + ", normal: {law: linear, stiffness: " + number(1e5 * m) +
-                 ", damping: " + number(100 * m) + "}, friction: " + friction + "}\n";
+                 ", damping: " + number(100 * m) + "}, friction: " + friction +
+                 (anisotropy.empty() ? "" : ", anisotropy: " + anisotropy) + "}\n";
     contacts += "  - {a: floor, b: box" + n + ", material: m" + n + "}\n";
   }
   std::string laws;
@@ -96,8 +101,11 @@ constexpr double kSliding = 0.05;  // [m/s]
 // Runs the three blocks to `duration`, or (stop_when_all_slide) until all three pass
 // kSliding: the bristle laws' state equation stiffens with the slip speed (sigma0 |v| / g,
 // 1.7e3 /s at 0.05 m/s, 3e4 /s at 1 m/s), beyond what rk4 at 1 ms follows.
-Outcome run(const std::string& law, double ratio, double duration, bool stop_when_all_slide) {
-  const io::Scene s = io::loadSceneFromString(scene(law, ratio, duration), "push.yaml");
+Outcome run(const std::string& law, double ratio, double duration, bool stop_when_all_slide,
+            const std::string& anisotropy = "", double sense = 1.0, double r_axis = 1.0,
+            double settled_at = kSettled) {
+  const io::Scene s =
+      io::loadSceneFromString(scene(law, ratio, duration, anisotropy, sense, r_axis), "push.yaml");
   Simulator sim(s.model);
   std::size_t block[3];
   double x0[3];
@@ -107,7 +115,7 @@ Outcome run(const std::string& law, double ratio, double duration, bool stop_whe
   }
   Outcome r;
   const long steps = std::lround(duration / 1e-3);
-  const long settled = std::lround(kSettled / 1e-3);
+  const long settled = std::lround(settled_at / 1e-3);
   for (long k = 0; k < steps; ++k) {
     const StepStatus status = sim.step();
     EXPECT_TRUE(status.ok) << status.message;
@@ -116,7 +124,7 @@ Outcome run(const std::string& law, double ratio, double duration, bool stop_whe
     for (int i = 0; i < 3; ++i) {
       const BodyState& b = sim.state().bodies[block[i]];
       if (k + 1 == settled) r.x_settled[i] = b.position.x() - x0[i];
-      if (r.t_fast[i] < 0.0 && b.velocity.x() > kSliding) r.t_fast[i] = sim.state().time;
+      if (r.t_fast[i] < 0.0 && sense * b.velocity.x() > kSliding) r.t_fast[i] = sim.state().time;
       all = all && r.t_fast[i] >= 0.0;
     }
     if (stop_when_all_slide && all) break;
@@ -240,6 +248,49 @@ TEST(ExactBreakAway, AtPoint999TheBlocksHoldFor100sAndAt1Point001TheySlide) {
       // where the push passes mu_s m g) and is sliding fast within 2 s.
       EXPECT_GT(slid.t_fast[i], 0.95 * kRamp);
       EXPECT_LT(slid.t_fast[i], kRamp + 2.0);
+    }
+  }
+}
+
+// With a grain (contact/anisotropy.hpp: ratio 0.5 along +x, 2 along -x) the threshold is
+// r mu_s m g in each sense: 0.999 of it holds, 1.001 slides. elastic_stick's springs act in
+// the law's scaled plane, so each corner's stiffness along x is r^2 k_t and the block holds
+// at F / (4 r^2 k_t); LuGre's presliding there is the isotropic one's in X = r x, so the
+// block holds beyond its quasi-static curve x = -(mu_s / (sigma0 r)) ln(1 - F / (r mu_s m g))
+// (by the approach's overshoot, 20% in the isotropic case above) and then stays.
+TEST(ExactBreakAway, WithAGrainTheThresholdIsItsRatioOfMuSInEachSense) {
+  const std::string grain = "{axis: [1, 0, 0], ratio: [0.5, 1], backward: [2, 1]}";
+  for (const char* law : {"elastic_stick", "lugre"}) {
+    for (const auto& [sense, r] : {std::pair{1.0, 0.5}, std::pair{-1.0, 2.0}}) {
+      SCOPED_TRACE(std::string(law) + " sense " + number(sense));
+      const bool stick = std::string(law) == "elastic_stick";
+      // LuGre along the grain's soft sense (r = 0.5) has a 4 times softer bristle there and
+      // ends its approach later (measured: 1.7e-9 m after 20 s, nothing after 30 s): the
+      // creep is measured from 40 s.
+      const Outcome held = run(law, 0.999, kHold, false, grain, sense, r, 40.0);
+      const Outcome slid = run(law, 1.001, kRamp + 2.0, true, grain, sense, r);
+      const double expected =
+          stick ? 0.999 * kMuS * kG / (4 * kKt * r) : -(kMuS / (kSigma0 * r)) * std::log(1 - 0.999);
+      for (int i = 0; i < 3; ++i) {
+        SCOPED_TRACE(number(kMasses[i]) + " kg");
+        const double x = sense * held.x_end[i];
+        const double creep = std::abs(held.x_end[i] - held.x_settled[i]);
+        std::printf(
+            "%-13s r %.1f m %5.1f kg: held at %.6e m (quasi-static %.6e), creep %.3e m; "
+            "at 1.001 fast at t = %.3f s\n",
+            law, r, kMasses[i], x, expected, creep, slid.t_fast[i]);
+        EXPECT_LT(held.t_fast[i], 0.0) << "slid at " << held.t_fast[i] << " s";
+        if (stick) {
+          EXPECT_NEAR(x, expected, 1e-3 * expected);
+          EXPECT_LT(creep, 1e-12);
+        } else {
+          EXPECT_GT(x, expected);
+          EXPECT_LT(x, 1.5 * expected);
+          EXPECT_LT(creep, 1e-10);
+        }
+        EXPECT_GT(slid.t_fast[i], 0.95 * kRamp);
+        EXPECT_LT(slid.t_fast[i], kRamp + 2.0);
+      }
     }
   }
 }
