@@ -32,6 +32,32 @@ contact::SlipAxes slipAxesOf(const Workspace& ws, const ContactPair& pair,
                            rec.point.normal);
 }
 
+// The friction stage of one point in its law's scaled plane when the material is anisotropic
+// (contact/anisotropy.hpp): the constructor moves rec.slip into it, leave() moves the force
+// and slip back; for an isotropic material both do nothing.
+class LawPlane {
+ public:
+  LawPlane(const Workspace& ws, const ContactPair& pair, const contact::Anisotropy& an,
+           contact::ContactRecord& rec)
+      : an_(an) {
+    if (!an.active) return;
+    axes_ = slipAxesOf(ws, pair, an, rec);
+    slip_ = contact::enterLawPlane(an, axes_, rec);
+  }
+  // A vector of the slip's kind (a stick spring's elongation) in the plane.
+  Eigen::Vector3d in(const Eigen::Vector3d& v) const {
+    return an_.active ? contact::toLawPlane(an_, axes_, v) : v;
+  }
+  void leave(contact::ContactRecord& rec) const {
+    if (an_.active) contact::leaveLawPlane(an_, axes_, slip_, rec);
+  }
+
+ private:
+  const contact::Anisotropy& an_;
+  contact::SlipAxes axes_;
+  Eigen::Vector3d slip_ = Eigen::Vector3d::Zero();
+};
+
 // A geometry's angular velocity (its body's; zero on the world).
 Vec3 angularVelocityOf(const Model& m, const State& state, int geometry) {
   const BodyIndex b = m.geometries[static_cast<std::size_t>(geometry)].body;
@@ -93,13 +119,7 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
   auto independent = [&](contact::ContactRecord& rec) {
     const ContactPair& pair = pairOf(ws, rec);
     const contact::Material& material = m.materials[pair.material];
-    const contact::Anisotropy& an = material.anisotropy;
-    contact::SlipAxes axes;
-    Eigen::Vector3d slip;
-    if (an.active) {
-      axes = slipAxesOf(ws, pair, an, rec);
-      slip = contact::enterLawPlane(an, axes, rec);
-    }
+    const LawPlane plane(ws, pair, material.anisotropy, rec);
     const contact::StickAnchor* anchor =
         anchored_material_[pair.material]
             ? contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius)
@@ -109,10 +129,10 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
     } else {
       friction::StickView view =
           contact::stickView(anchor, rec.point, anchorFrames(m, ws, pair), state.time);
-      if (an.active) view.elongation = contact::toLawPlane(an, axes, view.elongation);
+      view.elongation = plane.in(view.elongation);
       contact::frictionForce(material, view, rec);
     }
-    if (an.active) contact::leaveLawPlane(an, axes, slip, rec);
+    plane.leave(rec);
     if (material.resistance.active()) resistingMoment(m, state, ws, pair, anchor, rec);
   };
   if (!any_dynamic_ || steady_) {
@@ -137,26 +157,20 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
       independent(rec);
       continue;
     }
-    const contact::Anisotropy& an = m.materials[pair.material].anisotropy;
-    contact::SlipAxes axes;
-    Eigen::Vector3d slip;
-    if (an.active) {
-      axes = slipAxesOf(ws, pair, an, rec);
-      slip = contact::enterLawPlane(an, axes, rec);
-    }
+    const LawPlane plane(ws, pair, m.materials[pair.material].anisotropy, rec);
     const contact::FrictionStateRecord* record =
         contact::findRecord(records, rec.point, m.options.collision.match_radius);
     if (record == nullptr) {
       law->initialState(z.data());  // a contact new within the step: not integrated yet
       contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
-      if (an.active) contact::leaveLawPlane(an, axes, slip, rec);
+      plane.leave(rec);
       resistance(rec, pair);
       continue;
     }
     contact::transportState(*law, &state.friction_values[record->state], record->normal,
                             rec.point.normal, z.data());
     contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
-    if (an.active) contact::leaveLawPlane(an, axes, slip, rec);
+    plane.leave(rec);
     resistance(rec, pair);
     const auto r = static_cast<std::size_t>(record - records.data());
     if (ws.friction_state_contact[r] >= 0) continue;  // the first point using it drives it

@@ -33,33 +33,38 @@ def alpha(z, v, law):
     return 0.5 * (1 + math.sin(math.pi * (abs(z) - 0.5 * (z_ss + z_ba)) / (z_ss - z_ba)))
 
 
-def reference(law, f_b, f_a, freq, duration, samples, h=2.5e-5):
-    """x at the sample times of m v' = F(t) - F_n (sigma0 z + sigma1 z' + sigma2 v),
-    z' = v - alpha sigma0 |v| z / g(|v|), x' = v, from rest with z = 0."""
-
-    def rates(t, x, v, z):
-        zdot = v - alpha(z, v, law) * SIGMA0 * abs(v) * z / g(abs(v))
-        force = f_b + f_a * math.sin(2 * math.pi * freq * t)
-        return v, (force - F_N * (SIGMA0 * z + SIGMA1 * zdot + SIGMA2 * v)) / M, zdot
-
-    x = v = z = 0.0
-    out, k = [], 0
+def rk4_samples(rates, y, duration, samples, h):
+    """y[0] at the sample times (evenly spaced from 0) of y' = rates(t, y), y a tuple, by RK4
+    at step h to `duration`."""
+    out = []
     steps = int(round(duration / h))
     every = int(round((samples[1] - samples[0]) / h))
     for i in range(steps + 1):
         if i % every == 0:
-            out.append(x)
+            out.append(y[0])
         if i == steps:
             break
         t = i * h
-        a1 = rates(t, x, v, z)
-        a2 = rates(t + h / 2, x + h / 2 * a1[0], v + h / 2 * a1[1], z + h / 2 * a1[2])
-        a3 = rates(t + h / 2, x + h / 2 * a2[0], v + h / 2 * a2[1], z + h / 2 * a2[2])
-        a4 = rates(t + h, x + h * a3[0], v + h * a3[1], z + h * a3[2])
-        x += h / 6 * (a1[0] + 2 * a2[0] + 2 * a3[0] + a4[0])
-        v += h / 6 * (a1[1] + 2 * a2[1] + 2 * a3[1] + a4[1])
-        z += h / 6 * (a1[2] + 2 * a2[2] + 2 * a3[2] + a4[2])
+        k1 = rates(t, y)
+        k2 = rates(t + h / 2, tuple(a + h / 2 * b for a, b in zip(y, k1)))
+        k3 = rates(t + h / 2, tuple(a + h / 2 * b for a, b in zip(y, k2)))
+        k4 = rates(t + h, tuple(a + h * b for a, b in zip(y, k3)))
+        y = tuple(a + h / 6 * (b1 + 2 * b2 + 2 * b3 + b4)
+                  for a, b1, b2, b3, b4 in zip(y, k1, k2, k3, k4))
     return np.array(out)
+
+
+def reference(law, f_b, f_a, freq, duration, samples, h=2.5e-5):
+    """x at the sample times of m v' = F(t) - F_n (sigma0 z + sigma1 z' + sigma2 v),
+    z' = v - alpha sigma0 |v| z / g(|v|), x' = v, from rest with z = 0."""
+
+    def rates(t, y):
+        _, v, z = y
+        zdot = v - alpha(z, v, law) * SIGMA0 * abs(v) * z / g(abs(v))
+        force = f_b + f_a * math.sin(2 * math.pi * freq * t)
+        return v, (force - F_N * (SIGMA0 * z + SIGMA1 * zdot + SIGMA2 * v)) / M, zdot
+
+    return rk4_samples(rates, (0.0, 0.0, 0.0), duration, samples, h)
 
 
 @pytest.mark.parametrize("law", ["lugre", "elasto_plastic"])
@@ -91,28 +96,13 @@ def ratchet_reference(ratio, samples, mu=0.3, g=9.81, v_eps=1e-3, freq=2.0, h=1e
     (the law sees the speed r u along its axis: contact/anisotropy.hpp); RK4 at the scene's
     step."""
 
-    def accel(t, u):
+    def rates(t, y):
+        u = y[1]
         r = 0.5 if u >= 0 else 1.5
-        return ratio * mu * g * math.sin(2 * math.pi * freq * t) - r * mu * g * math.tanh(
-            r * u / v_eps)
+        return u, (ratio * mu * g * math.sin(2 * math.pi * freq * t)
+                   - r * mu * g * math.tanh(r * u / v_eps))
 
-    x = u = 0.0
-    out = []
-    every = int(round((samples[1] - samples[0]) / h))
-    steps = int(round(samples[-1] / h))
-    for i in range(steps + 1):
-        if i % every == 0:
-            out.append(x)
-        if i == steps:
-            break
-        t = i * h
-        k1 = accel(t, u)
-        k2 = accel(t + h / 2, u + h / 2 * k1)
-        k3 = accel(t + h / 2, u + h / 2 * k2)
-        k4 = accel(t + h, u + h * k3)
-        x += h * (u + h / 6 * (k1 + k2 + k3))
-        u += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    return np.array(out)
+    return rk4_samples(rates, (0.0, 0.0), samples[-1], samples, h)
 
 
 @pytest.mark.parametrize("ratio", [0.8, 1.2])

@@ -65,11 +65,11 @@ Planar integrate(Planar s, double duration, double h,
   return s;
 }
 
-// The scene's block from its start, run to the scene's duration.
-Planar run(const io::Scene& scene) {
+// The scene's body `name` at the scene's duration, and at its start in `start`.
+BodyState finalState(const io::Scene& scene, const std::string& name, BodyState* start) {
   Simulator sim(scene.model);
-  const std::size_t block = static_cast<std::size_t>(scene.model->findBody("block")->value);
-  const Vec3 p0 = sim.state().bodies[block].position;
+  const std::size_t body = static_cast<std::size_t>(scene.model->findBody(name)->value);
+  if (start != nullptr) *start = sim.state().bodies[body];
   const long steps = std::lround(scene.model->options.duration / scene.model->options.time_step);
   for (long i = 0; i < steps; ++i) {
     const StepStatus status = sim.step();
@@ -78,8 +78,15 @@ Planar run(const io::Scene& scene) {
       break;
     }
   }
-  const auto& b = sim.state().bodies[block];
-  return {b.position.x() - p0.x(), b.position.y() - p0.y(), b.velocity.x(), b.velocity.y()};
+  return sim.state().bodies[body];
+}
+
+// The scene's block from its start, run to the scene's duration.
+Planar run(const io::Scene& scene) {
+  BodyState start;
+  const BodyState b = finalState(scene, "block", &start);
+  return {b.position.x() - start.position.x(), b.position.y() - start.position.y(), b.velocity.x(),
+          b.velocity.y()};
 }
 
 // The particle's acceleration on the slider's plane: ratios (forward, backward) along x and
@@ -234,18 +241,7 @@ TEST(AnisotropicFriction, TheLimitSurfaceTurnsWithTheBodyExactly) {
 
 TEST(AnisotropicFriction, AGroovedSkiTurnsDownTheFallLineAndAPlainOneDoesNot) {
   auto finalYaw = [](const std::vector<std::string>& overrides, Vec3* velocity) {
-    const io::Scene scene = io::loadScene(kSki, overrides);
-    Simulator sim(scene.model);
-    const std::size_t ski = static_cast<std::size_t>(scene.model->findBody("ski")->value);
-    const long steps = std::lround(scene.model->options.duration / scene.model->options.time_step);
-    for (long i = 0; i < steps; ++i) {
-      const StepStatus status = sim.step();
-      if (!status.ok) {
-        ADD_FAILURE() << status.message;
-        break;
-      }
-    }
-    const BodyState& b = sim.state().bodies[ski];
+    const BodyState b = finalState(io::loadScene(kSki, overrides), "ski", nullptr);
     *velocity = b.velocity;
     const Vec3 heading = b.orientation * Vec3::UnitX();
     return std::atan2(heading.y(), heading.x());
