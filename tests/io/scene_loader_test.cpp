@@ -330,6 +330,36 @@ TEST(SceneLoader, AnisotropyErrorsNameTheirKey) {
   EXPECT_EQ(an.backward[1], 2.0);
 }
 
+// materials[].rolling and .spinning (contact/rolling_resistance.hpp): missing, non-positive
+// and unknown keys are refused at their key; the limits are mu_r and mu_spin r_c.
+TEST(SceneLoader, RollingAndSpinningErrorsNameTheirKey) {
+  auto with = [](const std::string& part) {
+    return replaced(kBase, "friction: $law}", "friction: $law, " + part + "}");
+  };
+  EXPECT_TRUE(Has(errorOfScene(with("rolling: {stiffness: 5}")),
+                  "materials[0].rolling: missing required key 'length'"));
+  EXPECT_TRUE(Has(errorOfScene(with("rolling: {length: -0.001, stiffness: 5}")),
+                  "materials[0].rolling.length"));
+  EXPECT_TRUE(Has(errorOfScene(with("rolling: {length: 0.001, stiffness: 0}")),
+                  "materials[0].rolling.stiffness"));
+  EXPECT_TRUE(Has(errorOfScene(with("rolling: {length: 0.001, stiffness: 5, damping: -1}")),
+                  "materials[0].rolling.damping"));
+  EXPECT_TRUE(Has(errorOfScene(with("spinning: {mu: 0.3, stiffness: 5}")),
+                  "materials[0].spinning: missing required key 'radius'"));
+  EXPECT_TRUE(Has(errorOfScene(with("spinning: {mu: 0.3, radius: 0.01, stiffness: 5, mu_r: 1}")),
+                  "materials[0].spinning.mu_r: unknown key 'mu_r'"));
+  const Scene scene = loadSceneFromString(
+      with("rolling: {length: 0.002, stiffness: 5}, spinning: {mu: 0.3, radius: 0.01, "
+           "stiffness: 2, damping: 0.1, stick_speed: 0.01}"),
+      "t.yaml");
+  const contact::RollingResistance& r = scene.model->materials[0].resistance;
+  ASSERT_TRUE(r.rolling && r.spinning);
+  EXPECT_EQ(r.rolling->params().mu_s, 0.002);
+  EXPECT_EQ(r.rolling->params().stick_speed, 1e-3);  // the documented default
+  EXPECT_NEAR(r.spinning->params().mu_s, 0.003, 1e-18);
+  EXPECT_EQ(r.spinning->params().stick_speed, 0.01);
+}
+
 TEST(SceneLoader, WrongTypesSayWhatWasExpectedAndFound) {
   const std::string two = replaced(kBase, "position: [0, 0, 0.05]", "position: [0, 0.05]");
   EXPECT_TRUE(Has(errorOfScene(two),
