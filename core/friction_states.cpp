@@ -236,20 +236,20 @@ bool FrictionStates::afterStep(State& state, const Workspace& ws) {
     const contact::AnchorFrames frames = anchorFrames(m, ws, pair);
     const contact::StickAnchor* old =
         contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius);
-    friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
     const contact::Material& material = m.materials[pair.material];
     const contact::Anisotropy& an = material.anisotropy;
-    friction::StickUpdate update;
-    if (!stateful_material_[pair.material]) {
-      // A memoryless or dynamic law: the anchor is only the angular one's (below).
-    } else if (an.active) {  // the law decides in its scaled plane (contact/anisotropy.hpp)
-      const contact::SlipAxes axes = slipAxesOf(ws, pair, an, rec);
-      view.elongation = contact::toLawPlane(an, axes, view.elongation);
-      update = material.friction->advance(contact::toLawPlane(an, axes, rec.slip), rec.normal_force,
-                                          view);
-      update.elongation = contact::fromLawPlane(an, axes, update.elongation);
-    } else {
-      update = material.friction->advance(rec.slip, rec.normal_force, view);
+    friction::StickUpdate update;  // a memoryless or dynamic law: only the angular anchor
+    if (stateful_material_[pair.material]) {
+      friction::StickView view = contact::stickView(old, rec.point, frames, state.time);
+      if (an.active) {  // the law decides in its scaled plane (contact/anisotropy.hpp)
+        const contact::SlipAxes axes = slipAxesOf(ws, pair, an, rec);
+        view.elongation = contact::toLawPlane(an, axes, view.elongation);
+        update = material.friction->advance(contact::toLawPlane(an, axes, rec.slip),
+                                            rec.normal_force, view);
+        update.elongation = contact::fromLawPlane(an, axes, update.elongation);
+      } else {
+        update = material.friction->advance(rec.slip, rec.normal_force, view);
+      }
     }
     contact::StickAnchor next = contact::anchorAt(anchor_book_.claim(rec.point, old), rec.point,
                                                   frames, state.time, update);

@@ -370,11 +370,12 @@ StabilityReport estimateStableStep(const Model& model) {
     }
 
     // Rolling and spinning resistance: the stuck angular spring-damper per point turning the
-    // lighter body (contact/rolling_resistance.hpp).
+    // body that turns more easily (contact/rolling_resistance.hpp).
     for (const auto& [part, what] : {std::pair{mat.resistance.rolling.get(), "rolling"},
                                      std::pair{mat.resistance.spinning.get(), "spinning"}}) {
+      if (part == nullptr) continue;
       const double inertia = smallestInertia(model, ga.body, gb.body);
-      if (part == nullptr || !(inertia > 0.0) || std::isinf(inertia)) continue;
+      if (!(inertia > 0.0) || std::isinf(inertia)) continue;
       const friction::ElasticStickParams& p = part->params();
       const char* name = what;
       consider(kPoints * p.stiffness / inertia, kPoints * p.damping / inertia,
