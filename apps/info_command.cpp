@@ -2,8 +2,10 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -11,8 +13,12 @@
 
 #include "apps/common_options.hpp"
 #include "core/stability.hpp"
+#include "io/output_channels.hpp"
+#include "io/scene_loader.hpp"
+#include "io/scene_source.hpp"
 #include "io/urdf_reader.hpp"
 #include "io/urdf_scene.hpp"
+#include "study/material_report.hpp"
 
 namespace tribo::app {
 
@@ -111,12 +117,75 @@ namespace {
 
 struct InfoArguments {
   std::string file;
+  std::vector<std::string> overrides;  // --set, a scene file only
   std::vector<std::string> package_paths;
   io::UrdfReadOptions read;
   bool verbose = false;
 };
 
+// A scene file (.yaml, .yml, and not a <robot> document, which is read as URDF whatever its
+// name, as run does: io/scene_source.hpp): what it holds and what run would do, with each
+// material's laws, limit surface and rolling and spinning thresholds, and the pairs that use it.
+bool isSceneFile(const std::string& file) {
+  if (io::isUrdfScene(file)) return false;
+  std::string ext = std::filesystem::path(file).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".yaml" || ext == ".yml";
+}
+
+int runSceneInfo(const InfoArguments& a) {
+  io::Scene scene;
+  try {
+    scene = io::loadScene(a.file, a.overrides, a.package_paths);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo: %s\n", e.what());
+    return 2;
+  }
+  const Model& model = *scene.model;
+  std::printf("scene '%s'\n", scene.path.c_str());
+  std::printf("bodies %zu (%d dynamic), joints %zu, loads %zu, contacts: ", model.bodies.size(),
+              model.dynamicBodyCount(), model.joints.size(), model.loads.size());
+  if (model.automatic_contacts)  // every two geometries that may touch: not listed (quadratic)
+    std::printf("automatic, among %zu geometries\n", model.geometries.size());
+  else
+    std::printf("%zu listed pair%s\n", model.contact_pairs.size(),
+                model.contact_pairs.size() == 1 ? "" : "s");
+  const auto& o = model.options;
+  const StabilityReport stability = estimateStableStep(model);
+  std::printf("run: %s, step %g s, duration %g s\n", integratorName(o.integrator).c_str(),
+              o.time_step, o.duration);
+  if (std::isinf(stability.limit.max_step))
+    std::printf("stable step: no explicit limit\n");
+  else
+    std::printf("stable step: < %.4g s (%s)\n", stability.limit.max_step,
+                stability.limit.element.c_str());
+  // Materials in model order, each with the listed pairs that use it (the first few by name).
+  constexpr std::size_t kNamedPairs = 4;
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    std::vector<std::string> users;
+    std::size_t count = 0;
+    for (const ContactPair& p : model.contact_pairs)
+      if (static_cast<std::size_t>(p.material) == i && count++ < kNamedPairs)
+        users.push_back(io::pairName(model, p));
+    std::string used;
+    for (const std::string& u : users) used += (used.empty() ? "" : ", ") + u;
+    if (count > users.size()) used += " (+" + std::to_string(count - users.size()) + " more)";
+    if (model.automatic_contacts)
+      std::printf("material %zu:\n", i);
+    else
+      std::printf("material %zu (%zu pair%s%s%s):\n", i, count, count == 1 ? "" : "s",
+                  used.empty() ? "" : ": ", used.c_str());
+    for (const std::string& line : study::describeMaterial(model.materials[i]))
+      std::printf("  %s\n", line.c_str());
+  }
+  std::fflush(stdout);
+  printGrouped(stdout, "note", scene.notes, a.verbose);
+  printGrouped(stdout, "note", stability.notes, a.verbose);
+  return 0;
+}
+
 int runInfo(const InfoArguments& a) {
+  if (isSceneFile(a.file)) return runSceneInfo(a);
   const std::string& file = a.file;
   const std::vector<std::string>& package_paths = a.package_paths;
   const io::UrdfReadOptions& read = a.read;
@@ -179,13 +248,19 @@ int runInfo(const InfoArguments& a) {
 Command addInfoCommand(CLI::App& tribo) {
   auto a = std::make_shared<InfoArguments>();
   CLI::App* info = tribo.add_subcommand(
-      "info", "print a URDF robot's tree, masses, joint types, model checks and what run would do");
-  addPathArgument(*info, "FILE", a->file, "the URDF file (FILE.urdf)");
+      "info",
+      "print a URDF robot's tree, masses, joint types, model checks and what run would do; or a "
+      "scene's bodies, materials (laws, limit surfaces, rolling and spinning thresholds) and "
+      "stable step");
+  addPathArgument(*info, "FILE", a->file, "the URDF file (FILE.urdf) or a scene (FILE.yaml)");
+  addSetOption(*info, a->overrides,
+               "override a value of a scene's parameters: section (repeatable; a scene only)");
   addPackagePathOption(*info, a->package_paths);
   addUrdfOptions(*info, a->read, a->verbose);
   info->footer(
       "A file that passes info does not fail tribo run at load.\n"
-      "exit status: 0 the robot can be simulated, 1 usage, 2 the file or a check is an error");
+      "exit status: 0 the robot or scene can be simulated, 1 usage, 2 the file or a check is an "
+      "error");
   return {info, [a] { return runInfo(*a); }};
 }
 

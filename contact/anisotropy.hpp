@@ -21,8 +21,8 @@
 // Consequence to know: along t_i the law sees the speed r_i v, so its curve there is
 // r_i mu(r_i v) (a Stribeck or stick speed is divided by r_i along that axis).
 // Not here: which geometry is the frame for a given pair and when the functions are called
-// (core/friction_states.cpp); a dynamic law's state is kept in world tangent vectors as an
-// isotropic law's is, so a contact spinning about its normal does not turn it with the frame.
+// (core/friction_states.cpp), how a dynamic law's state is kept against the axes so that it
+// turns with the frame geometry (contact/dynamic_friction.hpp).
 #pragma once
 
 #include <Eigen/Core>

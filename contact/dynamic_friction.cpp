@@ -24,6 +24,29 @@ void transportState(const friction::DynamicFrictionLaw& law, const double* z,
   }
 }
 
+void transportStateWithAxis(const friction::DynamicFrictionLaw& law, const double* z,
+                            const Eigen::Vector3d& from, const Eigen::Vector3d& from_axis,
+                            const Eigen::Vector3d& to, const Eigen::Vector3d& to_axis, double* out,
+                            bool inverse) {
+  const int n = law.stateSize();
+  for (int i = 0; i < n; ++i) out[i] = z[i];
+  if (from == to && from_axis == to_axis) return;
+  auto frame = [](const Eigen::Vector3d& normal, const Eigen::Vector3d& t1) {
+    Eigen::Matrix3d t;
+    t.col(0) = t1;
+    t.col(1) = normal.cross(t1);
+    t.col(2) = normal;
+    return t;
+  };
+  const Eigen::Matrix3d f = frame(from, from_axis), g = frame(to, to_axis);
+  const Eigen::Matrix3d map =
+      inverse ? Eigen::Matrix3d(f * g.transpose()) : Eigen::Matrix3d(g * f.transpose());
+  for (int k = 0; k < law.tangentVectors(); ++k) {
+    const Eigen::Vector3d w = map * Eigen::Vector3d(z[3 * k], z[3 * k + 1], z[3 * k + 2]);
+    for (int i = 0; i < 3; ++i) out[3 * k + i] = w[i];
+  }
+}
+
 void dynamicFrictionForce(const friction::DynamicFrictionLaw& law, const double* z,
                           ContactRecord& out, double* zdot) {
   law.rate(z, out.slip, out.normal_force, zdot);

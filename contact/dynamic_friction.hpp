@@ -11,6 +11,13 @@
 //   R v = v + c x v + c x (c x v) / (1 + d)
 // exactly the identity when n == n0; the rate is turned back by R^T so that it adds to the
 // stored numbers. A normal that flipped (d <= -1 + 1e-12) projects instead of rotating.
+// Under an anisotropic material (contact/anisotropy.hpp) the state lives in the scaled plane
+// of the frame geometry's axes, so it is stored against that frame as well: the record keeps
+// t1 (the material's first axis in the tangent plane) beside n0, and each tangent vector
+// keeps its components along t1, t2 = n x t1 and n: with T = [t1 t2 n],
+//   v -> T T0^T v,
+// so a contact spinning about its normal turns its bristles with the grain, as bristles fixed
+// to the grained surface turn.
 // Not here: when records are made and states advanced (core/friction_states.hpp).
 #pragma once
 
@@ -29,6 +36,7 @@ struct FrictionStateRecord {
   int state = 0;                                       // where z starts in State::friction_values
   int state_size = 0;  // how many numbers z has (the law's stateSize())
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // the frame of z's tangent vectors
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();    // anisotropic: t1 of that frame
 
   bool operator==(const FrictionStateRecord&) const = default;
 };
@@ -41,6 +49,13 @@ constexpr int kMaxFrictionState = 96;
 void transportState(const friction::DynamicFrictionLaw& law, const double* z,
                     const Eigen::Vector3d& from, const Eigen::Vector3d& to, double* out,
                     bool inverse = false);
+
+// The same for an anisotropic material: from the frame (from, from_axis) into (to, to_axis)
+// (unit normals, unit tangent axes), T T0^T v; `inverse` turns back.
+void transportStateWithAxis(const friction::DynamicFrictionLaw& law, const double* z,
+                            const Eigen::Vector3d& from, const Eigen::Vector3d& from_axis,
+                            const Eigen::Vector3d& to, const Eigen::Vector3d& to_axis, double* out,
+                            bool inverse = false);
 
 // Fills out.friction_force (tangential, on B) and out.mu from the law at state z given in
 // the contact's current frame, and writes dz/dt (current frame) into zdot.

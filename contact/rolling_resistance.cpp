@@ -25,6 +25,19 @@ Eigen::Vector3d logOf(Eigen::Quaterniond q) {
   return (2.0 * std::atan2(s, q.w()) / s) * q.vec();
 }
 
+// The rotation vector of rotation matrix m, from its skew part (2 sin(angle) times the axis)
+// and its trace (1 + 2 cos(angle)): no conversion to a quaternion, one atan2. Near a half
+// turn the skew part vanishes and the axis is lost, so there (angle > 154 degrees, far past
+// any spring's elongation) it goes through the quaternion.
+Eigen::Vector3d logOf(const Eigen::Matrix3d& m) {
+  const Eigen::Vector3d v(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+  const double c = m.trace() - 1.0;  // 2 cos(angle)
+  if (c < -1.8) return logOf(Eigen::Quaterniond(m).normalized());
+  const double s = v.norm();      // 2 sin(angle)
+  if (s < 1e-12) return 0.5 * v;  // first order
+  return (std::atan2(s, c) / s) * v;
+}
+
 Eigen::Quaterniond expOf(const Eigen::Vector3d& v) {
   const double angle = v.norm();
   if (angle < 1e-12) return Eigen::Quaterniond(1.0, 0.5 * v.x(), 0.5 * v.y(), 0.5 * v.z());
@@ -62,9 +75,10 @@ std::shared_ptr<const friction::ElasticStickLaw> angularStick(const AngularStick
 
 Eigen::Vector3d angularElongation(const AngularAnchor& anchor, const Eigen::Matrix3d& rot_a,
                                   const Eigen::Matrix3d& rot_b) {
-  const Eigen::Quaterniond ref(anchor.reference.w(), anchor.reference.x(), anchor.reference.y(),
-                               anchor.reference.z());
-  return rot_a * logOf(relative(rot_a, rot_b) * ref.conjugate());
+  const Eigen::Matrix3d ref = Eigen::Quaterniond(anchor.reference.w(), anchor.reference.x(),
+                                                 anchor.reference.y(), anchor.reference.z())
+                                  .toRotationMatrix();
+  return rot_a * logOf(Eigen::Matrix3d(rot_a.transpose() * rot_b * ref.transpose()));
 }
 
 Eigen::Vector3d resistingMoment(const RollingResistance& r, const Eigen::Vector3d& n,

@@ -51,12 +51,27 @@ class LawPlane {
   void leave(contact::ContactRecord& rec) const {
     if (an_.active) contact::leaveLawPlane(an_, axes_, slip_, rec);
   }
+  // The frame geometry's axes at this point; null for an isotropic material.
+  const contact::SlipAxes* axes() const { return an_.active ? &axes_ : nullptr; }
 
  private:
   const contact::Anisotropy& an_;
   contact::SlipAxes axes_;
   Eigen::Vector3d slip_ = Eigen::Vector3d::Zero();
 };
+
+// A record's state z carried into the point's current frame (or back, `inverse`): against
+// the normal only, or with the anisotropy's axis when `axes` is given
+// (contact/dynamic_friction.hpp).
+void transport(const friction::DynamicFrictionLaw& law, const double* z,
+               const contact::FrictionStateRecord& record, const contact::ContactRecord& rec,
+               const contact::SlipAxes* axes, double* out, bool inverse = false) {
+  if (axes != nullptr)
+    contact::transportStateWithAxis(law, z, record.normal, record.axis, rec.point.normal, axes->t1,
+                                    out, inverse);
+  else
+    contact::transportState(law, z, record.normal, rec.point.normal, out, inverse);
+}
 
 // A geometry's angular velocity (its body's; zero on the world).
 Vec3 angularVelocityOf(const Model& m, const State& state, int geometry) {
@@ -167,15 +182,14 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
       resistance(rec, pair);
       continue;
     }
-    contact::transportState(*law, &state.friction_values[record->state], record->normal,
-                            rec.point.normal, z.data());
+    transport(*law, &state.friction_values[record->state], *record, rec, plane.axes(), z.data());
     contact::dynamicFrictionForce(*law, z.data(), rec, zdot.data());
     plane.leave(rec);
     resistance(rec, pair);
     const auto r = static_cast<std::size_t>(record - records.data());
     if (ws.friction_state_contact[r] >= 0) continue;  // the first point using it drives it
     ws.friction_state_contact[r] = static_cast<int>(i);
-    contact::transportState(*law, zdot.data(), record->normal, rec.point.normal, back.data(), true);
+    transport(*law, zdot.data(), *record, rec, plane.axes(), back.data(), true);
     std::copy_n(back.data(), record->state_size, &ws.friction_state_rate[record->state]);
   }
 }
@@ -190,8 +204,14 @@ bool FrictionStates::beforeStep(State& state, Workspace& ws) {
   // Joints' states first, as they are; the contacts' records after them.
   next_values_.assign(state.friction_values.begin(), state.friction_values.begin() + joint_values_);
   for (const contact::ContactRecord& rec : ws.contacts) {
-    const friction::DynamicFrictionLaw* law = dynamic_law_[pairOf(ws, rec).material];
+    const ContactPair& pair = pairOf(ws, rec);
+    const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
     if (law == nullptr) continue;
+    // An anisotropic material's state is kept against its axes too (contact/
+    // dynamic_friction.hpp): re-set when the normal or the axis turned past the angle.
+    const contact::Anisotropy& an = m.materials[pair.material].anisotropy;
+    const contact::SlipAxes axes = an.active ? slipAxesOf(ws, pair, an, rec) : contact::SlipAxes{};
+    const contact::SlipAxes* turning = an.active ? &axes : nullptr;
     const contact::FrictionStateRecord* old =
         contact::findRecord(records, rec.point, m.options.collision.match_radius);
     contact::FrictionStateRecord next;
@@ -203,17 +223,21 @@ bool FrictionStates::beforeStep(State& state, Workspace& ws) {
     double* z = &next_values_[static_cast<std::size_t>(next.state)];
     if (old != nullptr && old->key == next.key) {
       const double* stored = &state.friction_values[static_cast<std::size_t>(old->state)];
-      if (old->normal.dot(rec.point.normal) < cos_rebase) {
-        contact::transportState(*law, stored, old->normal, rec.point.normal, z);
+      if (old->normal.dot(rec.point.normal) < cos_rebase ||
+          (turning != nullptr && old->axis.dot(axes.t1) < cos_rebase)) {
+        transport(*law, stored, *old, rec, turning, z);
         next.normal = rec.point.normal;
+        next.axis = axes.t1;
         forces_changed = forces_changed || law->tangentVectors() > 0;
       } else {
         std::copy_n(stored, next.state_size, z);
         next.normal = old->normal;
+        next.axis = old->axis;
       }
     } else {
       law->initialState(z);
       next.normal = rec.point.normal;
+      next.axis = axes.t1;
       // The evaluation gave this point the state of a record another point continues.
       forces_changed = forces_changed || old != nullptr;
     }
@@ -281,11 +305,12 @@ void FrictionStates::stepStable(State& state, const Workspace& ws, const JointFo
     const contact::Anisotropy& an = model_->materials[pair.material].anisotropy;
     const contact::FrictionStateRecord& record = state.friction_states[r];
     double* stored = &state.friction_values[static_cast<std::size_t>(record.state)];
-    contact::transportState(law, stored, record.normal, rec.point.normal, z.data());
-    const Eigen::Vector3d slip =
-        an.active ? contact::toLawPlane(an, slipAxesOf(ws, pair, an, rec), rec.slip) : rec.slip;
+    const contact::SlipAxes axes = an.active ? slipAxesOf(ws, pair, an, rec) : contact::SlipAxes{};
+    const contact::SlipAxes* turning = an.active ? &axes : nullptr;
+    transport(law, stored, record, rec, turning, z.data());
+    const Eigen::Vector3d slip = an.active ? contact::toLawPlane(an, axes, rec.slip) : rec.slip;
     law.stableStep(z.data(), slip, rec.normal_force, h);
-    contact::transportState(law, z.data(), record.normal, rec.point.normal, back.data(), true);
+    transport(law, z.data(), record, rec, turning, back.data(), true);
     std::copy_n(back.data(), record.state_size, stored);
   }
 }
@@ -298,15 +323,15 @@ std::string FrictionStates::nonFinite(const State& state, std::string& body) con
       state.friction_values.begin() +
       std::min<std::ptrdiff_t>(joint_values_, std::ssize(state.friction_values));
   if (!std::all_of(state.friction_values.begin(), joints_end, finite))
-    return "the internal state of a joint's friction law is not finite";
+    return "the friction state (the internal state of a joint's friction law) is not finite";
   for (const contact::FrictionStateRecord& record : state.friction_states) {
     const double* z = &state.friction_values[static_cast<std::size_t>(record.state)];
     if (std::all_of(z, z + record.state_size, finite)) continue;
     const int pair = contact::keyPair(record.key);
     body = bodyOfPair(m, pair);
-    return "the internal state of friction law '" +
+    return "the friction state (the internal state of friction law '" +
            std::string(m.materials[m.contactPair(pair).material].friction->name()) +
-           "' at a contact of body '" + body + "' is not finite";
+           "') at a contact of body '" + body + "' is not finite";
   }
   return {};
 }

@@ -15,7 +15,8 @@
 //   beforeStep  every contact point of the evaluation at the step's start gets its record
 //               (continuing the one it matched, a new one from the law's initial state,
 //               ended contacts forgotten); stored tangent vectors are turned to the current
-//               normal once it has turned by more than kRebaseAngle;
+//               normal (and, anisotropic, the current axis: they turn with the grain) once
+//               either has turned by more than kRebaseAngle;
 //   evaluate    the friction stage: each point's friction force; for dynamic laws also dz/dt
 //               into Workspace::friction_state_rate. When two points continue one record,
 //               the first in contact order drives it (its rate is the record's);

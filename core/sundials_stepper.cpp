@@ -18,7 +18,7 @@ bool sameRecords(const std::vector<contact::FrictionStateRecord>& a,
                  const std::vector<contact::FrictionStateRecord>& b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
     return x.key == y.key && x.state == y.state && x.state_size == y.state_size &&
-           x.normal == y.normal;
+           x.normal == y.normal && x.axis == y.axis;
   });
 }
 

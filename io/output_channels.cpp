@@ -34,6 +34,7 @@ const std::vector<std::string>& knownChannelGroups() {
     std::vector<std::string> n;
     for (const Group& g : bodyGroups()) n.emplace_back(g.name);
     n.emplace_back("pairs");
+    n.emplace_back("pair_resistance");
     n.emplace_back("joints");
     n.emplace_back("friction_states");
     n.emplace_back("energy");
@@ -65,12 +66,17 @@ std::vector<std::string> channelColumns(const Model& model,
     for (const Group& g : bodyGroups())
       if (hasGroup(groups, g.name))
         for (const char* suffix : g.suffixes) names.push_back(b.name + suffix);
-  const PairSlots slots = hasGroup(groups, "pairs") || hasGroup(groups, "friction_states")
+  const PairSlots slots = hasGroup(groups, "pairs") || hasGroup(groups, "pair_resistance") ||
+                                  hasGroup(groups, "friction_states")
                               ? PairSlots(model)
                               : PairSlots();
   if (hasGroup(groups, "pairs"))
     for (const ContactPair& p : slots.pairs())
       for (const char* suffix : {".normal_force", ".friction_force", ".slip"})
+        names.push_back(pairName(model, p) + suffix);
+  if (hasGroup(groups, "pair_resistance"))
+    for (const ContactPair& p : slots.pairs())
+      for (const char* suffix : {".mu_slip", ".resisting_moment"})
         names.push_back(pairName(model, p) + suffix);
   if (hasGroup(groups, "joints"))
     for (const Joint& j : model.joints)
@@ -142,6 +148,7 @@ std::string channelUnit(const Model& model, std::string_view column) {
                                                                     {"slip", "m/s"},
                                                                     {"normal_force", "N"},
                                                                     {"friction_force", "N"},
+                                                                    {"resisting_moment", "N m"},
                                                                     {"fx", "N"},
                                                                     {"fy", "N"},
                                                                     {"fz", "N"}};

@@ -18,6 +18,20 @@
 //                                                       normal forces [N], |sum of their
 //                                                       friction forces| [N], their largest
 //                                                       slip speed [m/s]; 0 out of contact
+//   pair_resistance     A/B.mu_slip A/B.resisting_moment
+//                                                       per contact pair: the effective
+//                                                       friction coefficient in the slip
+//                                                       direction, sum(-F_i . s_i / |s_i|) /
+//                                                       sum(F_n,i) over its slipping points
+//                                                       (mu(|s|) for an isotropic law, mu(|R s|)
+//                                                       |R s| / |s| for an anisotropic one,
+//                                                       contact/anisotropy.hpp: the power
+//                                                       dissipated per unit load and slip
+//                                                       speed; 0 with none; the largest double
+//                                                       for a finite force on a vanishing
+//                                                       load), and |sum of its points'
+//                                                       rolling and spinning moments on B|
+//                                                       [N m]
 //   joints              JOINT.q JOINT.rate JOINT.friction
 //                                                       each revolute and prismatic joint's
 //                                                       coordinate [rad or m], its rate (the

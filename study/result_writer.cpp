@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "contact/normal_law.hpp"
 #include "core/constraint_solver.hpp"
 #include "study/csv_text.hpp"
 #include "study/early_growth.hpp"
 #include "study/file_commit.hpp"
+#include "study/material_report.hpp"
 #include "study/orbit_shape.hpp"
 #include "study/output_stride.hpp"
 
@@ -109,39 +109,7 @@ std::string summaryJsonText(const io::Scene& scene, const RunResult& result) {
                    {"baumgarte_beta", o.baumgarte_beta},
                    {"output_interval", outputInterval(scene.output.interval, o.time_step)}};
   nlohmann::json materials = nlohmann::json::array();
-  for (const auto& m : model.materials) {
-    nlohmann::json material = {{"normal_law", contact::normalLawName(m.normal.type)},
-                               {"stiffness", m.normal.stiffness},
-                               {"damping", m.normal.damping},
-                               {"friction_law", std::string(m.friction->name())}};
-    // The depth exponent of the nonlinear laws (hertz: always 3/2), and where recurdyn's
-    // damping is full.
-    if (m.normal.type == contact::NormalLawType::kHertz) material["exponent"] = 1.5;
-    if (m.normal.type == contact::NormalLawType::kHuntCrossley ||
-        m.normal.type == contact::NormalLawType::kRecurDyn)
-      material["exponent"] = m.normal.exponent;
-    if (m.normal.type == contact::NormalLawType::kRecurDyn)
-      material["max_depth"] = m.normal.max_depth;
-    // The limit surface of an anisotropic material (contact/anisotropy.hpp): its principal
-    // axis (unit) in the frame geometry and the ratios along and across it, per sense.
-    if (const contact::Anisotropy& an = m.anisotropy; an.active)
-      material["anisotropy"] = {{"frame", an.frame_is_b ? "b" : "a"},
-                                {"axis", {an.axis.x(), an.axis.y(), an.axis.z()}},
-                                {"forward", {an.forward[0], an.forward[1]}},
-                                {"backward", {an.backward[0], an.backward[1]}}};
-    // Rolling and spinning resistance (contact/rolling_resistance.hpp): the moment per
-    // newton of load [m] (mu_r; mu_spin r_c) and the angular stick spring.
-    for (const auto& [part, key] : {std::pair{m.resistance.rolling.get(), "rolling"},
-                                    std::pair{m.resistance.spinning.get(), "spinning"}}) {
-      if (part == nullptr) continue;
-      const friction::ElasticStickParams& p = part->params();
-      material[key] = {{"limit", p.mu_s},
-                       {"stiffness", p.stiffness},
-                       {"damping", p.damping},
-                       {"stick_speed", p.stick_speed}};
-    }
-    materials.push_back(std::move(material));
-  }
+  for (const auto& m : model.materials) materials.push_back(materialJson(m));
   j["settings"]["materials"] = materials;
   if (isAdaptive(o.integrator)) {
     j["settings"]["relative_tolerance"] = o.relative_tolerance;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -24,6 +25,7 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
   friction_force_ = io::hasGroup(groups, "friction");
   resistance_ = io::hasGroup(groups, "resistance");
   pairs_ = io::hasGroup(groups, "pairs");
+  pair_resistance_ = io::hasGroup(groups, "pair_resistance");
   joints_ = io::hasGroup(groups, "joints");
   friction_states_ = io::hasGroup(groups, "friction_states");
   energy_ = io::hasGroup(groups, "energy");
@@ -35,12 +37,17 @@ TrajectoryRecorder::TrajectoryRecorder(const Model& model, std::size_t expected_
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
     if (joints_ && hasScalarCoordinate(model.joints[static_cast<std::size_t>(j)].type))
       joints_recorded_.push_back({j, jointCoordinate(model.joints[static_cast<std::size_t>(j)])});
-  if (pairs_ || friction_states_) slots_ = PairSlots(model);
+  if (pairs_ || pair_resistance_ || friction_states_) slots_ = PairSlots(model);
   const std::size_t pairs = slots_.size();
   if (pairs_) {
     pair_normal_.resize(pairs);
     pair_slip_.resize(pairs);
     pair_friction_.resize(pairs);
+  }
+  if (pair_resistance_) {
+    pair_dissipation_.resize(pairs);
+    pair_slip_load_.resize(pairs);
+    pair_moment_.resize(pairs);
   }
   if (friction_states_) {
     // The same order as io::channelColumns: joints, then pairs.
@@ -105,6 +112,20 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
       pair_slip_[p] = std::max(pair_slip_[p], c.slip.stableNorm());
     }
   }
+  if (pair_resistance_) {
+    std::fill(pair_dissipation_.begin(), pair_dissipation_.end(), 0.0);
+    std::fill(pair_slip_load_.begin(), pair_slip_load_.end(), 0.0);
+    std::fill(pair_moment_.begin(), pair_moment_.end(), Vec3::Zero());
+    for (const auto& c : ws.contacts) {
+      const auto p = static_cast<std::size_t>(slots_.slot(c.point.pair));
+      pair_moment_[p] += c.moment;
+      // A slipping point: its friction's part against its own slip direction, and its load.
+      const double slip = c.slip.stableNorm();
+      if (slip == 0.0 || !(c.normal_force > 0.0)) continue;
+      pair_dissipation_[p] -= c.friction_force.dot(c.slip / slip);
+      pair_slip_load_[p] += c.normal_force;
+    }
+  }
   if (friction_states_) {
     // Records used by a contact point at this evaluation; their states as stored.
     std::fill(pair_state_.begin(), pair_state_.end(), 0.0);
@@ -151,6 +172,15 @@ void TrajectoryRecorder::record(const State& state, const Workspace& ws) {
       row_[col++] = pair_normal_[p];
       row_[col++] = pair_friction_[p].stableNorm();
       row_[col++] = pair_slip_[p];
+    }
+  if (pair_resistance_)
+    for (std::size_t p = 0; p < pair_moment_.size(); ++p) {
+      // No slipping point under load: no direction to take the coefficient in. A finite force
+      // on a vanishing load saturates at the largest double rather than overflow.
+      const double load = pair_slip_load_[p];
+      const double mu = load > 0.0 ? pair_dissipation_[p] / load : 0.0;
+      row_[col++] = std::isfinite(mu) ? mu : std::copysign(std::numeric_limits<double>::max(), mu);
+      row_[col++] = pair_moment_[p].stableNorm();
     }
   if (joints_) {
     const MotionView motion(state, ws.rotation);

@@ -73,12 +73,16 @@ class TrajectoryRecorder {
   std::vector<double> pair_normal_, pair_slip_, pair_state_;
   std::vector<Vec3> pair_friction_;
   std::vector<int> pair_points_;
-  PairSlots slots_;  // pairs and friction_states only: every pair's slot
+  // Per contact pair for pair_resistance, scratch: over its slipping points sum(-F . s / |s|)
+  // and sum(F_n); the sum of its points' moments.
+  std::vector<double> pair_dissipation_, pair_slip_load_;
+  std::vector<Vec3> pair_moment_;
+  PairSlots slots_;  // pairs, pair_resistance and friction_states only: every pair's slot
   // The groups asked for, by flag (io/output_channels.hpp's order).
   bool position_ = false, orientation_ = false, rpy_ = false, velocity_ = false,
        angular_velocity_ = false, contact_ = false, friction_force_ = false, pairs_ = false,
        joints_ = false, friction_states_ = false, energy_ = false, loads_ = false,
-       resistance_ = false;
+       resistance_ = false, pair_resistance_ = false;
   std::vector<int> actuated_joints_;  // joints whose actuator is recorded, in model order
   struct RecordedJoint {
     int joint = -1;

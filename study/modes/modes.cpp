@@ -62,6 +62,21 @@ void settleFrictionStates(Dynamics& dynamics, State& state) {
   dynamics.stepFrictionMemory(state, kForever);
 }
 
+// Rolling and spinning resistance (contact/rolling_resistance.hpp): every contact point's
+// angular spring anchored at `state` (Dynamics::afterStep with no anchors yet: each one just
+// anchored, theta = 0, stuck unless the point turns there), so that the linearization, which
+// holds the anchors while it perturbs the state, sees a stuck part's stiffness k and damping
+// c, and a sliding part's saturated moment.
+void anchorAngularSprings(Dynamics& dynamics, State& state) {
+  const std::vector<contact::Material>& materials = dynamics.model().materials;
+  if (std::none_of(materials.begin(), materials.end(),
+                   [](const contact::Material& m) { return m.resistance.active(); }))
+    return;
+  state.stick_anchors.clear();
+  dynamics.evaluate(state);
+  dynamics.afterStep(state);
+}
+
 }  // namespace
 
 std::vector<Mode> modesOf(const Eigen::MatrixXd& a, const ReducedCoordinates& coords,
@@ -162,6 +177,7 @@ ModesResult analyzeModes(const io::Scene& scene, const ModesSpec& spec) {
   }
   dynamics.setSteadyFriction(false);
   settleFrictionStates(dynamics, out.steady.state);
+  anchorAngularSprings(dynamics, out.steady.state);
   out.steady_seconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
   const State& x = out.steady.state;

@@ -17,6 +17,10 @@
 // the threshold comes from). The sparse solver's unstable_count counts the modes it returned.
 // For one body of mass m on a belt at speed v_b held by a spring (k, c), the in-plane pair
 // is sigma = -(c + N mu'(v_b)) / (2 m), f = sqrt(k/m - sigma^2) / (2 pi) (docs/stability.md).
+// Rolling and spinning resistance: the angular springs are anchored at the steady state and
+// held while it is perturbed (a stuck part adds k and c to K and C about its axes); the
+// steady-state search itself runs without them, so they hold no preload there (a ball held
+// on a slope by rolling resistance alone has no steady state here).
 // Errors: ModesError for what cannot be analysed (stateful friction, no dynamic body, a
 // non-finite linearization, an eigenproblem that fails); NoSteadyState from the steady-state
 // search. Never a table of NaN.

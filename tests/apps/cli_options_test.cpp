@@ -35,7 +35,7 @@ const std::map<std::string, std::vector<std::string>> kOptions = {
     {"run",
      {"SCENE", "--out", "--set", "--package-path", "--quiet", "--progress", "--profile", "--view",
       "--threads", "--strict", "--verbose"}},
-    {"info", {"FILE", "--package-path", "--strict", "--verbose"}},
+    {"info", {"FILE", "--set", "--package-path", "--strict", "--verbose"}},
     {"sweep",
      {"SCENE", "--out", "--grid", "--list", "--set", "--settle", "--settle-every", "--jobs",
       "--keep-trajectories", "--quiet", "--analysis", "--slice", "--merge"}},

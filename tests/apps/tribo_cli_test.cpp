@@ -256,6 +256,45 @@ TEST_F(TriboCli, InfoPrintsTheUrdfTreeAndRefusesAnInvalidOne) {
   EXPECT_NE(loop.output.find("no root link: joint"), std::string::npos) << loop.output;
 }
 
+// info on a scene: its materials' limit surface (the anisotropic slider's ratios per sense)
+// and rolling and spinning thresholds, as the scene sets them and after --set; a bad value is
+// refused naming its key; the stable step is the one run would print.
+TEST_F(TriboCli, InfoOnASceneShowsTheLimitSurfaceAndTheResistanceThresholds) {
+  const std::string experiments = std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/";
+  const Result slider = runTribo("info " + experiments + "anisotropic_slider.yaml");
+  EXPECT_EQ(slider.status, 0) << slider.output;
+  EXPECT_NE(slider.output.find("material 0 (1 pair: floor/sole):"), std::string::npos)
+      << slider.output;
+  EXPECT_NE(slider.output.find("axis (1, 0, 0) fixed in geometry b; limit surface: along the "
+                               "axis 0.5 mu forward, 3 mu backward; across it 1.5 mu forward, "
+                               "1.5 mu backward"),
+            std::string::npos)
+      << slider.output;
+  EXPECT_NE(slider.output.find("stable step: < 0.0001052 s"), std::string::npos) << slider.output;
+  const Result turned =
+      runTribo("info " + experiments + "anisotropic_slider.yaml --set forward=0.25 --set across=2");
+  EXPECT_NE(turned.output.find("along the axis 0.25 mu forward, 3 mu backward; across it 2 mu "
+                               "forward, 2 mu backward"),
+            std::string::npos)
+      << turned.output;
+  const Result ball =
+      runTribo("info " + experiments + "ball_on_slope.yaml --set rolling_length=0.004");
+  EXPECT_EQ(ball.status, 0) << ball.output;
+  EXPECT_NE(ball.output.find("rolling: holds up to 0.004 m times the normal load (mu_r)"),
+            std::string::npos)
+      << ball.output;
+  const Result top = runTribo("info " + experiments + "spinning_top.yaml");
+  // mu_spin r_c = 0.3 x 5 mm.
+  EXPECT_NE(top.output.find("spinning: holds up to 0.0015 m times the normal load (mu_spin r_c)"),
+            std::string::npos)
+      << top.output;
+  const Result bad = runTribo("info " + experiments + "ball_on_slope.yaml --set rolling_length=-1");
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("materials[0].rolling.length: expected a number > 0, found '-1'"),
+            std::string::npos)
+      << bad.output;
+}
+
 // Issue #11 from the command line: an upper-case .URDF runs as a robot, a zero-radius foot
 // is a contact point that info and run agree on, and many notes of one kind are one line
 // (--verbose lists them) before the run's summary.

@@ -161,3 +161,27 @@ def test_spinning_ball_spins_down_as_the_closed_form_says(source_dir):
     # holds: nothing left 0.3 s after the stop.
     stopped = t > w0 / rate + 0.3
     assert np.max(np.abs(w[stopped])) < 1e-6
+
+
+@pytest.mark.parametrize("m", [0.5, 4.0])
+def test_spinning_top_spins_down_and_its_pair_records_the_moment(source_dir, m):
+    """The spinning top from Python (scenes/experiments/spinning_top.yaml): the tip's patch
+    brakes the spin at mu_spin r_c m g / I with I = m R^2 / 2 (its sliding friction has no
+    lever on the axis); the pair_resistance channel records mu_spin r_c m g while it spins,
+    and its work over the rows is the kinetic energy the top lost."""
+    scene = pathlib.Path(source_dir) / "scenes" / "experiments" / "spinning_top.yaml"
+    run = tribo.load_scene(str(scene), set={"m": m}).run()
+    assert run.status == "complete", run.message
+    t, w, moment = run["t"], run["top.wz"], run["floor/tip.resisting_moment"]
+    w0, r_disc, torque = 30.0, 0.04, 0.3 * 0.005 * m * 9.81
+    inertia = 0.5 * m * r_disc * r_disc
+    rate = torque / inertia
+    spinning = t < 0.9 * w0 / rate
+    assert np.max(np.abs(w[spinning] - (w0 - rate * t[spinning]))) < 1e-3 * w0
+    assert np.max(np.abs(moment[spinning] - torque)) < 1e-9 * torque
+    # The moment's work (trapezoids over the 5 ms rows, exact while w falls linearly) against
+    # the energy lost; the last spinning interval, where w reaches zero inside a row, is the
+    # trapezoid's error: half a row of the moment's power at most.
+    work = np.sum(0.5 * (moment[1:] * w[1:] + moment[:-1] * w[:-1]) * np.diff(t))
+    lost = 0.5 * inertia * (w0 * w0 - w[-1] * w[-1])
+    assert abs(work - lost) < torque * rate * 0.005 ** 2

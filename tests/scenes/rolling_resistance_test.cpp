@@ -15,7 +15,11 @@
 //   0.9 of its threshold and at 1.5 accelerates as the same equations say with I = m r^2 / 2;
 // - a ball spinning about the vertical (scenes/experiments/spinning_ball.yaml) spins down
 //   linearly, I w' = -mu_spin r_c m g, stops at I w0 / (mu_spin r_c m g) having turned
-//   w0^2 / (2 |w'|) (the work of the moment equals the kinetic energy it took), and stays.
+//   w0^2 / (2 |w'|) (the work of the moment equals the kinetic energy it took), and stays;
+// - a spinning top on a round tip (scenes/experiments/spinning_top.yaml) does the same with
+//   I = m R^2 / 2 at three masses, disc radii and patch radii, and twisted slowly to 0.999 of
+//   mu_spin r_c m g it holds (the angular spring's give M / k, then no creep) while at 1.001
+//   it turns, accelerating at the excess over I.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,6 +40,7 @@ namespace {
 constexpr double kG = 9.81;
 const std::string kSlope = std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/ball_on_slope.yaml";
 const std::string kSpin = std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/spinning_ball.yaml";
+const std::string kTop = std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/spinning_top.yaml";
 
 std::string set(const std::string& name, double value) {
   char buf[64];
@@ -43,10 +48,11 @@ std::string set(const std::string& name, double value) {
   return name + "=" + buf;
 }
 
-// Runs a scene, calling `each` after every step with the ball's state; stops at a failure.
-void run(const io::Scene& scene, const std::function<void(const State&, const BodyState&)>& each) {
+// Runs a scene, calling `each` after every step with body `body`'s state; stops at a failure.
+void run(const io::Scene& scene, const std::function<void(const State&, const BodyState&)>& each,
+         const std::string& body = "ball") {
   Simulator sim(scene.model);
-  const std::size_t ball = static_cast<std::size_t>(scene.model->findBody("ball")->value);
+  const std::size_t ball = static_cast<std::size_t>(scene.model->findBody(body)->value);
   const long steps = std::lround(scene.model->options.duration / scene.model->options.time_step);
   for (long i = 0; i < steps; ++i) {
     const StepStatus status = sim.step();
@@ -236,6 +242,99 @@ TEST(RollingResistance, ACylinderOnASlopeHoldsBelowItsThresholdAndRollsAboveIt) 
       kG * (std::sin(alpha) - mu_r * std::cos(alpha) / r_e) / (1 + 0.5 * r * r / (r_e * r_e));
   std::printf("cylinder at 1.5: a %.7f m/s^2 (closed form %.7f)\n", (v3 - v1) / 2.0, a);
   EXPECT_NEAR((v3 - v1) / 2.0, a, 1e-4 * a);
+}
+
+// Three tops: mass, disc radius and the tip's patch radius r_c, each over a decade or two.
+struct Top {
+  double m, R, r_c;
+};
+constexpr Top kTops[3] = {{0.2, 0.02, 0.002}, {1.0, 0.04, 0.005}, {20.0, 0.2, 0.02}};
+
+std::vector<std::string> topOverrides(const Top& top, std::vector<std::string> more) {
+  more.push_back(set("m", top.m));
+  more.push_back(set("R", top.R));
+  more.push_back(set("contact_radius", top.r_c));
+  return more;
+}
+
+TEST(RollingResistance, ASpinningTopSpinsDownByItsTipsSpinningFrictionAndStays) {
+  for (const Top& top : kTops) {
+    SCOPED_TRACE("m " + std::to_string(top.m) + " R " + std::to_string(top.R));
+    const double w0 = 30.0, moment = 0.3 * top.r_c * top.m * kG;
+    const double inertia = 0.5 * top.m * top.R * top.R, rate = moment / inertia;
+    const double t_stop = w0 / rate, turned_expected = w0 * w0 / (2 * rate);
+    const io::Scene scene = io::loadScene(kTop, topOverrides(top, {set("duration", 1.3 * t_stop)}));
+    const double dt = scene.model->options.time_step;
+    double turned = 0.0, w_half = 0.0, w_end = 0.0, previous = w0;
+    run(
+        scene,
+        [&](const State& s, const BodyState& b) {
+          const double w = b.angular_velocity.z();
+          turned += 0.5 * (w + previous) * dt;
+          previous = w;
+          if (std::abs(s.time - 0.5 * t_stop) < 0.5 * dt) w_half = w;
+          w_end = w;
+        },
+        "top");
+    std::printf(
+        "top m %.1f R %.2f r_c %.3f: stop %.3f s; w at half %.6f (%.6f), turned %.5f rad "
+        "(%.5f), end %.2e\n",
+        top.m, top.R, top.r_c, t_stop, w_half, 0.5 * w0, turned, turned_expected, w_end);
+    // The tip's sliding friction has no lever about the spindle: only the spinning moment
+    // decelerates it, linearly.
+    EXPECT_NEAR(w_half, 0.5 * w0, 1e-3 * w0);
+    EXPECT_NEAR(turned, turned_expected, 1e-3 * turned_expected);
+    // Energy: the kinetic energy it lost is the resisting moment's work over that angle.
+    EXPECT_NEAR(moment * turned, 0.5 * inertia * w0 * w0, 1e-3 * 0.5 * inertia * w0 * w0);
+    EXPECT_LT(std::abs(w_end), 1e-6);
+  }
+}
+
+// A twist ramped in over 4 s to 0.999 of the spinning threshold is held by the angular
+// spring (its give M / k, then no creep); at 1.001 the spindle lets go near the ramp's end
+// and turns at the excess 1e-3 M / I.
+TEST(RollingResistance, ATopTwistedTo0999OfItsSpinningThresholdHoldsAndAt1001Turns) {
+  for (const Top& top : kTops) {
+    const double threshold = 0.3 * top.r_c * top.m * kG, inertia = 0.5 * top.m * top.R * top.R;
+    const double k = 20.0 * top.m * top.R * top.R / 1.6e-3;  // the scene's spin_stiffness
+    for (double ratio : {0.999, 1.001}) {
+      SCOPED_TRACE("m " + std::to_string(top.m) + " ratio " + std::to_string(ratio));
+      const io::Scene scene = io::loadScene(
+          kTop,
+          topOverrides(top, {"w0=0", set("twist", ratio * threshold), "ramp=4", "duration=10"}));
+      double angle = 0.0, angle_6 = 0.0, w_end = 0.0, t_turning = -1.0;
+      const double dt = scene.model->options.time_step;
+      run(
+          scene,
+          [&](const State& s, const BodyState& b) {
+            angle += b.angular_velocity.z() * dt;
+            if (std::abs(s.time - 6.0) < 0.5 * dt) angle_6 = angle;
+            // Turning: past twice the spring's give at the threshold.
+            if (t_turning < 0.0 && angle > 2.0 * threshold / k) t_turning = s.time;
+            w_end = b.angular_velocity.z();
+          },
+          "top");
+      std::printf(
+          "top m %.1f twist %.3f of mu_spin r_c m g: angle at 6 s %.3e rad, at 10 s "
+          "%.3e, w %.2e rad/s, turning from %.3f s\n",
+          top.m, ratio, angle_6, angle, w_end, t_turning);
+      if (ratio < 1.0) {
+        const double give = ratio * threshold / k;
+        EXPECT_NEAR(angle_6, give, 0.01 * give);
+        EXPECT_LT(std::abs(angle - angle_6), 1e-12);
+        EXPECT_LT(std::abs(w_end), 1e-12);
+        EXPECT_LT(t_turning, 0.0);
+      } else {
+        // The twist passes the threshold at 0.93 of the ramp; from then on the excess
+        // accelerates it at no more than 1e-3 M / I (less until the ramp ends).
+        EXPECT_GT(t_turning, 3.0);
+        EXPECT_LT(t_turning, 5.0);
+        const double excess = 1e-3 * threshold / inertia;
+        EXPECT_GT(w_end, 0.5 * excess * (10.0 - 4.0));
+        EXPECT_LT(w_end, excess * (10.0 - 3.0));
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -14,42 +14,28 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <utility>
 
 #include "io/scene_loader.hpp"
 #include "study/scene_run.hpp"
+#include "support/recorded_run.hpp"
 #include "support/scene_text.hpp"
 
 namespace tribo::study {
 namespace {
 
+using Recorded = test::RecordedRun;
+
 const std::string kScenes = std::string(TRIBO_SOURCE_DIR) + "/scenes/";
 constexpr double kG = 9.81;
 
-std::string textOf(const std::string& file) {
-  std::ifstream in(kScenes + file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// A run of `yaml` with `overrides`, every row kept; the scene owns the model the recorder
-// refers to.
-struct Recorded {
-  std::shared_ptr<const Model> model;
-  RunResult result;
-};
+std::string textOf(const std::string& file) { return test::fileText(kScenes + file); }
 
 Recorded record(const std::string& yaml, const std::string& file,
                 const std::vector<std::string>& overrides) {
-  const io::Scene scene = io::loadSceneFromString(yaml, kScenes + file, overrides);
-  RunResult result = runScene(scene);
-  EXPECT_TRUE(result.complete) << result.message;
-  return {scene.model, std::move(result)};
+  return test::recordRun(yaml, kScenes + file, overrides);
 }
 
 // The column of pair "a/b" or "b/a" (the builder orders a pair's geometries).

@@ -3,7 +3,8 @@
 // joints of every type with limits, springs, damping and friction (memoryless and dynamic
 // laws), springs, bushings and torsional springs between bodies, every friction law the
 // factory knows (memoryless, elastic_stick, every dynamic law, tabulated from a CSV file)
-// and every normal law with parameters across their ranges, values given as expressions
+// and every normal law with parameters across their ranges, direction-dependent friction and
+// rolling and spinning resistance on a third of the scenes each, values given as expressions
 // over parameters, every integrator, 1 to 3 threads or auto, every collision switch, every
 // output channel group, and steps from far below to far past the a-priori stability limit.
 // The generator takes the lists of laws and channel groups from the engine's own tables, and
@@ -22,6 +23,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
@@ -31,6 +34,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "friction/friction_law.hpp"
@@ -70,7 +74,11 @@ long envLong(const char* name, long fallback) {
 // The YAML text of a random valid scene.
 class SceneGenerator {
  public:
-  explicit SceneGenerator(std::uint64_t seed) : rng_(seed) {}
+  // `elements`: direction-dependent friction and rolling and spinning resistance, drawn from
+  // a stream of their own so that every other draw of a seed is what it was before they came
+  // (the seeds that once failed stay the scenes they were, with elements off).
+  explicit SceneGenerator(std::uint64_t seed, bool elements = true)
+      : rng_(seed), elements_rng_(seed ^ 0x9e3779b97f4a7c15ULL), elements_(elements) {}
 
   std::string scene() {
     std::ostringstream s;
@@ -457,9 +465,34 @@ class SceneGenerator {
       s << ", exponent: " << uniform(1, 2) << ", damping: " << logUniform(1e-2, 1e4)
         << ", max_depth: " << logUniform(1e-5, 1e-2);
     s << "}\n";
+    if (elements_) contactElements(s);
+  }
+
+  // Direction-dependent friction and rolling and spinning resistance (contact/
+  // anisotropy.hpp, contact/rolling_resistance.hpp), each on a third of the scenes.
+  void contactElements(std::ostringstream& s) {
+    std::mt19937_64& r = elements_rng_;
+    auto u = [&](double lo, double hi) { return std::uniform_real_distribution(lo, hi)(r); };
+    auto log_u = [&](double lo, double hi) { return std::exp(u(std::log(lo), std::log(hi))); };
+    if (u(0, 1) < 1.0 / 3.0) {
+      s << "    anisotropy: {frame: " << (u(0, 1) < 0.5 ? "a" : "b") << ", axis: [" << u(-1, 1)
+        << ", " << u(-1, 1) << ", " << u(-1, 1) << "], ratio: [" << log_u(0.1, 10) << ", "
+        << log_u(0.1, 10) << "]";
+      if (u(0, 1) < 0.5) s << ", backward: [" << log_u(0.1, 10) << ", " << log_u(0.1, 10) << "]";
+      s << "}\n";
+    }
+    if (u(0, 1) < 1.0 / 3.0)
+      s << "    rolling: {length: " << log_u(1e-5, 1e-1) << ", stiffness: " << log_u(1e-2, 1e4)
+        << ", damping: " << log_u(1e-4, 10) << "}\n";
+    if (u(0, 1) < 1.0 / 3.0)
+      s << "    spinning: {mu: " << log_u(0.01, 2) << ", radius: " << log_u(1e-4, 0.1)
+        << ", stiffness: " << log_u(1e-2, 1e4) << ", damping: " << log_u(1e-4, 10)
+        << ", stick_speed: " << log_u(1e-6, 1) << "}\n";
   }
 
   std::mt19937_64 rng_;
+  std::mt19937_64 elements_rng_;
+  bool elements_ = true;
   double scale_ = 1.0;
   bool ground_ = false;
   double output_interval_ = 1e-3;
@@ -512,14 +545,14 @@ std::string checkFiles(const fs::path& dir) {
 }
 
 // Runs seeds [first, first + seeds) and checks each as the header says.
-void runSeeds(long first, long seeds) {
+void runSeeds(long first, long seeds, bool elements = true) {
   // The process id keeps two builds' runs at once (Release and sanitized) out of each other's
   // folder.
   const fs::path dir = fs::temp_directory_path() / ("tribo_physics_fuzz_" + std::to_string(first) +
                                                     "_" + std::to_string(::getpid()));
   int complete = 0, diverged = 0, capped = 0;
   for (long seed = first; seed < first + seeds; ++seed) {
-    const std::string yaml = SceneGenerator(static_cast<std::uint64_t>(seed)).scene();
+    const std::string yaml = SceneGenerator(static_cast<std::uint64_t>(seed), elements).scene();
     SCOPED_TRACE("seed " + std::to_string(seed) + ", scene:\n" + yaml);
     io::Scene scene;
     try {
@@ -531,14 +564,27 @@ void runSeeds(long first, long seeds) {
     const std::clock_t start = std::clock();
     const auto elapsed = [&] { return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC; };
     bool stopped = false;
-    const RunMonitor monitor{scene.output.interval, [&](const TrajectoryRecorder&) {
-                               stopped = elapsed() > kTimeCap;
-                               return stopped;
-                             }};
-    const RunResult result = runScene(scene, monitor);
+    RunOptions options;
+    options.monitor = {scene.output.interval, [&](const TrajectoryRecorder&) {
+                         stopped = elapsed() > kTimeCap;
+                         return stopped;
+                       }};
+    // And within a row: a watchdog raises the stop request, which the step sees at every
+    // right-hand-side evaluation (a stiff bdf interval can take a minute under sanitizers).
+    std::atomic<bool> stop{false}, done{false};
+    options.stop = &stop;
+    std::thread watchdog([&] {
+      while (!done.load()) {
+        if (elapsed() > kTimeCap) stop.store(true);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+    });
+    const RunResult result = runScene(scene, options);
+    done.store(true);
+    watchdog.join();
     EXPECT_LT(elapsed(), kHangCap) << "a run took longer than the hang cap";
-    if (result.complete) {
-      ++(stopped ? capped : complete);
+    if (result.complete || result.interrupted) {
+      ++(stopped || result.interrupted ? capped : complete);
     } else {
       ++diverged;
       EXPECT_FALSE(result.message.empty());
@@ -588,7 +634,8 @@ TEST(PhysicsFuzz, TheGeneratorWritesEveryLawOfTheFactory) {
   for (const char* word :
        {"bushings:", "torsional_springs:", "loads:", "{smooth_step:", "frame: body",
         "threads: auto", "threads: 2", "integrator: bdf", "integrator: dopri5", "$scale",
-        "load: reaction", "law: lugre", "law: rate_state"})
+        "load: reaction", "law: lugre", "law: rate_state", "anisotropy: {frame: a",
+        "anisotropy: {frame: b", "backward:", "rolling: {", "spinning: {"})
     EXPECT_NE(all.find(word), std::string::npos) << word;
 }
 
@@ -596,13 +643,16 @@ TEST(PhysicsFuzz, RandomValidScenesCompleteOrStopWithANamedReason) {
   runSeeds(envLong("TRIBO_PHYSICS_FUZZ_FIRST", 1), envLong("TRIBO_PHYSICS_FUZZ_SEEDS", 200));
 }
 
-// Seeds that once failed: 1019 stopped on energy with "rose by -nan J" in its message (the
+// Seeds that once failed (with the contact elements: 375, whose rate_state law's state
+// overflowed under a 42 ms step and whose message did not word its quantity, "friction
+// state"); without them: 1019 stopped on energy with "rose by -nan J" in its message (the
 // energy balance had overflowed; core/simulator.cpp now says so in words); 100 (once the
 // generator wrote every channel group) had a finite friction force of 4e168 N whose norm
 // overflowed in its square, written as an empty field (study/trajectory_recorder.cpp now
 // takes stable norms).
 TEST(PhysicsFuzz, SeedsThatOnceFailed) {
-  for (const long seed : {1019L, 100L}) runSeeds(seed, 1);
+  for (const long seed : {1019L, 100L}) runSeeds(seed, 1, false);
+  runSeeds(375, 1);
 }
 
 }  // namespace
