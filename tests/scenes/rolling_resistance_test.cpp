@@ -11,7 +11,8 @@
 // r_e = r - d / 2 is the lever of friction about the centre in the penalty contact (sunk by
 // d = F_n / k, the point midway into the depth: contact/primitive_contacts.cpp); as k grows
 // it tends to r and these to the rigid ball's (5/7) forms.
-// - a solid cylinder lying on the slope (its two rims' lowest points carry the load) holds at
+// - a solid cylinder lying on the slope (scenes/experiments/cylinder_on_slope.yaml: its two
+//   rims' lowest points carry the load) holds at
 //   0.9 of its threshold and at 1.5 accelerates as the same equations say with I = m r^2 / 2;
 // - a ball spinning about the vertical (scenes/experiments/spinning_ball.yaml) spins down
 //   linearly, I w' = -mu_spin r_c m g, stops at I w0 / (mu_spin r_c m g) having turned
@@ -24,15 +25,12 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
-#include "support/scene_text.hpp"
 
 namespace tribo {
 namespace {
@@ -40,6 +38,8 @@ namespace {
 constexpr double kG = 9.81;
 const std::string kSlope = std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/ball_on_slope.yaml";
 const std::string kSpin = std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/spinning_ball.yaml";
+const std::string kCylinder =
+    std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/cylinder_on_slope.yaml";
 const std::string kTop = std::string(TRIBO_SOURCE_DIR) + "/scenes/experiments/spinning_top.yaml";
 
 std::string set(const std::string& name, double value) {
@@ -202,23 +202,7 @@ TEST(RollingResistance, ASpinningBallSpinsDownLinearlyStopsAndStays) {
   EXPECT_LT(std::abs(w_end), 1e-6);
 }
 
-// The ball scene with a solid cylinder (radius r, length 0.1 m, lying along y) in the ball's
-// place: the same rolling resistance per contact point, on its two rims' points.
-std::string cylinderScene() {
-  std::ifstream in(kSlope);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml =
-      test::replaced(text.str(), "{name: ball_shape, shape: sphere, radius: $r}",
-                     "{name: ball_shape, shape: cylinder, radius: $r, length: 0.1, rpy: "
-                     "[1.5707963267948966, 0, 0]}");
-  return test::replaced(yaml, "    position: [0, 0, $z0]\n",
-                        "    position: [0, 0, $z0]\n    inertia: ['$m * (3 * $r^2 + 0.01) / 12', "
-                        "'$m * $r^2 / 2', '$m * (3 * $r^2 + 0.01) / 12']\n");
-}
-
 TEST(RollingResistance, ACylinderOnASlopeHoldsBelowItsThresholdAndRollsAboveIt) {
-  const std::string yaml = cylinderScene();
   // Held at 0.9 (set down at once, as the ball): its springs' give, then nothing.
   double x1 = 0.0, x3 = 0.0, v1 = 0.0, v3 = 0.0;
   auto sample = [&](const State& s, const BodyState& b) {
@@ -229,13 +213,13 @@ TEST(RollingResistance, ACylinderOnASlopeHoldsBelowItsThresholdAndRollsAboveIt) 
     x3 = b.position.x();
     v3 = b.velocity.x();
   };
-  run(io::loadSceneFromString(yaml, kSlope, {"ratio=0.9", "duration=3"}), sample);
+  run(io::loadScene(kCylinder, {"ratio=0.9", "duration=3"}), sample, "cylinder");
   std::printf("cylinder at 0.9: x at 1 s %.3e m, at 3 s %.3e m\n", x1, x3);
   EXPECT_LT(std::abs(x1), 1e-4);
   EXPECT_LT(std::abs(x3 - x1), 1e-12);
   // Rolling at 1.5: two points share the load, so each sinks by d = m g cos(alpha) / (2 k)
   // and the lever is r - d / 2.
-  run(io::loadSceneFromString(yaml, kSlope, {"ratio=1.5", "duration=3"}), sample);
+  run(io::loadScene(kCylinder, {"ratio=1.5", "duration=3"}), sample, "cylinder");
   const double r = 0.05, mu_r = 0.002, alpha = std::atan(1.5 * mu_r / r);
   const double r_e = r - 0.25 * kG * std::cos(alpha) / 1e5;
   const double a =
