@@ -1,6 +1,5 @@
 #include "contact/collision_detector.hpp"
 
-#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
@@ -23,8 +22,10 @@
 
 #include "contact/box_box_contacts.hpp"
 #include "contact/box_round_contacts.hpp"
+#include "contact/broadphase.hpp"
 #include "contact/parallel_range.hpp"
 #include "contact/polyhedron_contacts.hpp"
+#include "contact/round_contacts.hpp"
 
 namespace tribo::contact {
 
@@ -37,12 +38,15 @@ enum class PairKind {
   kSphereSphere,
   kBoxSphere,
   kSphereBox,
-  kBoxBox,       // box_box_contacts.hpp, no FCL
-  kBoxCapsule,   // box_round_contacts.hpp
-  kCapsuleBox,   // the same, normal flipped
-  kBoxCylinder,  // box_round_contacts.hpp where exact, else FCL
-  kCylinderBox,  // the same, normal flipped
-  kPolyhedra,    // FCL's EPA point grown into a face manifold (polyhedron_contacts.hpp)
+  kBoxBox,          // box_box_contacts.hpp, no FCL
+  kBoxCapsule,      // box_round_contacts.hpp
+  kCapsuleBox,      // the same, normal flipped
+  kBoxCylinder,     // box_round_contacts.hpp where exact, else FCL
+  kCylinderBox,     // the same, normal flipped
+  kSphereCapsule,   // round_contacts.hpp
+  kCapsuleSphere,   // the same, normal flipped
+  kCapsuleCapsule,  // round_contacts.hpp
+  kPolyhedra,       // FCL's EPA point grown into a face manifold (polyhedron_contacts.hpp)
   kFcl
 };
 
@@ -84,25 +88,27 @@ std::shared_ptr<fcl::CollisionGeometryd> makeFclGeometry(const Shape& shape) {
   throw std::invalid_argument("unsupported shape");
 }
 
-// FCL's own world AABB of a rotated object is the bounding sphere's box, which makes
-// resting neighbours overlap; this one is the tight box from the shape's support function
-// (for meshes with many vertices FCL's is kept: the support costs a pass over them).
-class TrackedObject : public fcl::CollisionObjectd {
- public:
-  using fcl::CollisionObjectd::CollisionObjectd;
-  void updateAabb(const Shape& shape, const Eigen::Isometry3d& pose) {
-    if (shape.mesh && shape.mesh->vertices.size() > 64) {
-      computeAABB();
-      return;
-    }
-    const Eigen::Matrix3d& r = pose.linear();
-    for (int i = 0; i < 3; ++i) {
-      const Eigen::Vector3d axis = r.row(i).transpose();  // world axis i in the shape frame
-      aabb.max_[i] = pose.translation()[i] + shape.support(axis);
-      aabb.min_[i] = pose.translation()[i] - shape.support(-axis);
-    }
+// The world box of a shape at `pose`: tight, from the shape's support function along the
+// world axes (FCL's own box of a rotated object is the bounding sphere's, which makes resting
+// neighbours overlap). A mesh with many vertices: its local box turned (|R| times the half
+// extents), since the support costs a pass over the vertices.
+Aabb worldBox(const Shape& shape, const Eigen::Isometry3d& pose, const Aabb* local) {
+  const Eigen::Matrix3d& r = pose.linear();
+  Aabb box;
+  if (local != nullptr) {
+    const Eigen::Vector3d centre = pose * (0.5 * (local->lo + local->hi));
+    const Eigen::Vector3d half = r.cwiseAbs() * (0.5 * (local->hi - local->lo));
+    box.lo = centre - half;
+    box.hi = centre + half;
+    return box;
   }
-};
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d axis = r.row(i).transpose();  // world axis i in the shape frame
+    box.hi[i] = pose.translation()[i] + shape.support(axis);
+    box.lo[i] = pose.translation()[i] - shape.support(-axis);
+  }
+  return box;
+}
 
 std::atomic<CollisionDetector::FclScopeHook> fcl_scope_hook{nullptr};
 
@@ -128,22 +134,6 @@ class FclScope {
   std::chrono::steady_clock::time_point start_{};
 };
 
-// Tribo code called back from inside FCL: outside the hook's bracket while it runs.
-class FclCallback {
- public:
-  FclCallback() : hook_(fcl_scope_hook.load(std::memory_order_relaxed)) {
-    if (hook_ != nullptr) hook_(false);
-  }
-  ~FclCallback() {
-    if (hook_ != nullptr) hook_(true);
-  }
-  FclCallback(const FclCallback&) = delete;
-  FclCallback& operator=(const FclCallback&) = delete;
-
- private:
-  CollisionDetector::FclScopeHook hook_;
-};
-
 std::uint64_t pairKey(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
@@ -166,9 +156,14 @@ struct CollisionDetector::Impl {
   bool any_fcl_pair = false;
   bool narrowphase_reaches_fcl = false;     // some pair may go to fcl::collide
   std::unique_ptr<QueryWatchdog> watchdog;  // null unless watchQueries() started one
-  std::vector<std::unique_ptr<TrackedObject>> objects;
-  std::unordered_map<std::uint64_t, int> pair_index;  // listed: geometry pair -> pair
-  fcl::DynamicAABBTreeCollisionManagerd manager;
+  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;  // null where FCL is never asked
+  std::unordered_map<std::uint64_t, int> pair_index;            // listed: geometry pair -> pair
+  GridBroadphase grid;
+  std::vector<int> bounded;          // geometries in the broadphase (all but half-spaces)
+  std::vector<Aabb> boxes;           // world boxes, by geometry (half-spaces' unused)
+  std::vector<Aabb> mesh_local;      // local boxes of meshes with many vertices
+  std::vector<char> has_mesh_local;  // by geometry
+  std::vector<std::pair<int, int>> close_pairs;
   fcl::CollisionRequestd request;  // shared by the threads: FCL only reads it
   std::vector<Candidate> candidates;
   std::vector<Candidate> unbounded;   // pairs with a half-space: never culled
@@ -291,6 +286,21 @@ struct CollisionDetector::Impl {
         for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
         return;
       }
+      case PairKind::kSphereCapsule:
+        sphereCapsuleContact(poses[a].translation(), shapes[a].radius, poses[b], shapes[b].radius,
+                             shapes[b].half_length, p, out);
+        return;
+      case PairKind::kCapsuleSphere: {
+        const auto first = out.size();
+        sphereCapsuleContact(poses[b].translation(), shapes[b].radius, poses[a], shapes[a].radius,
+                             shapes[a].half_length, p, out);
+        for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
+        return;
+      }
+      case PairKind::kCapsuleCapsule:
+        capsuleCapsuleContacts(poses[a], shapes[a].radius, shapes[a].half_length, poses[b],
+                               shapes[b].radius, shapes[b].half_length, p, out);
+        return;
       case PairKind::kPolyhedra:
       case PairKind::kFcl:
         break;
@@ -360,6 +370,9 @@ PairKind CollisionDetector::Impl::classify(int a, int b) const {
     if (ta == ShapeType::kCapsule && tb == ShapeType::kBox) kind = PairKind::kCapsuleBox;
     if (ta == ShapeType::kBox && tb == ShapeType::kCylinder) kind = PairKind::kBoxCylinder;
     if (ta == ShapeType::kCylinder && tb == ShapeType::kBox) kind = PairKind::kCylinderBox;
+    if (ta == ShapeType::kSphere && tb == ShapeType::kCapsule) kind = PairKind::kSphereCapsule;
+    if (ta == ShapeType::kCapsule && tb == ShapeType::kSphere) kind = PairKind::kCapsuleSphere;
+    if (ta == ShapeType::kCapsule && tb == ShapeType::kCapsule) kind = PairKind::kCapsuleCapsule;
   }
   // Convex meshes with boxes or each other (box/box: its closed form, or FCL's manifold).
   if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(shapes[a]) &&
@@ -391,9 +404,10 @@ void CollisionDetector::Impl::setUp() {
       throw std::invalid_argument("geometry " + std::to_string(g) + ": " + e.what());
     }
   }
-  // FCL objects only where FCL is asked something: an FCL pair, or the broadphase. With a
-  // rule any two geometries may be asked (polyhedra are made for every convex shape).
-  std::vector<bool> needed(n, options.broadphase);
+  // FCL objects only where FCL's narrowphase is asked something: a listed FCL pair, or with
+  // a rule a shape type that meets another with no closed form (polyhedra are made for every
+  // convex shape).
+  std::vector<bool> needed(n, false);
   polyhedra.resize(n);
   // Cylinder/box falls back to FCL for the poses it has no closed form for.
   auto fcl_kind = [](PairKind k) {
@@ -429,32 +443,46 @@ void CollisionDetector::Impl::setUp() {
       else if (second_of[static_cast<std::size_t>(shapes[g].type)] < 0)
         second_of[static_cast<std::size_t>(shapes[g].type)] = g;
     }
+    std::vector<bool> type_reaches_fcl(kTypes, false);
     for (std::size_t s = 0; s < first_of.size(); ++s)
       for (std::size_t t = s; t < first_of.size(); ++t) {
         const int a = first_of[s], b = s == t ? second_of[t] : first_of[t];
         if (a < 0 || b < 0) continue;
         if (shapes[a].type == ShapeType::kHalfSpace && shapes[b].type == ShapeType::kHalfSpace)
           continue;
-        narrowphase_reaches_fcl =
-            narrowphase_reaches_fcl || fcl_kind(classify(a, b)) || fcl_kind(classify(b, a));
+        if (fcl_kind(classify(a, b)) || fcl_kind(classify(b, a)))
+          type_reaches_fcl[s] = type_reaches_fcl[t] = true;
       }
+    for (int g = 0; g < n; ++g)
+      if (type_reaches_fcl[static_cast<std::size_t>(shapes[g].type)]) needed[g] = true;
   }
-  any_fcl_pair = any_fcl_pair || rule != nullptr;
   for (int g = 0; g < n; ++g) {
-    objects.push_back(needed[g] ? std::make_unique<TrackedObject>(makeFclGeometry(shapes[g]))
-                                : nullptr);
-    if (objects.back())
-      objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(g)));
+    narrowphase_reaches_fcl = narrowphase_reaches_fcl || needed[g];
+    objects.push_back(
+        needed[g] ? std::make_unique<fcl::CollisionObjectd>(makeFclGeometry(shapes[g])) : nullptr);
   }
+  any_fcl_pair = narrowphase_reaches_fcl;
   request = fcl::CollisionRequestd(static_cast<std::size_t>(options.max_points_per_pair), true);
   if (!options.broadphase) return;
-  std::vector<fcl::CollisionObjectd*> raw;
   std::vector<int> planes;
+  boxes.resize(static_cast<std::size_t>(n));
+  mesh_local.resize(static_cast<std::size_t>(n));
+  has_mesh_local.assign(static_cast<std::size_t>(n), 0);
   for (int g = 0; g < n; ++g) {
-    if (shapes[g].type != ShapeType::kHalfSpace)
-      raw.push_back(objects[g].get());
-    else
+    if (shapes[g].type == ShapeType::kHalfSpace) {
       planes.push_back(g);
+      continue;
+    }
+    bounded.push_back(g);
+    if (shapes[g].mesh && shapes[g].mesh->vertices.size() > 64) {
+      Aabb& local = mesh_local[static_cast<std::size_t>(g)];
+      local.lo = local.hi = shapes[g].mesh->vertices.front();
+      for (const Eigen::Vector3d& v : shapes[g].mesh->vertices) {
+        local.lo = local.lo.cwiseMin(v);
+        local.hi = local.hi.cwiseMax(v);
+      }
+      has_mesh_local[static_cast<std::size_t>(g)] = 1;
+    }
   }
   if (rule) {
     for (int h : planes)
@@ -470,8 +498,6 @@ void CollisionDetector::Impl::setUp() {
       if (shapes[c.a].type == ShapeType::kHalfSpace || shapes[c.b].type == ShapeType::kHalfSpace)
         unbounded.push_back(c);
   }
-  manager.registerObjects(raw);
-  manager.setup();
 }
 
 CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
@@ -521,7 +547,10 @@ bool CollisionDetector::watchQueries(double limit_seconds,
 }
 
 void CollisionDetector::setTiming(bool timing) { impl_->timing = timing; }
-void CollisionDetector::setThreads(int threads) { impl_->threads = std::max(1, threads); }
+void CollisionDetector::setThreads(int threads) {
+  impl_->threads = std::max(1, threads);
+  impl_->grid.setThreads(impl_->threads);
+}
 double CollisionDetector::fclSeconds() const { return impl_->fcl_seconds; }
 void CollisionDetector::setFclScopeHook(FclScopeHook hook) {
   fcl_scope_hook.store(hook, std::memory_order_relaxed);
@@ -531,31 +560,23 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
                                std::vector<ContactPoint>& out) {
   Impl& m = *impl_;
   out.clear();
-  if (m.any_fcl_pair || m.options.broadphase) {
-    for (std::size_t g = 0; g < m.objects.size(); ++g) {
-      if (!m.objects[g]) continue;
-      m.objects[g]->setTransform(poses[g]);
-      if (m.options.broadphase && m.shapes[g].type != ShapeType::kHalfSpace)
-        m.objects[g]->updateAabb(m.shapes[g], poses[g]);
-    }
-  }
+  if (m.any_fcl_pair)
+    for (std::size_t g = 0; g < m.objects.size(); ++g)
+      if (m.objects[g]) m.objects[g]->setTransform(poses[g]);
   if (!m.options.broadphase) {
     m.narrowphaseAll(m.listed, poses, out);
     return;
   }
+  constexpr std::size_t kBoxesPerThread = 512;
+  parallelFor(m.bounded.size(), threadsFor(m.bounded.size(), m.threads, kBoxesPerThread),
+              [&m, poses](std::size_t k) {
+                const auto g = static_cast<std::size_t>(m.bounded[k]);
+                m.boxes[g] = worldBox(m.shapes[g], poses[g],
+                                      m.has_mesh_local[g] ? &m.mesh_local[g] : nullptr);
+              });
+  m.grid.overlappingPairs(m.boxes, m.bounded, m.close_pairs);
   m.candidates.assign(m.unbounded.begin(), m.unbounded.end());
-  {
-    const FclScope scope(m.timing ? &m.fcl_seconds : nullptr);
-    m.manager.update();
-    m.manager.collide(&m, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* d) {
-      const FclCallback ours;
-      auto* self = static_cast<Impl*>(d);
-      const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
-      const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-      self->candidateFound(a, b);
-      return false;  // keep going
-    });
-  }
+  for (const auto& [g, h] : m.close_pairs) m.candidateFound(g, h);
   std::sort(m.candidates.begin(), m.candidates.end(),  // deterministic order
             [](const Candidate& x, const Candidate& y) { return x.id < y.id; });
   m.narrowphaseAll(m.candidates, poses, out);

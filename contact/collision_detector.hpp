@@ -1,20 +1,23 @@
 // Collision detection over a fixed set of geometries and their pairs: the one place FCL is
-// used (behind a pimpl, so no FCL type leaks into Tribo headers). Pairs are either listed
-// (pair id = index in the list) or decided on demand by a PairRule (automatic contacts):
-// then only the pairs the broadphase reports close are looked at, and nothing is kept per
-// geometry pair, so memory and set-up are linear in the geometries.
+// used (behind a pimpl, so no FCL type leaks into Tribo headers), for the narrowphase only. Pairs
+// are either listed (pair id = index in the list) or decided on demand by a PairRule (automatic
+// contacts): then only the pairs the broadphase reports close are looked at, and nothing is kept
+// per geometry pair, so memory and set-up are linear in the geometries.
 //
 // Each pair (A, B) yields contact points with the normal from A into B. Pairs with a closed
 // form (contact/primitive_contacts.hpp: any shape on a half-space, sphere/sphere,
 // sphere/box; contact/box_box_contacts.hpp: box/box; contact/box_round_contacts.hpp:
-// capsule/box, and cylinder/box where the cylinder rests on one face) use it unless switched
-// off; every other pair (cylinder, capsule, cone, convex and triangle meshes among
-// themselves, a cylinder over a box edge) goes to FCL's narrowphase (libccd GJK/EPA, FCL's
-// box/box manifold when the closed forms are off, BVH traversal for meshes), at most
+// capsule/box, and cylinder/box where the cylinder rests on one face;
+// contact/round_contacts.hpp: sphere/capsule, capsule/capsule) use it unless switched off;
+// every other pair (cylinder, cone, convex and triangle meshes with each other and with
+// spheres and capsules, a cylinder over a box edge) goes to FCL's narrowphase (libccd GJK/EPA,
+// FCL's box/box manifold when the closed forms are off, BVH traversal for meshes), at most
 // `max_points_per_pair` points. A convex mesh with a box or a convex mesh grows EPA's single
 // point into the face manifold (contact/polyhedron_contacts.hpp) unless switched off. With
-// `broadphase` on, FCL's dynamic AABB tree culls the pairs first; half-spaces stay out of
-// the tree (their AABB is infinite) and their pairs are always tested.
+// `broadphase` on, a hashed uniform grid over the geometries' tight world boxes culls the
+// pairs first (contact/broadphase.hpp); half-spaces stay out of it (their box is infinite)
+// and their pairs are always tested. FCL objects exist only for geometries its narrowphase
+// may be asked about: a scene of boxes, spheres, capsules and half-spaces never calls FCL.
 // Does not allocate once its buffers have grown to their working size; FCL's narrowphase
 // may (libccd's EPA, the box/box manifold), which a test hook brackets.
 // Not here: forces, materials, which pairs exist (the model builder), contact identity
@@ -35,10 +38,11 @@
 namespace tribo::contact {
 
 struct CollisionOptions {
-  bool broadphase = false;                // cull pairs with FCL's dynamic AABB tree
+  bool broadphase = false;                // cull pairs with the grid (contact/broadphase.hpp)
   bool closed_form_box_halfspace = true;  // exact corners instead of FCL's single point
   // Other closed forms: primitive_contacts.hpp, box/box (box_box_contacts.hpp), capsule/box and
-  // cylinder/box (box_round_contacts.hpp). Off: those pairs go to FCL.
+  // cylinder/box (box_round_contacts.hpp), sphere/capsule and capsule/capsule
+  // (round_contacts.hpp). Off: those pairs go to FCL.
   bool closed_form_primitives = true;
   // Convex meshes resting on boxes or on each other: the face manifold around FCL's single
   // GJK/EPA point (contact/polyhedron_contacts.hpp).
@@ -95,16 +99,14 @@ class CollisionDetector {
   // forms); returns whether it was. Call before the first detect(), at most once.
   bool watchQueries(double limit_seconds, QueryWatchdog::OverrunHandler on_overrun);
 
-  // Wall time spent inside FCL (broadphase and FCL narrowphase) since construction [s];
+  // Wall time spent inside FCL's narrowphase since construction [s];
   // measured only when `timing` is on (it costs two clock reads per call).
   void setTiming(bool timing);
   double fclSeconds() const;
 
   // Test hook, process-wide: when set, called with true right before and false right after
-  // every call into FCL (broadphase update and collide, FCL narrowphase collide), so a test
-  // can tell FCL's own heap use from Tribo's (tests/core/allocation_test.cpp). Tribo code
-  // that FCL calls back (the broadphase pair callback) runs outside the bracket. Null (the
-  // default): nothing is called.
+  // every call into FCL's narrowphase collide, so a test can tell FCL's own heap use from
+  // Tribo's (tests/core/allocation_test.cpp). Null (the default): nothing is called.
   using FclScopeHook = void (*)(bool inside);
   static void setFclScopeHook(FclScopeHook hook);
 

@@ -7,7 +7,7 @@
 // Seconds are summed over every evaluation since profiling was switched on (an integrator
 // makes 1-4 or more per step), read from std::chrono::steady_clock with one clock read per
 // stage boundary (StageClock). Off (the default), nothing is timed and no clock is read.
-// `fcl` is the part of `detect` spent inside FCL (broadphase and FCL narrowphase); `step`
+// `fcl` is the part of `detect` spent inside FCL's narrowphase; `step`
 // is whole Simulator::step calls, so step minus the stages is the integrator's own work,
 // the divergence checks and the energy guard (an evaluation asked for by Simulator::current
 // outside a step is in its stages but not in `step`).

@@ -167,7 +167,8 @@ TEST(QueryWatchdog, OnlyPairsThatReachFclAreWatched) {
       {{Shape::halfSpace(), box, Shape::capsule(0.1, 0.5)}, false},
       {{Shape::halfSpace(), Shape::cylinder(0.2, 0.3)}, false},  // on a half-space
       {{box, Shape::cylinder(0.2, 0.3)}, true},                  // box edge: FCL
-      {{Shape::sphere(0.5), Shape::capsule(0.1, 0.5)}, true},
+      {{Shape::sphere(0.5), Shape::capsule(0.1, 0.5), Shape::capsule(0.2, 0.1)}, false},
+      {{Shape::sphere(0.5), Shape::cylinder(0.1, 0.5)}, true},  // no round closed form
       {{Shape::halfSpace(), Shape::convexMesh(hull)}, false},
       {{Shape::convexMesh(hull), Shape::convexMesh(hull)}, true},  // a type with itself
       {{Shape::halfSpace(), Shape::convexMesh(hull), box}, true}};

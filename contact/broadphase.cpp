@@ -1,0 +1,219 @@
+#include "contact/broadphase.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/parallel_range.hpp"
+
+namespace tribo::contact {
+
+namespace {
+
+constexpr double kCellLimit = 1073741824.0;  // 2^30: cell coordinates stay within int32
+
+// Cell coordinates of x, or false when they leave +-2^30 or x is not finite.
+bool cellOf(const Eigen::Vector3d& x, double inv_cell, std::int32_t out[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const double c = std::floor(x[i] * inv_cell);
+    if (!(std::abs(c) < kCellLimit)) return false;
+    out[i] = static_cast<std::int32_t>(c);
+  }
+  return true;
+}
+
+// Teschner et al. (2003): the cell's coordinates times three large primes, xor-ed.
+std::uint32_t bucketOf(const std::int32_t cell[3], std::uint32_t mask) {
+  const auto h = (static_cast<std::uint32_t>(cell[0]) * 73856093u) ^
+                 (static_cast<std::uint32_t>(cell[1]) * 19349663u) ^
+                 (static_cast<std::uint32_t>(cell[2]) * 83492791u);
+  return (h ^ (h >> 16)) & mask;
+}
+
+double largestExtent(const Aabb& b) { return (b.hi - b.lo).maxCoeff(); }
+
+}  // namespace
+
+void GridBroadphase::chooseCell(std::span<const Aabb> boxes, std::span<const int> members) {
+  std::vector<double> extents;
+  extents.reserve(members.size());
+  for (const int g : members) {
+    const double e = largestExtent(boxes[static_cast<std::size_t>(g)]);
+    if (e > 0.0 && std::isfinite(e)) extents.push_back(e);
+  }
+  if (extents.empty()) {
+    cell_ = 1.0;
+    return;
+  }
+  const auto middle = extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2);
+  std::nth_element(extents.begin(), middle, extents.end());
+  cell_ = cell_scale_ * *middle;
+}
+
+void GridBroadphase::pairsInBuckets(std::size_t first, std::size_t last,
+                                    std::span<const Aabb> boxes, std::span<const int> members,
+                                    std::vector<std::pair<int, int>>& out) const {
+  const double inv_cell = 1.0 / cell_;
+  for (std::size_t b = first; b < last; ++b) {
+    const std::uint32_t end = bucket_start_[b + 1];
+    for (std::uint32_t i = bucket_start_[b]; i < end; ++i) {
+      const Entry& ei = sorted_[i];
+      const int g = members[static_cast<std::size_t>(ei.member)];
+      const Aabb& bg = boxes[static_cast<std::size_t>(g)];
+      for (std::uint32_t j = i + 1; j < end; ++j) {
+        const Entry& ej = sorted_[j];
+        if (ei.cell[0] != ej.cell[0] || ei.cell[1] != ej.cell[1] || ei.cell[2] != ej.cell[2])
+          continue;  // another cell in the same bucket
+        const int h = members[static_cast<std::size_t>(ej.member)];
+        const Aabb& bh = boxes[static_cast<std::size_t>(h)];
+        if (!overlaps(bg, bh)) continue;
+        // Report from the cell of the overlap's lower corner only.
+        std::int32_t owner[3];
+        if (!cellOf(bg.lo.cwiseMax(bh.lo), inv_cell, owner)) continue;
+        if (owner[0] != ei.cell[0] || owner[1] != ei.cell[1] || owner[2] != ei.cell[2]) continue;
+        out.emplace_back(std::min(g, h), std::max(g, h));
+      }
+    }
+  }
+}
+
+void GridBroadphase::overlappingPairs(std::span<const Aabb> boxes, std::span<const int> members,
+                                      std::vector<std::pair<int, int>>& pairs) {
+  pairs.clear();
+  if (members.empty()) return;
+  if (cell_ == 0.0) chooseCell(boxes, members);
+  const double inv_cell = 1.0 / cell_;
+
+  // Each box's cell range; the cells (and so the buckets) are rebuilt only when one changed
+  // since the last call or the members are others: a resting scene keeps its buckets and
+  // only repeats the box tests.
+  bool same =
+      std::equal(members.begin(), members.end(), last_members_.begin(), last_members_.end());
+  ranges_.resize(members.size());
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const Aabb& b = boxes[static_cast<std::size_t>(members[k])];
+    CellRange r;
+    bool aside = !cellOf(b.lo, inv_cell, r.lo) || !cellOf(b.hi, inv_cell, r.hi);
+    if (!aside) {
+      const double cells = (static_cast<double>(r.hi[0]) - r.lo[0] + 1) *
+                           (static_cast<double>(r.hi[1]) - r.lo[1] + 1) *
+                           (static_cast<double>(r.hi[2]) - r.lo[2] + 1);
+      aside = !(cells >= 1.0 && cells <= kMaxCellsPerBox);
+    }
+    if (aside) r = CellRange{{1, 1, 1}, {0, 0, 0}};  // empty: no cell
+    same = same && r == ranges_[k];
+    ranges_[k] = r;
+  }
+  if (!same) last_members_.assign(members.begin(), members.end());
+  if (!same) rebuild();
+  pairsFromBuckets(boxes, members, pairs);
+}
+
+void GridBroadphase::rebuild() {
+  // Entries: every cell each box covers; boxes too big or out of range aside.
+  entries_.clear();
+  aside_.clear();
+  for (std::size_t k = 0; k < ranges_.size(); ++k) {
+    const CellRange& r = ranges_[k];
+    if (r.lo[0] > r.hi[0]) {
+      aside_.push_back(static_cast<int>(k));
+      continue;
+    }
+    for (std::int32_t x = r.lo[0]; x <= r.hi[0]; ++x)
+      for (std::int32_t y = r.lo[1]; y <= r.hi[1]; ++y)
+        for (std::int32_t z = r.lo[2]; z <= r.hi[2]; ++z)
+          entries_.push_back({{x, y, z}, static_cast<std::int32_t>(k)});
+  }
+
+  // Counting sort into buckets. Dense when the cells the entries span are few (at most four
+  // per entry): bucket = the cell's index in that block, x fastest, so a scene's neighbouring
+  // boxes land in neighbouring buckets. Else hashed into at least twice as many buckets as
+  // entries (a power of two).
+  std::int32_t low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+  if (!entries_.empty())
+    for (int i = 0; i < 3; ++i) low[i] = high[i] = entries_.front().cell[i];
+  for (const Entry& e : entries_)
+    for (int i = 0; i < 3; ++i) {
+      low[i] = std::min(low[i], e.cell[i]);
+      high[i] = std::max(high[i], e.cell[i]);
+    }
+  const double span[3] = {static_cast<double>(high[0]) - low[0] + 1,
+                          static_cast<double>(high[1]) - low[1] + 1,
+                          static_cast<double>(high[2]) - low[2] + 1};
+  const bool dense =
+      span[0] * span[1] * span[2] <= 4.0 * static_cast<double>(entries_.size()) + 1024.0;
+  std::size_t buckets = 64;
+  if (dense)
+    buckets = static_cast<std::size_t>(span[0] * span[1] * span[2]);
+  else
+    while (buckets < 2 * entries_.size()) buckets *= 2;
+  const auto mask = static_cast<std::uint32_t>(buckets - 1);
+  const auto nx = static_cast<std::uint32_t>(span[0]), ny = static_cast<std::uint32_t>(span[1]);
+  bucket_start_.assign(buckets + 1, 0);
+  bucket_of_.resize(entries_.size());
+  for (std::size_t e = 0; e < entries_.size(); ++e) {
+    const std::int32_t* c = entries_[e].cell;
+    bucket_of_[e] = dense ? (static_cast<std::uint32_t>(c[2] - low[2]) * ny +
+                             static_cast<std::uint32_t>(c[1] - low[1])) *
+                                    nx +
+                                static_cast<std::uint32_t>(c[0] - low[0])
+                          : bucketOf(c, mask);
+    ++bucket_start_[bucket_of_[e] + 1];
+  }
+  for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
+  sorted_.resize(entries_.size());
+  {
+    // bucket_start_ is the write cursor of each bucket while scattering, then restored.
+    for (std::size_t e = 0; e < entries_.size(); ++e)
+      sorted_[bucket_start_[bucket_of_[e]]++] = entries_[e];
+    for (std::size_t b = buckets; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
+    bucket_start_[0] = 0;
+  }
+
+  buckets_ = buckets;
+}
+
+void GridBroadphase::pairsFromBuckets(std::span<const Aabb> boxes, std::span<const int> members,
+                                      std::vector<std::pair<int, int>>& pairs) {
+  const std::size_t buckets = buckets_;
+  // Pairs within buckets, split across threads by contiguous bucket ranges.
+  constexpr std::size_t kEntriesPerThread = 2048;
+  const int team = threadsFor(entries_.size(), threads_, kEntriesPerThread);
+  if (team <= 1) {
+    pairsInBuckets(0, buckets, boxes, members, pairs);
+  } else {
+    if (lanes_.size() < static_cast<std::size_t>(team))
+      lanes_.resize(static_cast<std::size_t>(team));
+#pragma omp parallel num_threads(team)
+    {
+      const auto t = static_cast<std::size_t>(omp_get_thread_num());
+      const auto n = static_cast<std::size_t>(omp_get_num_threads());
+      if (t == 0 && n > 1) countSplitLoop();
+      lanes_[t].clear();
+      pairsInBuckets(buckets * t / n, buckets * (t + 1) / n, boxes, members, lanes_[t]);
+    }
+    for (int t = 0; t < team; ++t)
+      pairs.insert(pairs.end(), lanes_[static_cast<std::size_t>(t)].begin(),
+                   lanes_[static_cast<std::size_t>(t)].end());
+  }
+
+  // Boxes kept aside: against every other member (aside with aside once).
+  for (std::size_t a = 0; a < aside_.size(); ++a) {
+    const auto ka = static_cast<std::size_t>(aside_[a]);
+    const int g = members[ka];
+    const Aabb& bg = boxes[static_cast<std::size_t>(g)];
+    std::size_t next_aside = 0;  // skip aside members already paired with g
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      if (next_aside < aside_.size() && static_cast<std::size_t>(aside_[next_aside]) == k) {
+        ++next_aside;
+        if (next_aside - 1 <= a) continue;  // itself, or an aside member that took g before
+      }
+      const int h = members[k];
+      if (overlaps(bg, boxes[static_cast<std::size_t>(h)]))
+        pairs.emplace_back(std::min(g, h), std::max(g, h));
+    }
+  }
+}
+
+}  // namespace tribo::contact
