@@ -54,7 +54,6 @@ void GridBroadphase::chooseCell(std::span<const Aabb> boxes, std::span<const int
 void GridBroadphase::pairsInBuckets(std::size_t first, std::size_t last,
                                     std::span<const Aabb> boxes, std::span<const int> members,
                                     std::vector<std::pair<int, int>>& out) const {
-  const double inv_cell = 1.0 / cell_;
   for (std::size_t b = first; b < last; ++b) {
     const std::uint32_t end = bucket_start_[b + 1];
     for (std::uint32_t i = bucket_start_[b]; i < end; ++i) {
@@ -65,13 +64,14 @@ void GridBroadphase::pairsInBuckets(std::size_t first, std::size_t last,
         const Entry& ej = sorted_[j];
         if (ei.cell[0] != ej.cell[0] || ei.cell[1] != ej.cell[1] || ei.cell[2] != ej.cell[2])
           continue;  // another cell in the same bucket
+        // Report from the cell of the overlap's lower corner only: floor is monotone, so its
+        // cell is the larger of the two boxes' lowest cells, axis by axis (integers only).
+        if (std::max(ei.first[0], ej.first[0]) != ei.cell[0] ||
+            std::max(ei.first[1], ej.first[1]) != ei.cell[1] ||
+            std::max(ei.first[2], ej.first[2]) != ei.cell[2])
+          continue;
         const int h = members[static_cast<std::size_t>(ej.member)];
-        const Aabb& bh = boxes[static_cast<std::size_t>(h)];
-        if (!overlaps(bg, bh)) continue;
-        // Report from the cell of the overlap's lower corner only.
-        std::int32_t owner[3];
-        if (!cellOf(bg.lo.cwiseMax(bh.lo), inv_cell, owner)) continue;
-        if (owner[0] != ei.cell[0] || owner[1] != ei.cell[1] || owner[2] != ei.cell[2]) continue;
+        if (!overlaps(bg, boxes[static_cast<std::size_t>(h)])) continue;
         out.emplace_back(std::min(g, h), std::max(g, h));
       }
     }
@@ -123,7 +123,8 @@ void GridBroadphase::rebuild() {
     for (std::int32_t x = r.lo[0]; x <= r.hi[0]; ++x)
       for (std::int32_t y = r.lo[1]; y <= r.hi[1]; ++y)
         for (std::int32_t z = r.lo[2]; z <= r.hi[2]; ++z)
-          entries_.push_back({{x, y, z}, static_cast<std::int32_t>(k)});
+          entries_.push_back(
+              {{x, y, z}, static_cast<std::int32_t>(k), {r.lo[0], r.lo[1], r.lo[2]}});
   }
 
   // Counting sort into buckets. Dense when the cells the entries span are few (at most four

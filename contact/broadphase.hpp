@@ -66,7 +66,8 @@ class GridBroadphase {
  private:
   struct Entry {
     std::int32_t cell[3];
-    std::int32_t member;  // index into `members`
+    std::int32_t member;    // index into `members`
+    std::int32_t first[3];  // the box's lowest cell
   };
   struct CellRange {
     std::int32_t lo[3], hi[3];  // lo > hi: kept aside

@@ -1,10 +1,12 @@
-// Closed-form box/box, capsule/box and cylinder/box contacts (contact/box_box_contacts.hpp,
-// contact/box_round_contacts.hpp) against FCL's narrowphase on the same poses in the same
+// Closed-form box/box, capsule/box, cylinder/box, sphere/capsule and capsule/capsule contacts
+// (contact/box_box_contacts.hpp, contact/box_round_contacts.hpp, contact/round_contacts.hpp)
+// against FCL's narrowphase on the same poses in the same
 // process: one detector per pair with closed_form_primitives on, and its baseline with it off
 // (FCL's box/box manifold, libccd GJK/EPA for capsule and cylinder), so both carry the same
 // detector overhead. Poses: a box resting flat on a bigger one (4 points), a box turned 45
 // degrees on an edge pressed into a face, two boxes crossing edge to edge, separated boxes;
-// a capsule lying on a box face and touching a box corner; a cylinder standing on a face.
+// a capsule lying on a box face and touching a box corner; a cylinder standing on a face; a
+// sphere on a capsule's side, a capsule lying along another, two capsules crossed.
 // Names: BM_Pair/<pose>/closed_form and BM_Pair/<pose>/fcl; counter points per call.
 #include <benchmark/benchmark.h>
 
@@ -60,8 +62,18 @@ Case makeCase(int which) {
                      Eigen::Vector3d::Constant(3e-5),
                  Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(),
                                                     Eigen::Vector3d(1, 1, 1)))};
-    default:  // cylinder standing on a face
+    case 6:  // cylinder standing on a face
       return {big, Shape::cylinder(0.05, 0.1), at({0, 0, 0}), at({0.05, 0, 0.2 - 3e-5})};
+    case 7:  // sphere on a capsule's side
+      return {Shape::capsule(0.05, 0.1), Shape::sphere(0.05), at({0, 0, 0}, lying),
+              at({0.03, 0, 0.1 - 3e-5})};
+    case 8:  // capsule lying along another (a line contact: 2 points)
+      return {Shape::capsule(0.05, 0.1), Shape::capsule(0.05, 0.1), at({0, 0, 0}, lying),
+              at({0.05, 0, 0.1 - 3e-5}, lying)};
+    default:  // capsules crossed at right angles
+      return {Shape::capsule(0.05, 0.1), Shape::capsule(0.05, 0.1), at({0, 0, 0}, lying),
+              at({0, 0, 0.1 - 3e-5}, Eigen::Quaterniond(Eigen::AngleAxisd(
+                                         std::numbers::pi / 2, Eigen::Vector3d::UnitX())))};
   }
 }
 
@@ -92,5 +104,8 @@ TRIBO_PAIR(3, box_box_separated);
 TRIBO_PAIR(4, capsule_box_lying);
 TRIBO_PAIR(5, capsule_box_corner);
 TRIBO_PAIR(6, cylinder_box_standing);
+TRIBO_PAIR(7, sphere_capsule_side);
+TRIBO_PAIR(8, capsule_capsule_lying);
+TRIBO_PAIR(9, capsule_capsule_crossed);
 
 }  // namespace

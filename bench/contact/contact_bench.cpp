@@ -2,8 +2,8 @@
 // pile of 200 spheres falling into a box, through the whole engine (Simulator: collision,
 // contact forces, integration, checks). Counters: contact points processed per second
 // (points per evaluation times evaluations), steps per second, the share of wall time spent
-// inside FCL (broadphase and FCL narrowphase, measured on a separate Dynamics), and for the
-// grids the resting penetration and horizontal drift after the run.
+// inside FCL's narrowphase (measured on a separate Dynamics; 0 where every pair has a closed
+// form), and for the grids the resting penetration and horizontal drift after the run.
 // Stage profile (core/stage_profile.hpp): the belt and the 20 x 20 grid with profiling on,
 // each stage's share of the step's wall time and the step in microseconds; the same run
 // with profiling off is its baseline (what the clock reads cost).
