@@ -12,11 +12,15 @@ namespace tribo::contact {
 namespace {
 
 constexpr double kCellLimit = 1073741824.0;  // 2^30: cell coordinates stay within int32
+// The grid's origin is shifted by this fraction of a cell (the golden section's), so that a
+// plane at a round coordinate, the floor z = 0 above all, is not a cell boundary that every
+// box resting on it straddles (twice the entries and the tests).
+constexpr double kCellShift = 0.381966;
 
 // Cell coordinates of x, or false when they leave +-2^30 or x is not finite.
 bool cellOf(const Eigen::Vector3d& x, double inv_cell, std::int32_t out[3]) {
   for (int i = 0; i < 3; ++i) {
-    const double c = std::floor(x[i] * inv_cell);
+    const double c = std::floor(x[i] * inv_cell + kCellShift);
     if (!(std::abs(c) < kCellLimit)) return false;
     out[i] = static_cast<std::int32_t>(c);
   }

@@ -2,7 +2,8 @@
 // narrowphase looks only at pairs that may touch (contact/collision_detector.hpp).
 //
 // A uniform grid, hashed: each box is entered in every cell of edge `c` it covers, cell
-// (i, j, k) = floor(x / c) per axis, in a bucket chosen by a spatial hash of the cell
+// (i, j, k) = floor(x / c + 0.382) per axis (shifted so that the floor z = 0 is no cell
+// boundary), in a bucket chosen by a spatial hash of the cell
 // (Teschner et al., "Optimized spatial hashing for collision detection of deformable
 // objects", VMV 2003). Two boxes of the same cell that overlap are a pair, reported only from
 // the cell holding the lower corner of their overlap (max of the two lower corners), which
