@@ -6,21 +6,13 @@
 #include "contact/parallel_range.hpp"
 #include "core/model_detector.hpp"
 #include "core/prescribed_motion.hpp"
+#include "core/stage_threads.hpp"
 
 namespace tribo {
 
 using contact::parallelFor;
 
 namespace {
-
-// A stage runs on one more thread per this many items (bodies, geometries, contact points):
-// below it the threads' start and join cost more than they save. Measured on a box grid
-// (docs/performance.md, "Two threads").
-constexpr std::size_t kItemsPerThread = 256;
-
-int stageThreads(std::size_t items, int threads) {
-  return contact::threadsFor(items, threads, kItemsPerThread);
-}
 
 // Motion of geometry g: its body's, with the geometry's surface velocity (world).
 contact::GeometryMotion motionOf(const Model& model, const State& state, const Workspace& ws,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/prescribed_motion.hpp"
+#include "core/stage_threads.hpp"
 
 namespace tribo {
 
@@ -13,38 +14,86 @@ constexpr double kFloor = 1e-9;  // [J] below this a rise is rounding noise
 
 }  // namespace
 
-EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
-                            std::vector<double>* body_energy) {
+namespace {
+
+// The terms of body b (EnergyTerms::Body); the kinetic rate only when `rate` is asked.
+EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Workspace& ws,
+                            std::size_t b, bool rate) {
+  EnergyTerms::Body t;
+  const Body& body = model.bodies[b];
+  const BodyState& s = state.bodies[b];
+  if (body.kind == BodyKind::kKinematic) {
+    const Wrench& c = ws.contact_wrench[b];
+    const Wrench& k = ws.spring_wrench[b];
+    t.power[0] =
+        (c.force + k.force).dot(s.velocity) + (c.torque + k.torque).dot(s.angular_velocity);
+    return t;
+  }
+  const Mat3& r = ws.rotation[b];
+  const Vec3 w_body = r.transpose() * s.angular_velocity;
+  t.kinetic = 0.5 * body.mass * s.velocity.squaredNorm() + 0.5 * w_body.dot(body.inertia * w_body);
+  t.gravity = -body.mass * model.options.gravity.dot(s.position);
+  // Joint constraint forces and joint elements (limits, springs, dampers, friction,
+  // drives) count as sources: their work enters or leaves through the joints.
+  int k = 0;
+  for (const Wrench* j : {&ws.constraint_wrench[b], &ws.joint_wrench[b]})
+    t.power[k++] = j->force.dot(s.velocity) + j->torque.dot(s.angular_velocity);
+  // Applied loads too (core/applied_load.hpp): F . v + T . w, T about the origin.
+  if (!model.loads.empty()) {
+    const Wrench& l = ws.load_wrench[b];
+    t.power[2] = l.force.dot(s.velocity) + l.torque.dot(s.angular_velocity);
+  }
+  if (rate && body.kind == BodyKind::kDynamic) {  // d(kinetic energy)/dt
+    const Vec3 alpha_body = r.transpose() * ws.angular_acceleration[b];
+    t.kinetic_rate = body.mass * ws.linear_acceleration[b].dot(s.velocity) +
+                     w_body.dot(body.inertia * alpha_body);
+  }
+  return t;
+}
+
+// The terms of contact point i (EnergyTerms::Point).
+EnergyTerms::Point pointTerms(const Model& model, const Workspace& ws, std::size_t i) {
+  EnergyTerms::Point t;
+  const contact::ContactRecord& c = ws.contacts[i];
+  const ContactPair& pair = ws.contact_pair[i];
+  t.elastic = model.materials[pair.material].normal.energy(c.point.depth);
+  const Vec3 f = c.force();  // on B; A gets -f
+  const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};
+  double* power[2] = {&t.power_b, &t.power_a};
+  for (int k = 0; k < 2; ++k) {
+    const auto& [geometry, sign] = sides[k];
+    const Vec3 surface = surfaceVelocityOf(model, ws.rotation, ws.surface_velocity, geometry);
+    if (surface.squaredNorm() != 0.0) *power[k] = sign * f.dot(surface);
+  }
+  return t;
+}
+
+// Fills `terms` (in parallel where the items pay for threads) and sums them in index order.
+EnergyAccount account(const Model& model, const State& state, const Workspace& ws,
+                      std::vector<double>* body_energy, int threads, EnergyTerms& terms,
+                      bool rate) {
+  const std::size_t nb = model.bodies.size(), np = ws.contacts.size();
+  terms.bodies.resize(nb);
+  terms.points.resize(np);
+  contact::parallelFor(nb, stageThreads(nb, threads), [&](std::size_t b) {
+    terms.bodies[b] = bodyTerms(model, state, ws, b, rate);
+  });
+  contact::parallelFor(np, stageThreads(np, threads),
+                       [&](std::size_t i) { terms.points[i] = pointTerms(model, ws, i); });
   EnergyAccount a;
-  const Vec3& g = model.options.gravity;
-  if (body_energy) body_energy->assign(model.bodies.size(), 0.0);
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const Body& body = model.bodies[b];
-    const BodyState& s = state.bodies[b];
-    if (body.kind == BodyKind::kKinematic) {
-      const Wrench& c = ws.contact_wrench[b];
-      const Wrench& k = ws.spring_wrench[b];
-      a.input_power -=
-          (c.force + k.force).dot(s.velocity) + (c.torque + k.torque).dot(s.angular_velocity);
+  if (body_energy) body_energy->assign(nb, 0.0);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const EnergyTerms::Body& t = terms.bodies[b];
+    if (model.bodies[b].kind == BodyKind::kKinematic) {
+      a.input_power -= t.power[0];
       continue;
     }
-    const Mat3& r = ws.rotation[b];
-    const Vec3 w_body = r.transpose() * s.angular_velocity;
-    const double kinetic =
-        0.5 * body.mass * s.velocity.squaredNorm() + 0.5 * w_body.dot(body.inertia * w_body);
-    const double gravity = -body.mass * g.dot(s.position);
-    a.kinetic += kinetic;
-    a.gravity += gravity;
-    if (body_energy) (*body_energy)[b] = kinetic + gravity;
-    // Joint constraint forces and joint elements (limits, springs, dampers, friction,
-    // drives) count as sources: their work enters or leaves through the joints.
-    for (const Wrench* j : {&ws.constraint_wrench[b], &ws.joint_wrench[b]})
-      a.input_power += j->force.dot(s.velocity) + j->torque.dot(s.angular_velocity);
-    // Applied loads too (core/applied_load.hpp): F . v + T . w, T about the origin.
-    if (!model.loads.empty()) {
-      const Wrench& l = ws.load_wrench[b];
-      a.input_power += l.force.dot(s.velocity) + l.torque.dot(s.angular_velocity);
-    }
+    a.kinetic += t.kinetic;
+    a.gravity += t.gravity;
+    if (body_energy) (*body_energy)[b] = t.kinetic + t.gravity;
+    a.input_power += t.power[0];
+    a.input_power += t.power[1];
+    if (!model.loads.empty()) a.input_power += t.power[2];
   }
   for (const SpringDamper& sp : model.springs) {
     auto end = [&](BodyIndex b, const Vec3& local) {
@@ -63,23 +112,25 @@ EnergyAccount measureEnergy(const Model& model, const State& state, const Worksp
     a.elastic += torsionalEnergy(
         spring, torsionalDeflection(spring, bodyKinematics(state, ws.rotation, spring.body_a),
                                     bodyKinematics(state, ws.rotation, spring.body_b)));
-  for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
-    const contact::ContactRecord& c = ws.contacts[i];
-    const ContactPair& pair = ws.contact_pair[i];
-    a.elastic += model.materials[pair.material].normal.energy(c.point.depth);
-    const Vec3 f = c.force();  // on B; A gets -f
-    const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};
-    for (const auto& [geometry, sign] : sides) {
-      const Vec3 surface = surfaceVelocityOf(model, ws.rotation, ws.surface_velocity, geometry);
-      if (surface.squaredNorm() == 0.0) continue;
-      a.input_power -= sign * f.dot(surface);
-    }
+  // A side without a surface speed holds +0, and x - (+0) is x bit for bit.
+  for (const EnergyTerms::Point& t : terms.points) {
+    a.elastic += t.elastic;
+    a.input_power -= t.power_b;
+    a.input_power -= t.power_a;
   }
   return a;
 }
 
-EnergyGuard::EnergyGuard(const Model& model, double modified_step)
-    : model_(&model), floor_(kFloor), modified_step_(modified_step) {
+}  // namespace
+
+EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
+                            std::vector<double>* body_energy, int threads, EnergyTerms* terms) {
+  EnergyTerms local;
+  return account(model, state, ws, body_energy, threads, terms ? *terms : local, false);
+}
+
+EnergyGuard::EnergyGuard(const Model& model, double modified_step, int threads)
+    : model_(&model), floor_(kFloor), modified_step_(modified_step), threads_(threads) {
   // The motion sources impose: the fastest kinematic body or surface (linear), the fastest
   // turning kinematic body and velocity of a joint drive (angular; drives of a prismatic
   // joint count as linear).
@@ -136,25 +187,19 @@ void EnergyGuard::markMinimum(double t, double net, const EnergyAccount& a) {
   min_body_energy_ = body_energy_;
 }
 
-double EnergyGuard::modification(const State& state, const Workspace& ws) const {
-  if (modified_step_ <= 0.0) return 0.0;
+EnergyAccount EnergyGuard::measure(const State& state, const Workspace& ws) {
+  const bool modified = modified_step_ > 0.0;
+  EnergyAccount a = account(*model_, state, ws, &body_energy_, threads_, terms_, modified);
+  if (!modified) return a;
   double rate = 0.0;  // d(kinetic energy)/dt at the state
-  for (std::size_t b = 0; b < model_->bodies.size(); ++b) {
-    const Body& body = model_->bodies[b];
-    if (body.kind != BodyKind::kDynamic) continue;
-    const BodyState& s = state.bodies[b];
-    const Mat3& r = ws.rotation[b];
-    const Vec3 w_body = r.transpose() * s.angular_velocity;
-    const Vec3 alpha_body = r.transpose() * ws.angular_acceleration[b];
-    rate += body.mass * ws.linear_acceleration[b].dot(s.velocity) +
-            w_body.dot(body.inertia * alpha_body);
-  }
-  return 0.5 * modified_step_ * rate;
+  for (std::size_t b = 0; b < model_->bodies.size(); ++b)
+    if (model_->bodies[b].kind == BodyKind::kDynamic) rate += terms_.bodies[b].kinetic_rate;
+  a.kinetic += 0.5 * modified_step_ * rate;
+  return a;
 }
 
 void EnergyGuard::reset(const State& state, const Workspace& ws) {
-  EnergyAccount a = measureEnergy(*model_, state, ws, &body_energy_);
-  a.kinetic += modification(state, ws);
+  const EnergyAccount a = measure(state, ws);
   started_ = true;
   t_ = state.time;
   power_ = a.input_power;
@@ -163,8 +208,7 @@ void EnergyGuard::reset(const State& state, const Workspace& ws) {
 }
 
 EnergyVerdict EnergyGuard::update(const State& state, const Workspace& ws) {
-  EnergyAccount a = measureEnergy(*model_, state, ws, &body_energy_);
-  a.kinetic += modification(state, ws);
+  const EnergyAccount a = measure(state, ws);
   const double dt = state.time - t_;
   work_ += 0.5 * (power_ + a.input_power) * dt;
   // The allowance |P| integrated: by the trapezoid, or for semi-implicit Euler by the larger

@@ -66,10 +66,31 @@ struct EnergyAccount {
   double total() const { return kinetic + gravity + elastic; }
 };
 
+// Each body's and each contact point's share of an account: computed per item, split across
+// `threads` when the items pay for them (core/stage_threads.hpp), then summed in index order,
+// the additions of the one-thread loop in its order, so the account is the same bit for bit
+// for any number of threads. Scratch kept between calls so that a step does not allocate.
+struct EnergyTerms {
+  struct Body {
+    double kinetic = 0.0, gravity = 0.0;
+    double power[3] = {0.0, 0.0, 0.0};  // kinematic: [0] its sources' power; dynamic: the
+                                        // joint constraint's, the joint elements', the loads'
+    double kinetic_rate = 0.0;          // m a.v + w.I_W alpha, for the modified energy
+  };
+  struct Point {
+    double elastic = 0.0;
+    double power_b = 0.0, power_a = 0.0;  // sign f.s per side, zero without a surface speed
+  };
+  std::vector<Body> bodies;
+  std::vector<Point> points;
+};
+
 // The account at `state`; `ws` must be its evaluation. If `body_energy` is given it receives
-// each body's kinetic plus gravitational energy (zero for kinematic bodies).
+// each body's kinetic plus gravitational energy (zero for kinematic bodies). `threads` > 1
+// splits the per-body and per-point terms (the same result); `terms` is scratch to reuse.
 EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
-                            std::vector<double>* body_energy = nullptr);
+                            std::vector<double>* body_energy = nullptr, int threads = 1,
+                            EnergyTerms* terms = nullptr);
 
 struct EnergyVerdict {
   bool ok = true;
@@ -81,8 +102,9 @@ struct EnergyVerdict {
 
 class EnergyGuard {
  public:
-  // `modified_step` h > 0 selects the modified energy of semi-implicit Euler at step h.
-  explicit EnergyGuard(const Model& model, double modified_step = 0.0);
+  // `modified_step` h > 0 selects the modified energy of semi-implicit Euler at step h;
+  // `threads` splits the account's terms as measureEnergy does (the verdicts do not change).
+  explicit EnergyGuard(const Model& model, double modified_step = 0.0, int threads = 1);
   // Starts watching at `state` (evaluated in `ws`).
   void reset(const State& state, const Workspace& ws);
   bool started() const { return started_; }
@@ -91,11 +113,14 @@ class EnergyGuard {
 
  private:
   void markMinimum(double t, double net, const EnergyAccount& a);
-  double modification(const State& state, const Workspace& ws) const;
+  // The account at `state`, its kinetic energy the modified one for semi-implicit Euler.
+  EnergyAccount measure(const State& state, const Workspace& ws);
 
   const Model* model_;
   double floor_ = 0.0;  // E_0 [J]
   double modified_step_ = 0.0;
+  int threads_ = 1;
+  EnergyTerms terms_;
   bool started_ = false;
   double t_ = 0.0, power_ = 0.0;        // at the last update
   double work_ = 0.0, abs_work_ = 0.0;  // integral of P_in and |P_in| since reset

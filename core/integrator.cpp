@@ -3,11 +3,20 @@
 #include <vector>
 
 #include "core/prescribed_motion.hpp"
+#include "core/stage_threads.hpp"
 #include "core/sundials_integrators.hpp"
 
 namespace tribo {
 
 namespace {
+
+// f(b) for every body b, split across the threads the scene's evaluation uses when its bodies
+// pay for them (core/stage_threads.hpp). Each body's update reads and writes only its own
+// entries, so the state is the same bit for bit for any number of threads.
+template <class F>
+void forEachBody(const Dynamics& dynamics, std::size_t bodies, F&& f) {
+  contact::parallelFor(bodies, stageThreads(bodies, dynamics.threads()), f);
+}
 
 class SemiImplicitEuler final : public Integrator {
  public:
@@ -15,13 +24,13 @@ class SemiImplicitEuler final : public Integrator {
                         bool start_is_evaluated) override {
     if (!start_is_evaluated) ++counters_.evaluations;
     const Workspace& ws = start_is_evaluated ? dynamics.workspace() : dynamics.evaluate(state);
-    for (std::size_t b = 0; b < state.bodies.size(); ++b) {
+    forEachBody(dynamics, state.bodies.size(), [&](std::size_t b) {
       BodyState& s = state.bodies[b];
       s.velocity += h * ws.linear_acceleration[b];
       s.angular_velocity += h * ws.angular_acceleration[b];
       s.position += h * s.velocity;
       s.orientation = rotateBy(s.angular_velocity, h, s.orientation);
-    }
+    });
     if (dynamics.frictionMemory().dynamic()) dynamics.stepFrictionMemory(state, h);
     state.time += h;
     ++counters_.steps;
@@ -41,7 +50,7 @@ class RungeKutta4 final : public Integrator {
     stage_ = state;
     for (int k = 0; k < 4; ++k) {
       if (k > 0) {
-        makeStage(state, rates_[k - 1], z_rates_[k - 1], kStageTime[k] * h);
+        makeStage(dynamics, state, rates_[k - 1], z_rates_[k - 1], kStageTime[k] * h);
         // Kinematic bodies along signals at the stage's time exactly, not to the stage's
         // order (their velocity's curvature would err by h^2 v'' / 8 in the slip).
         placePrescribedBodies(dynamics.model().bodies, stage_);
@@ -50,11 +59,12 @@ class RungeKutta4 final : public Integrator {
       const bool reuse = k == 0 && start_is_evaluated;
       if (!reuse) ++counters_.evaluations;
       const Workspace& ws = reuse ? dynamics.workspace() : dynamics.evaluate(at);
-      for (std::size_t b = 0; b < at.bodies.size(); ++b) {
+      std::vector<Rate>& rate = rates_[k];
+      forEachBody(dynamics, at.bodies.size(), [&](std::size_t b) {
         const BodyState& s = at.bodies[b];
-        rates_[k][b] = {s.velocity, quaternionRate(s.angular_velocity, s.orientation),
-                        ws.linear_acceleration[b], ws.angular_acceleration[b]};
-      }
+        rate[b] = {s.velocity, quaternionRate(s.angular_velocity, s.orientation),
+                   ws.linear_acceleration[b], ws.angular_acceleration[b]};
+      });
       // Dynamic friction states: their records are those of `state` in every stage.
       z_rates_[k].assign(ws.friction_state_rate.begin(), ws.friction_state_rate.end());
     }
@@ -63,7 +73,7 @@ class RungeKutta4 final : public Integrator {
       z_sum_[i] = kWeight[0] * z_rates_[0][i] + kWeight[1] * z_rates_[1][i] +
                   kWeight[2] * z_rates_[2][i] + kWeight[3] * z_rates_[3][i];
     addRates(state, z_sum_, h, state);
-    for (std::size_t b = 0; b < state.bodies.size(); ++b) {
+    forEachBody(dynamics, state.bodies.size(), [&](std::size_t b) {
       BodyState& s = state.bodies[b];
       Rate sum{};
       for (int k = 0; k < 4; ++k) {
@@ -77,7 +87,7 @@ class RungeKutta4 final : public Integrator {
       s.orientation.normalize();
       s.velocity += h * sum.dv;
       s.angular_velocity += h * sum.dw;
-    }
+    });
     state.time += h;
     ++counters_.steps;
     return {};
@@ -92,11 +102,11 @@ class RungeKutta4 final : public Integrator {
     Vec3 dw = Vec3::Zero();
   };
 
-  void makeStage(const State& base, const std::vector<Rate>& rate,
+  void makeStage(const Dynamics& dynamics, const State& base, const std::vector<Rate>& rate,
                  const std::vector<double>& z_rate, double dt) {
     stage_.time = base.time + dt;
     addRates(base, z_rate, dt, stage_);
-    for (std::size_t b = 0; b < base.bodies.size(); ++b) {
+    forEachBody(dynamics, base.bodies.size(), [&](std::size_t b) {
       const BodyState& s = base.bodies[b];
       BodyState& o = stage_.bodies[b];
       o.position = s.position + dt * rate[b].dp;
@@ -104,7 +114,7 @@ class RungeKutta4 final : public Integrator {
       o.orientation.normalize();
       o.velocity = s.velocity + dt * rate[b].dv;
       o.angular_velocity = s.angular_velocity + dt * rate[b].dw;
-    }
+    });
   }
 
   State stage_;

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "core/flush_denormals.hpp"
 #include "core/prescribed_motion.hpp"
+#include "core/stage_threads.hpp"
 
 namespace tribo {
 
@@ -120,7 +122,8 @@ StepStatus Simulator::advance() {
 EnergyGuard Simulator::makeEnergyGuard() const {
   const SimulationOptions& o = model().options;
   return EnergyGuard(model(),
-                     o.integrator == IntegratorType::kSemiImplicitEuler ? o.time_step : 0.0);
+                     o.integrator == IntegratorType::kSemiImplicitEuler ? o.time_step : 0.0,
+                     dynamics_.threads());
 }
 
 StepStatus Simulator::failed(const std::string& body, const std::string& quantity,
@@ -154,18 +157,33 @@ StepStatus Simulator::check() {
       return failed(body, "friction_state", what);
   }
   const Workspace& ws = current();
-  for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
+  // Each point's half widths of its two geometries along its normal, in parallel (+inf for a
+  // geometry no depth is too deep for, a half-space); the books below keep contact order.
+  const std::size_t n = ws.contacts.size();
+  point_extent_.resize(n);
+  contact::parallelFor(n, stageThreads(n, dynamics_.threads()), [&](std::size_t i) {
+    const ContactPair& pair = ws.contact_pair[i];
+    int k = 0;
+    for (int g : {pair.geometry_a, pair.geometry_b}) {
+      const Geometry& geometry = m.geometries[g];
+      double& extent = point_extent_[i][k++];
+      extent = std::numeric_limits<double>::infinity();
+      if (!std::isfinite(geometry.shape.size())) continue;
+      const Mat3 r = geometry.body.isWorld()
+                         ? geometry.local_pose.linear()
+                         : Mat3(ws.rotation[geometry.body.value] * geometry.local_pose.linear());
+      extent = geometry.shape.extent(r.transpose() * ws.contacts[i].point.normal);
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i) {
     const contact::ContactRecord& c = ws.contacts[i];
     const ContactPair& pair = ws.contact_pair[i];
     // Deeper than the geometry's half width along the normal: a warning (recorded here,
     // worded after the run), not a stop; a contact that is failing shows as energy rising.
-    for (int g : {pair.geometry_a, pair.geometry_b}) {
-      const Geometry& geometry = m.geometries[g];
-      if (!std::isfinite(geometry.shape.size())) continue;  // no depth is too deep (half-space)
-      const Mat3 r = geometry.body.isWorld()
-                         ? geometry.local_pose.linear()
-                         : Mat3(ws.rotation[geometry.body.value] * geometry.local_pose.linear());
-      const double extent = geometry.shape.extent(r.transpose() * c.point.normal);
+    for (int k = 0; k < 2; ++k) {
+      const int g = k == 0 ? pair.geometry_a : pair.geometry_b;
+      const double extent = point_extent_[i][k];
+      if (std::isinf(extent)) continue;  // no depth is too deep (half-space)
       if (c.point.depth > extent && c.point.depth / extent > stats_.deepest_ratio) {
         if (stats_.deep_penetrations == 0) stats_.first_deep_time = state_.time;
         stats_.deepest_ratio = c.point.depth / extent;

@@ -21,11 +21,13 @@
 // (core/stability.hpp).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/dynamics.hpp"
 #include "core/energy.hpp"
@@ -131,6 +133,8 @@ class Simulator {
   long own_evaluations_ = 0;
   StepStats stats_;
   bool profiling_ = false;
+  // check(), per contact point: its geometries' half widths along the normal (A, B).
+  std::vector<std::array<double, 2>> point_extent_;
 };
 
 }  // namespace tribo

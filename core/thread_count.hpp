@@ -1,7 +1,7 @@
 // How many threads a force evaluation may use (SimulationOptions::threads): a number, or
 // kAutoThreads (0): the OpenMP default (OMP_NUM_THREADS, else one per core). Each stage of
 // Dynamics::evaluate then starts only as many as its item count pays for (one per
-// kItemsPerThread items; core/dynamics.cpp), so small scenes never start a thread; the
+// kItemsPerThread items; core/stage_threads.hpp), so small scenes never start a thread; the
 // results are the same bit for bit for any count (docs/performance.md, "Two threads").
 // A caller that already runs scenes on several threads of its own (a sweep with --jobs > 1)
 // caps the threads of every Dynamics built on its thread with ScopedThreadLimit.
