@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "friction/name_table.hpp"
@@ -65,6 +66,27 @@ double Shape::extent(const Eigen::Vector3d& n) const {
   if (type == ShapeType::kHalfSpace || type == ShapeType::kTriangleMesh || isPoint())
     return std::numeric_limits<double>::infinity();
   return 0.5 * (support(n) + support(-n));
+}
+
+double Shape::thinnestHalfWidth() const {
+  switch (type) {
+    case ShapeType::kBox:
+      return half_extents.minCoeff();
+    case ShapeType::kSphere:
+      return radius > 0.0 ? radius : std::numeric_limits<double>::infinity();
+    case ShapeType::kCapsule:
+      return radius;
+    case ShapeType::kCylinder:
+      return std::min(radius, half_length);
+    case ShapeType::kCone:
+      return std::min(radius, half_length) / std::numbers::sqrt2;
+    case ShapeType::kConvexMesh:
+      return 0.0;
+    case ShapeType::kHalfSpace:
+    case ShapeType::kTriangleMesh:
+      return std::numeric_limits<double>::infinity();
+  }
+  return 0.0;
 }
 
 double Shape::support(const Eigen::Vector3d& d) const {

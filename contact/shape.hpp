@@ -101,6 +101,13 @@ struct Shape {
   // the shape (a cylinder on its rim: its radius; on a face: half its length). Infinite for
   // a half-space, a triangle mesh and a point.
   double extent(const Eigen::Vector3d& n) const;
+  // A lower bound of extent(n) over every unit direction n [m], so that a contact shallower
+  // than it needs no extent(n) at all: a box's smallest half extent; a sphere's and a
+  // capsule's radius; a cylinder's smaller of radius and half length (its width along n is
+  // at least that times |n_z| + |n_xy| >= 1); a cone's that over sqrt 2 (its base disc and
+  // its height bound its width by 2 r |n_xy| and 2 h |n_z|). Zero for a convex mesh (no
+  // bound is derived: its extent is always evaluated); infinite where extent is.
+  double thinnestHalfWidth() const;
   bool isPoint() const { return type == ShapeType::kSphere && radius == 0.0; }
   // The shape's points farthest along -n would be the first to touch a plane with outward
   // normal n: its support distance h(d) = max over the shape of d . x (geometry frame).

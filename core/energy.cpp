@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "core/prescribed_motion.hpp"
 #include "core/stage_threads.hpp"
@@ -68,22 +70,31 @@ EnergyTerms::Point pointTerms(const Model& model, const Workspace& ws, std::size
   return t;
 }
 
-// Fills `terms` (in parallel where the items pay for threads) and sums them in index order.
+// Sums the terms in index order. Where the items pay for threads, `terms` is filled in
+// parallel first; on one thread each term is summed as it is formed (the same additions).
 EnergyAccount account(const Model& model, const State& state, const Workspace& ws,
                       std::vector<double>* body_energy, int threads, EnergyTerms& terms,
                       bool rate) {
   const std::size_t nb = model.bodies.size(), np = ws.contacts.size();
-  terms.bodies.resize(nb);
-  terms.points.resize(np);
-  contact::parallelFor(nb, stageThreads(nb, threads), [&](std::size_t b) {
-    terms.bodies[b] = bodyTerms(model, state, ws, b, rate);
-  });
-  contact::parallelFor(np, stageThreads(np, threads),
-                       [&](std::size_t i) { terms.points[i] = pointTerms(model, ws, i); });
+  const int body_threads = stageThreads(nb, threads), point_threads = stageThreads(np, threads);
+  if (body_threads > 1) {
+    terms.bodies.resize(nb);
+    contact::parallelFor(nb, body_threads, [&](std::size_t b) {
+      terms.bodies[b] = bodyTerms(model, state, ws, b, rate);
+    });
+  }
+  if (point_threads > 1) {
+    terms.points.resize(np);
+    contact::parallelFor(np, point_threads,
+                         [&](std::size_t i) { terms.points[i] = pointTerms(model, ws, i); });
+  }
   EnergyAccount a;
   if (body_energy) body_energy->assign(nb, 0.0);
+  if (rate) terms.rates.resize(nb);
   for (std::size_t b = 0; b < nb; ++b) {
-    const EnergyTerms::Body& t = terms.bodies[b];
+    const EnergyTerms::Body t =
+        body_threads > 1 ? terms.bodies[b] : bodyTerms(model, state, ws, b, rate);
+    if (rate) terms.rates[b] = t.kinetic_rate;
     if (model.bodies[b].kind == BodyKind::kKinematic) {
       a.input_power -= t.power[0];
       continue;
@@ -113,7 +124,8 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
         spring, torsionalDeflection(spring, bodyKinematics(state, ws.rotation, spring.body_a),
                                     bodyKinematics(state, ws.rotation, spring.body_b)));
   // A side without a surface speed holds +0, and x - (+0) is x bit for bit.
-  for (const EnergyTerms::Point& t : terms.points) {
+  for (std::size_t i = 0; i < np; ++i) {
+    const EnergyTerms::Point t = point_threads > 1 ? terms.points[i] : pointTerms(model, ws, i);
     a.elastic += t.elastic;
     a.input_power -= t.power_b;
     a.input_power -= t.power_a;
@@ -160,17 +172,21 @@ EnergyGuard::EnergyGuard(const Model& model, double modified_step, int threads)
     double& s = size[g.body.value];
     s = s > 0.0 ? std::min(s, half) : half;
   }
+  // The turning sources: each kinematic body's position and largest spin (listed once, so
+  // that the floor costs bodies x sources, not bodies^2).
+  std::vector<std::pair<Vec3, double>> turning;
+  for (const Body& k : model.bodies)
+    if (k.kind == BodyKind::kKinematic)
+      turning.emplace_back(k.position, k.motion ? k.motion->spinBound(model.options.duration)
+                                                : k.angular_velocity.norm());
   const double g = model.options.gravity.norm();
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
     if (body.kind != BodyKind::kDynamic) continue;
     // A turning source drives a body at up to spin |x_b - x_K| through whatever links them.
     double reach = 0.0;
-    for (const Body& k : model.bodies)
-      if (k.kind == BodyKind::kKinematic)
-        reach = std::max(reach, (k.motion ? k.motion->spinBound(model.options.duration)
-                                          : k.angular_velocity.norm()) *
-                                    (body.position - k.position).norm());
+    for (const auto& [position, source_spin] : turning)
+      reach = std::max(reach, source_spin * (body.position - position).norm());
     const double v = speed + reach;
     floor_ += body.mass * (g * size[b] + 0.5 * v * v) +
               0.5 * body.inertia.diagonal().maxCoeff() * spin * spin;
@@ -193,7 +209,7 @@ EnergyAccount EnergyGuard::measure(const State& state, const Workspace& ws) {
   if (!modified) return a;
   double rate = 0.0;  // d(kinetic energy)/dt at the state
   for (std::size_t b = 0; b < model_->bodies.size(); ++b)
-    if (model_->bodies[b].kind == BodyKind::kDynamic) rate += terms_.bodies[b].kinetic_rate;
+    if (model_->bodies[b].kind == BodyKind::kDynamic) rate += terms_.rates[b];
   a.kinetic += 0.5 * modified_step_ * rate;
   return a;
 }

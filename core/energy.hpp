@@ -69,7 +69,8 @@ struct EnergyAccount {
 // Each body's and each contact point's share of an account: computed per item, split across
 // `threads` when the items pay for them (core/stage_threads.hpp), then summed in index order,
 // the additions of the one-thread loop in its order, so the account is the same bit for bit
-// for any number of threads. Scratch kept between calls so that a step does not allocate.
+// for any number of threads (on one thread each term is summed as it is formed). Scratch kept
+// between calls so that a step does not allocate.
 struct EnergyTerms {
   struct Body {
     double kinetic = 0.0, gravity = 0.0;
@@ -81,8 +82,9 @@ struct EnergyTerms {
     double elastic = 0.0;
     double power_b = 0.0, power_a = 0.0;  // sign f.s per side, zero without a surface speed
   };
-  std::vector<Body> bodies;
-  std::vector<Point> points;
+  std::vector<Body> bodies;   // filled only when the bodies split across threads
+  std::vector<Point> points;  // likewise the points
+  std::vector<double> rates;  // each body's kinetic_rate, when asked for
 };
 
 // The account at `state`; `ws` must be its evaluation. If `body_energy` is given it receives

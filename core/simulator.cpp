@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "core/flush_denormals.hpp"
 #include "core/prescribed_motion.hpp"
-#include "core/stage_threads.hpp"
 
 namespace tribo {
 
@@ -19,7 +17,11 @@ Simulator::Simulator(std::shared_ptr<const Model> model)
       integrator_(makeIntegrator(dynamics_.model().options.integrator, dynamics_.model())),
       state_(dynamics_.initialState()),
       last_good_(state_),
-      energy_(makeEnergyGuard()) {}
+      energy_(makeEnergyGuard()) {
+  thinnest_.reserve(dynamics_.model().geometries.size());
+  for (const Geometry& g : dynamics_.model().geometries)
+    thinnest_.push_back(g.shape.thinnestHalfWidth());
+}
 
 void Simulator::setState(const State& state) {
   state_ = state;
@@ -134,6 +136,19 @@ StepStatus Simulator::failed(const std::string& body, const std::string& quantit
   return {false, s.str(), t, body, quantity, false};
 }
 
+namespace {
+
+// Geometry g's half width along contact point i's normal (Shape::extent).
+double halfWidth(const Model& m, const Workspace& ws, std::size_t i, int g) {
+  const Geometry& geometry = m.geometries[static_cast<std::size_t>(g)];
+  const Mat3 r = geometry.body.isWorld()
+                     ? geometry.local_pose.linear()
+                     : Mat3(ws.rotation[geometry.body.value] * geometry.local_pose.linear());
+  return geometry.shape.extent(r.transpose() * ws.contacts[i].point.normal);
+}
+
+}  // namespace
+
 StepStatus Simulator::check() {
   const Model& m = model();
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
@@ -157,33 +172,15 @@ StepStatus Simulator::check() {
       return failed(body, "friction_state", what);
   }
   const Workspace& ws = current();
-  // Each point's half widths of its two geometries along its normal, in parallel (+inf for a
-  // geometry no depth is too deep for, a half-space); the books below keep contact order.
-  const std::size_t n = ws.contacts.size();
-  point_extent_.resize(n);
-  contact::parallelFor(n, stageThreads(n, dynamics_.threads()), [&](std::size_t i) {
-    const ContactPair& pair = ws.contact_pair[i];
-    int k = 0;
-    for (int g : {pair.geometry_a, pair.geometry_b}) {
-      const Geometry& geometry = m.geometries[g];
-      double& extent = point_extent_[i][k++];
-      extent = std::numeric_limits<double>::infinity();
-      if (!std::isfinite(geometry.shape.size())) continue;
-      const Mat3 r = geometry.body.isWorld()
-                         ? geometry.local_pose.linear()
-                         : Mat3(ws.rotation[geometry.body.value] * geometry.local_pose.linear());
-      extent = geometry.shape.extent(r.transpose() * ws.contacts[i].point.normal);
-    }
-  });
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
     const contact::ContactRecord& c = ws.contacts[i];
     const ContactPair& pair = ws.contact_pair[i];
     // Deeper than the geometry's half width along the normal: a warning (recorded here,
     // worded after the run), not a stop; a contact that is failing shows as energy rising.
-    for (int k = 0; k < 2; ++k) {
-      const int g = k == 0 ? pair.geometry_a : pair.geometry_b;
-      const double extent = point_extent_[i][k];
-      if (std::isinf(extent)) continue;  // no depth is too deep (half-space)
+    // No shallower contact needs the width (Shape::thinnestHalfWidth bounds it from below).
+    for (int g : {pair.geometry_a, pair.geometry_b}) {
+      if (!(c.point.depth > thinnest_[static_cast<std::size_t>(g)])) continue;
+      const double extent = halfWidth(m, ws, i, g);
       if (c.point.depth > extent && c.point.depth / extent > stats_.deepest_ratio) {
         if (stats_.deep_penetrations == 0) stats_.first_deep_time = state_.time;
         stats_.deepest_ratio = c.point.depth / extent;

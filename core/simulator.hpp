@@ -21,7 +21,6 @@
 // (core/stability.hpp).
 #pragma once
 
-#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -133,8 +132,9 @@ class Simulator {
   long own_evaluations_ = 0;
   StepStats stats_;
   bool profiling_ = false;
-  // check(), per contact point: its geometries' half widths along the normal (A, B).
-  std::vector<std::array<double, 2>> point_extent_;
+  // Per geometry: no contact shallower than this is deeper than its half width
+  // (contact::Shape::thinnestHalfWidth); check() measures the width only past it.
+  std::vector<double> thinnest_;
 };
 
 }  // namespace tribo

@@ -1,7 +1,8 @@
 // The work of a step outside the force evaluation, split across threads: the energy account
-// (core/energy.hpp: each body's and contact point's terms in parallel, summed in index order),
-// the energy guard built on it, and the simulator's per-point half widths for the deep
-// penetration books (core/simulator.cpp). The integrators' per-body updates split too; their
+// (core/energy.hpp: each body's and contact point's terms in parallel, summed in index order)
+// and the energy guard built on it; and the simulator's deep-penetration books, which now
+// measure a half width only past the shape's thinnest (core/simulator.cpp). The integrators'
+// per-body updates split too; their
 // trajectories are compared in tests/core/threaded_evaluation_test.cpp. Here, on 1, 2 and 3
 // threads, over box fields of several sizes and masses on a moving belt with applied loads:
 //   - the account is the same bit for bit, and equals sums the test forms on its own
