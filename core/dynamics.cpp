@@ -171,9 +171,11 @@ void Dynamics::detect() {
   detector_.detect(ws_.geometry_poses, ws_.contact_points);
   ws_.contacts.resize(ws_.contact_points.size());
   // Each point's pair once (with automatic contacts it is derived from the id).
-  ws_.contact_pair.resize(ws_.contact_points.size());
-  for (std::size_t i = 0; i < ws_.contact_points.size(); ++i)
+  const std::size_t n = ws_.contact_points.size();
+  ws_.contact_pair.resize(n);
+  parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
     ws_.contact_pair[i] = model_->contactPair(ws_.contact_points[i].pair);
+  });
 }
 
 void Dynamics::contactKinematics(const State& state) {
