@@ -70,23 +70,13 @@ double Shape::extent(const Eigen::Vector3d& n) const {
 
 double Shape::thinnestHalfWidth() const {
   switch (type) {
-    case ShapeType::kBox:
-      return half_extents.minCoeff();
-    case ShapeType::kSphere:
-      return radius > 0.0 ? radius : std::numeric_limits<double>::infinity();
-    case ShapeType::kCapsule:
-      return radius;
-    case ShapeType::kCylinder:
-      return std::min(radius, half_length);
     case ShapeType::kCone:
-      return std::min(radius, half_length) / std::numbers::sqrt2;
+      return size() / std::numbers::sqrt2;
     case ShapeType::kConvexMesh:
       return 0.0;
-    case ShapeType::kHalfSpace:
-    case ShapeType::kTriangleMesh:
-      return std::numeric_limits<double>::infinity();
+    default:  // the smallest half dimension bounds the width in every direction
+      return size();
   }
-  return 0.0;
 }
 
 double Shape::support(const Eigen::Vector3d& d) const {
