@@ -45,7 +45,7 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
     const Wrench& l = ws.load_wrench[b];
     t.power[2] = l.force.dot(s.velocity) + l.torque.dot(s.angular_velocity);
   }
-  if (rate && body.kind == BodyKind::kDynamic) {  // d(kinetic energy)/dt
+  if (rate) {  // d(kinetic energy)/dt
     const Vec3 alpha_body = r.transpose() * ws.angular_acceleration[b];
     t.kinetic_rate = body.mass * ws.linear_acceleration[b].dot(s.velocity) +
                      w_body.dot(body.inertia * alpha_body);
@@ -72,9 +72,11 @@ EnergyTerms::Point pointTerms(const Model& model, const Workspace& ws, std::size
 
 // Sums the terms in index order. Where the items pay for threads, `terms` is filled in
 // parallel first; on one thread each term is summed as it is formed (the same additions).
+// With `kinetic_rate`, also the sum over dynamic bodies of d(kinetic energy)/dt.
 EnergyAccount account(const Model& model, const State& state, const Workspace& ws,
                       std::vector<double>* body_energy, int threads, EnergyTerms& terms,
-                      bool rate) {
+                      double* kinetic_rate) {
+  const bool rate = kinetic_rate != nullptr;
   const std::size_t nb = model.bodies.size(), np = ws.contacts.size();
   const int body_threads = stageThreads(nb, threads), point_threads = stageThreads(np, threads);
   if (body_threads > 1) {
@@ -90,17 +92,17 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
   }
   EnergyAccount a;
   if (body_energy) body_energy->assign(nb, 0.0);
-  if (rate) terms.rates.resize(nb);
+  if (rate) *kinetic_rate = 0.0;
   for (std::size_t b = 0; b < nb; ++b) {
     const EnergyTerms::Body t =
         body_threads > 1 ? terms.bodies[b] : bodyTerms(model, state, ws, b, rate);
-    if (rate) terms.rates[b] = t.kinetic_rate;
     if (model.bodies[b].kind == BodyKind::kKinematic) {
       a.input_power -= t.power[0];
       continue;
     }
     a.kinetic += t.kinetic;
     a.gravity += t.gravity;
+    if (rate) *kinetic_rate += t.kinetic_rate;
     if (body_energy) (*body_energy)[b] = t.kinetic + t.gravity;
     a.input_power += t.power[0];
     a.input_power += t.power[1];
@@ -136,9 +138,9 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
 }  // namespace
 
 EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
-                            std::vector<double>* body_energy, int threads, EnergyTerms* terms) {
-  EnergyTerms local;
-  return account(model, state, ws, body_energy, threads, terms ? *terms : local, false);
+                            std::vector<double>* body_energy, int threads) {
+  EnergyTerms terms;
+  return account(model, state, ws, body_energy, threads, terms, nullptr);
 }
 
 EnergyGuard::EnergyGuard(const Model& model, double modified_step, int threads)
@@ -204,12 +206,10 @@ void EnergyGuard::markMinimum(double t, double net, const EnergyAccount& a) {
 }
 
 EnergyAccount EnergyGuard::measure(const State& state, const Workspace& ws) {
-  const bool modified = modified_step_ > 0.0;
-  EnergyAccount a = account(*model_, state, ws, &body_energy_, threads_, terms_, modified);
-  if (!modified) return a;
+  if (modified_step_ <= 0.0)
+    return account(*model_, state, ws, &body_energy_, threads_, terms_, nullptr);
   double rate = 0.0;  // d(kinetic energy)/dt at the state
-  for (std::size_t b = 0; b < model_->bodies.size(); ++b)
-    if (model_->bodies[b].kind == BodyKind::kDynamic) rate += terms_.rates[b];
+  EnergyAccount a = account(*model_, state, ws, &body_energy_, threads_, terms_, &rate);
   a.kinetic += 0.5 * modified_step_ * rate;
   return a;
 }

@@ -84,15 +84,13 @@ struct EnergyTerms {
   };
   std::vector<Body> bodies;   // filled only when the bodies split across threads
   std::vector<Point> points;  // likewise the points
-  std::vector<double> rates;  // each body's kinetic_rate, when asked for
 };
 
 // The account at `state`; `ws` must be its evaluation. If `body_energy` is given it receives
 // each body's kinetic plus gravitational energy (zero for kinematic bodies). `threads` > 1
-// splits the per-body and per-point terms (the same result); `terms` is scratch to reuse.
+// splits the per-body and per-point terms (the same result).
 EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
-                            std::vector<double>* body_energy = nullptr, int threads = 1,
-                            EnergyTerms* terms = nullptr);
+                            std::vector<double>* body_energy = nullptr, int threads = 1);
 
 struct EnergyVerdict {
   bool ok = true;

@@ -1,9 +1,8 @@
 // How many threads one per-item stage of a step starts: one per kItemsPerThread items
 // (bodies, geometries, contact points), at most the threads the scene may use. Shared by the
 // force evaluation (core/dynamics.cpp), the integrators' per-body updates
-// (core/integrator.cpp), the energy account (core/energy.cpp) and the simulator's per-step
-// checks (core/simulator.cpp), so every stage of a step splits by the same measured rule
-// (docs/performance.md, "Two threads").
+// (core/integrator.cpp) and the energy account (core/energy.cpp), so every stage of a step
+// splits by the same measured rule (docs/performance.md, "Two threads").
 // Include only from a .cpp compiled with OpenMP, as contact/parallel_range.hpp says.
 // Not here: the parallel loop itself (contact/parallel_range.hpp), the threads a scene may
 // use (core/thread_count.hpp).
