@@ -1,5 +1,7 @@
 #include "core/resting_contact.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,6 +50,50 @@ RestingFace boxFace(int box, const Eigen::Isometry3d& pose, const Vec3& h, const
 double boxSupport(const Mat3& r, const Vec3& h, const Vec3& u) {
   return h.x() * std::abs(u.dot(r.col(0))) + h.y() * std::abs(u.dot(r.col(1))) +
          h.z() * std::abs(u.dot(r.col(2)));
+}
+
+// Where a round geometry (pose, shape) touches a surface lying along the unit direction d
+// (world): the contact point (world), and for a capsule or cylinder lying on its side (its
+// axis within 1e-3 of the contact plane) that it touches along a line, its axis. None for the
+// shapes that do not roll here (a cylinder standing on a face, boxes, cones, meshes).
+struct RollingTouch {
+  Vec3 point;
+  bool line = false;
+  Vec3 axis;
+  std::array<Vec3, 2> ends;  // a line's end points (world)
+};
+
+std::optional<RollingTouch> rollingTouch(const Eigen::Isometry3d& pose, const contact::Shape& shape,
+                                         const Vec3& d) {
+  constexpr double kLying = 1e-3;  // |axis . d| below which a capsule or cylinder lies
+  const Vec3 dl = pose.linear().transpose() * d;
+  RollingTouch touch;
+  touch.axis = pose.linear().col(2);
+  Vec3 local;
+  switch (shape.type) {
+    case contact::ShapeType::kSphere:
+      local = shape.radius * dl;
+      break;
+    case contact::ShapeType::kCapsule:
+      touch.line = std::abs(dl.z()) < kLying;
+      local = shape.radius * dl;
+      if (!touch.line) local.z() += std::copysign(shape.half_length, dl.z());
+      break;
+    case contact::ShapeType::kCylinder: {
+      const double radial = std::hypot(dl.x(), dl.y());
+      if (radial < kLying) return std::nullopt;  // standing on a face
+      touch.line = std::abs(dl.z()) < kLying;
+      local = shape.radius * Vec3(dl.x(), dl.y(), 0.0) / radial;
+      if (!touch.line) local.z() = std::copysign(shape.half_length, dl.z());
+      break;
+    }
+    default:
+      return std::nullopt;
+  }
+  touch.point = pose * local;
+  for (int i = 0; i < 2; ++i)
+    touch.ends[i] = touch.point + (i == 0 ? -shape.half_length : shape.half_length) * touch.axis;
+  return touch;
 }
 
 }  // namespace
@@ -167,4 +213,66 @@ double yawPerPointStiffness(const Model& model, const TurnCheck& turns, BodyInde
   const double mean = 0.5 * (diag[0] + diag[1]), half = 0.5 * (diag[0] - diag[1]);
   return mean + std::sqrt(half * half + cross * cross);
 }
+
+RoundContact roundContact(const Model& model, const TurnCheck& turns, const ContactPair& pair,
+                          const Vec3& normal, const std::vector<int>& geometry_count) {
+  RoundContact out;
+  const Geometry* geometry[2] = {&model.geometries[pair.geometry_a],
+                                 &model.geometries[pair.geometry_b]};
+  const Eigen::Isometry3d pose[2] = {geometryPose(model, *geometry[0]),
+                                     geometryPose(model, *geometry[1])};
+  const Vec3 n = normal.normalized();
+  const Vec3 t[2] = {n.unitOrthogonal(), n.cross(n.unitOrthogonal()).normalized()};
+  Eigen::Matrix2d w = Eigen::Matrix2d::Zero();  // the bodies' turning share of w(t)
+  double inverse_mass = 0.0;                    // sum of 1/m
+  std::optional<Vec3> line_axis;
+  bool rolls = false;
+  for (int s = 0; s < 2; ++s) {
+    const BodyIndex b = geometry[s]->body;
+    if (b.isWorld() || model.bodies[b.value].kind != BodyKind::kDynamic) continue;
+    const Body& body = model.bodies[b.value];
+    inverse_mass += 1.0 / body.mass;
+    // A body touching with several geometries (a foot's corner spheres) is held like a face.
+    if (geometry_count[b.value] != 1) continue;
+    const double towards = (pose[1 - s].translation() - pose[s].translation()).dot(n);
+    if (towards == 0.0 || !std::isfinite(towards)) continue;
+    const std::optional<RollingTouch> touch =
+        rollingTouch(pose[s], geometry[s]->shape, towards > 0.0 ? n : Vec3(-n));
+    if (!touch) continue;
+    const Mat3 r = body.orientation.normalized().toRotationMatrix();
+    const Eigen::LLT<Mat3> inertia(r * body.inertia * r.transpose());
+    if (inertia.info() != Eigen::Success) continue;
+    const Vec3 arm = touch->point - body.position;
+    Eigen::Matrix<double, 3, 2> turn = Eigen::Matrix<double, 3, 2>::Zero();
+    for (int i = 0; i < 2; ++i) {
+      const Vec3 axis = arm.cross(t[i]);
+      if (axis.norm() > 0.0 && turns.canTurn(model, b, axis.normalized())) turn.col(i) = axis;
+    }
+    w += turn.transpose() * inertia.solve(turn);
+    rolls = true;
+    if (!touch->line) continue;
+    line_axis = touch->axis;
+    // Yaw on the line's two end points, as yawPerPointStiffness on a face's corners.
+    const double i_n = n.dot(r * body.inertia * r.transpose() * n);
+    if (!(i_n > 0.0) || !turns.canTurn(model, b, n)) continue;
+    out.points = 2;
+    for (const Vec3& end : touch->ends) out.yaw += n.cross(end - body.position).squaredNorm() / i_n;
+  }
+  if (!rolls || !(inverse_mass > 0.0)) return out;
+  w.diagonal().array() += inverse_mass;
+  double largest = 0.0;
+  if (line_axis) {  // rolling about the axis: the slip across it
+    const Vec3 across = line_axis->cross(n);
+    if (!(across.norm() > 0.0)) return out;
+    const Eigen::Vector2d c(across.dot(t[0]), across.dot(t[1]));
+    largest = c.dot(w * c) / c.squaredNorm();
+  } else {
+    largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(w, Eigen::EigenvaluesOnly)
+                  .eigenvalues()
+                  .maxCoeff();
+  }
+  out.slip_factor = std::max(1.0, largest / inverse_mass);
+  return out;
+}
+
 }  // namespace tribo::stability_detail

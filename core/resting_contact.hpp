@@ -1,9 +1,10 @@
 // The geometry of a contact pair at rest, for the a-priori step limit (core/stability.hpp):
 // the face a box rests on and its patch's corners, which bodies can turn about an axis or
 // slide across a contact plane without breaking a joint, and the rocking and yaw stiffness
-// of a resting face per unit stiffness of its points. Internal to core/stability.cpp.
-// Not here: the limits themselves (core/stability.cpp), rounded shapes and meshes (they get
-// no rocking or yaw mode).
+// of a resting face per unit stiffness of its points, and how much a round shape's rolling
+// lightens the slip at its contact point. Internal to core/stability.cpp.
+// Not here: the limits themselves (core/stability.cpp), rocking and yaw of rounded shapes and
+// meshes, rolling of cones and meshes.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -110,5 +111,40 @@ double rockingPerPointStiffness(const Model& model, const TurnCheck& turns, Body
 // I_n = m (a^2 + b^2) / 12). Zero when neither can turn.
 double yawPerPointStiffness(const Model& model, const TurnCheck& turns, BodyIndex a, BodyIndex b,
                             const RestingFace& face);
+
+// A round shape's contact: rolling, and the yaw of one lying on its side.
+//
+// Rolling: friction's force at a contact point of a body that touches at one point (a sphere;
+// a capsule or cylinder on an end or rim) or along a line (a capsule or cylinder lying on its
+// side, which turns about its axis only) also turns that body, which nothing else holds, so
+// the slip there meets the inverse mass
+//   w(t) = sum over the pair's bodies of 1/m + (r x t)^T I^-1 (r x t)
+// (r from the body's centre of mass to the contact point, t the slip direction in the
+// contact plane, I the world inertia about the centre of mass; the bodies' impulse response
+// at a point, e.g. Mirtich & Canny 1995, "Impulse-based simulation of rigid bodies"), not just
+// the sum of 1/m. `slip_factor` is the largest w over t times the reduced mass: the factor by
+// which friction's stiffness and damping per unit mass exceed the translation's (a solid
+// sphere on a plane: 1 + m r^2 / (2/5 m r^2) = 3.5; a solid cylinder on its side, rolling: 3);
+// 1 when neither geometry is round or can turn there.
+//
+// Yaw: a shape lying on its side touches at its line's two ends (a cylinder's rims, a
+// capsule's segment ends), whose friction turns it about the normal: `yaw` is
+// sum_i |n x (p_i - x_cm)|^2 / I_n per unit tangential stiffness of each of the `points` = 2
+// (as yawPerPointStiffness for a face's corners); 0 for a point contact (its lever is along
+// the normal).
+//
+// `normal` is the contact normal (world, either sign): the half-space's, or gravity's
+// direction. The contact point is each round geometry's support point towards the other
+// geometry's centre along the normal; a lying shape's at its middle. Only a body with one
+// geometry rolls (`geometry_count`: geometries per body): one touching with several (a foot's
+// corner spheres) is taken to be held like a face. Not here: cones, meshes, boxes on an edge
+// or corner, a body rolling on several round geometries (an axle's two wheels).
+struct RoundContact {
+  double slip_factor = 1.0;
+  double yaw = 0.0;
+  int points = 1;
+};
+RoundContact roundContact(const Model& model, const TurnCheck& turns, const ContactPair& pair,
+                          const Vec3& normal, const std::vector<int>& geometry_count);
 
 }  // namespace tribo::stability_detail

@@ -25,6 +25,8 @@ using Mat2 = Eigen::Matrix2d;
 using stability_detail::RestingFace;
 using stability_detail::restingFace;
 using stability_detail::rockingPerPointStiffness;
+using stability_detail::RoundContact;
+using stability_detail::roundContact;
 using stability_detail::TurnCheck;
 using stability_detail::yawPerPointStiffness;
 
@@ -312,7 +314,10 @@ StabilityReport estimateStableStep(const Model& model) {
           std::max(drive_speed, joint.elements.drive->signal
                                     ? joint.elements.drive->speedBound(model.options.duration)
                                     : std::abs(joint.elements.drive->velocity(0.0)));
-  std::optional<TurnCheck> turns;  // built at the first box pair
+  std::optional<TurnCheck> turns;                           // built at the first box pair
+  std::vector<int> geometry_count(model.bodies.size(), 0);  // geometries per body (rolling)
+  for (const Geometry& geometry : model.geometries)
+    if (!geometry.body.isWorld()) ++geometry_count[geometry.body.value];
   for (const ContactPair& pair : contactPairsToCheck(model)) {
     const Geometry& ga = model.geometries[pair.geometry_a];
     const Geometry& gb = model.geometries[pair.geometry_b];
@@ -395,6 +400,35 @@ StabilityReport estimateStableStep(const Model& model) {
         return e.str();
       });
     };
+    // The slip of a round shape that rolls meets the inverse mass 1/m + r^2/I, not 1/m: each
+    // friction element acting on the slip (not the state's own decay) scales by that factor.
+    const RoundContact round = [&] {
+      Vec3 normal = face ? face->normal : Vec3::Zero();
+      for (const Geometry* geometry : {&ga, &gb})
+        if (geometry->shape.type == contact::ShapeType::kHalfSpace) {
+          const Mat3 r =
+              geometry->body.isWorld()
+                  ? Mat3::Identity()
+                  : model.bodies[geometry->body.value].orientation.normalized().toRotationMatrix();
+          normal = r * geometry->local_pose.linear().col(2);
+        }
+      if (normal.isZero() && g > 0.0) normal = model.options.gravity / g;
+      if (normal.isZero()) return RoundContact{};
+      if (!turns) turns.emplace(model);
+      return roundContact(model, *turns, pair, normal, geometry_count);
+    }();
+    const double rolling = round.slip_factor;
+    // A shape lying on its side yaws on its line's two ends (per unit point stiffness on the
+    // kPoints points the load is shared on here: the two ends carry half the load each).
+    if (!face && round.yaw > 0.0 && g > 0.0) yaw = round.yaw * kPoints / round.points;
+    auto considerSlip = [&](double k, double c, auto&& what) {
+      if (rolling == 1.0) return considerFriction(k, c, what);
+      considerFriction(rolling * k, rolling * c, [&] {
+        std::ostringstream e;
+        e << what() << " x " << rolling << " (rolling: the slip's inverse mass 1/m + r^2/I)";
+        return e.str();
+      });
+    };
     // Friction: a stateful law's stick spring-damper on the same points, tangentially.
     const friction::FrictionLaw& friction_law = *mat.friction;
     // The same per-point tangential stiffness and damping turning the body about the normal.
@@ -411,7 +445,7 @@ StabilityReport estimateStableStep(const Model& model) {
       // whose update of the state is exact at frozen slip).
       const friction::DynamicFrictionLaw::Presliding p = dynamic->presliding();
       if (total > 0.0 && p.stiffness > 0.0) {
-        considerFriction(p.stiffness * total / m, p.damping * total / m, [&] {
+        considerSlip(p.stiffness * total / m, p.damping * total / m, [&] {
           return who() + " friction (" + std::string(friction_law.name()) + " presliding)";
         });
         consider_yaw(p.stiffness * load, p.damping * load, " presliding");
@@ -436,8 +470,8 @@ StabilityReport estimateStableStep(const Model& model) {
       const double v_ref = std::max(drive_speed, friction_law.stickSpeed());
       const double direct = dynamic->directSlope(v_ref);
       if (total > 0.0 && direct > 0.0 && std::isfinite(direct)) {
-        considerFriction(0.0, direct * total / m,
-                         [&] { return who() + directEffect(*dynamic, v_ref); });
+        considerSlip(0.0, direct * total / m,
+                     [&] { return who() + directEffect(*dynamic, v_ref); });
         consider_yaw(0.0, direct * load, " direct effect");
       }
       if (direct > 0.0 && first_of_material)
@@ -453,7 +487,7 @@ StabilityReport estimateStableStep(const Model& model) {
       const bool slides = g > 0.0 && (turns->canSlideAcross(model, ga.body, normal) ||
                                       turns->canSlideAcross(model, gb.body, normal));
       if (total > 0.0 && p.stiffness == 0.0 && across > 0.0 && std::isfinite(across) && slides)
-        considerFriction(0.0, across * total / m, [&] {
+        considerSlip(0.0, across * total / m, [&] {
           std::ostringstream e;
           e << who() << " friction (" << friction_law.name() << " across the slip at " << v_ref
             << " m/s)";
@@ -464,7 +498,7 @@ StabilityReport estimateStableStep(const Model& model) {
     }
     if (friction_law.stateful()) {
       const Tangent stick = stickTangent(friction_law);
-      considerFriction(kPoints * stick.stiffness / m, kPoints * stick.damping / m, [&] {
+      considerSlip(kPoints * stick.stiffness / m, kPoints * stick.damping / m, [&] {
         return who() + " friction (" + std::string(friction_law.name()) + " stick spring)";
       });
       consider_yaw(stick.stiffness, stick.damping, " stick spring");
@@ -487,9 +521,8 @@ StabilityReport estimateStableStep(const Model& model) {
       }
     }
     if (std::isfinite(slope) && slope > 0.0) {
-      considerFriction(0.0, slope * g, [&] {
-        return who() + " friction (" + std::string(friction_law.name()) + ")";
-      });
+      considerSlip(0.0, slope * g,
+                   [&] { return who() + " friction (" + std::string(friction_law.name()) + ")"; });
       consider_yaw(0.0, slope * load, "");
     }
   }

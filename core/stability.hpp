@@ -89,6 +89,21 @@
 //                  is quadratic on a piece); for a law whose slope is
 //                  unbounded at zero slip (roh_yoo with beta < 1) the slope at the stick speed,
 //                  so that at the limit the numerical chatter stays below the stick speed;
+//   rolling:       friction's slip elements above (presliding, direct effect, across the
+//                  slip, stick spring, sticking slope; not the state's own decay) on a round
+//                  shape that rolls, alone on its body (a sphere; a capsule or cylinder on its
+//                  side, rim or end), meet the slip's inverse mass 1/m + (r x t)^T I^-1 (r x t)
+//                  at the contact point, not 1/m: their c/m and k/m scale by that ratio
+//                  (rollingSlipFactor in core/resting_contact.hpp; 3.5 for a solid sphere, 3
+//                  for a solid cylinder rolling on its side); a capsule or cylinder lying on
+//                  its side also yaws on its line's two ends, each friction element as for a
+//                  box's yaw (a stick spring there counts twice: conservative). Measured
+//                  without them: spheres, cylinders and capsules rolling down an incline
+//                  under a regularized Coulomb law left the rolling solution at 0.9 of the
+//                  old estimate; with them they hold it to 1% up to 1.09-1.13 times the
+//                  estimate (tests/core/stability_rolling_test.cpp); scenes/rolling_sphere
+//                  at 4 ms (old limit 5.7 ms, new 1.6 ms) completed unwarned with its slip
+//                  chattering at 18 times the rolling solution's;
 //   joint elements (revolute, prismatic): m = the coordinate's inertia (coordinateInertia in
 //                  core/joint_forces.hpp, a light link's few 1e-6 kg m^2 included), k = the
 //                  spring's and the limit's stiffness, a servo's kp with its own c = kd
@@ -116,7 +131,9 @@
 // spectral radius <= 1 (undamped: RK4 h w < 2 sqrt(2), semi-implicit Euler h w < 2; real
 // axis: RK4 2.785, Dormand-Prince 5(4) 3.307). For dopri5 it bounds the internal steps the
 // error control will settle on (a cost estimate, not a warning); bdf has no explicit limit.
-// Not here: yaw and rocking other than a box's on its face, shapes resting on more
+// Not here: rocking other than a box's on its face, yaw other than a box's on its face or a
+// capsule's or cylinder's on its side, a body rolling on several round geometries (an axle's
+// two wheels: taken to be held), shapes resting on more
 // or fewer than 4 points (linear law: a disc on 8 rim points has sqrt(2) times the
 // frequency, a sphere on one point half), nonlinear instability, contact chatter, accuracy
 // (see the README's measurements).
