@@ -28,7 +28,7 @@ struct Arguments {
   std::vector<std::string> overrides;
   study::OrbitSpec spec;
   bool continuation = false;    // --continue given
-  bool branch_options = false;  // --max-points, --step, --from-hopf or --hopf-amplitude given
+  bool branch_options = false;  // --max-points, --step, --arclength, --from-hopf, --hopf-amplitude
   bool forced_options = false;  // --period or --periods given
   study::BranchSpec branch;
 };
@@ -165,8 +165,8 @@ int runOrbit(Arguments& a) {
   if (a.continuation) return runBranch(a);
   if (a.branch_options) {
     std::fprintf(stderr,
-                 "tribo orbit: --max-points, --step, --from-hopf and --hopf-amplitude apply with "
-                 "--continue only\n");
+                 "tribo orbit: --max-points, --step, --arclength, --from-hopf and "
+                 "--hopf-amplitude apply with --continue only\n");
     return 1;
   }
   io::Scene scene;
@@ -288,12 +288,28 @@ Command addOrbitCommand(CLI::App& tribo) {
                      a->branch_options = true;
                    });
   addCheckedOption(*orbit, "--step", "S",
-                   "with --continue: the first arclength step, in the unknowns' SI units\n"
-                   "(default: |TO - FROM| / 10)",
+                   "with --continue: the first arclength step, in the norm's units\n"
+                   "(default: |TO - FROM| / 10 with --arclength si, 0.1 scaled)",
                    [a](const std::string& v) {
                      a->branch.step = positive("--step", v);
                      a->branch_options = true;
                    });
+  addCheckedOption(
+      *orbit, "--arclength", "NORM",
+      "with --continue: the arclength's norm, si (the unknowns in their SI\n"
+      "units; the default) or scaled (each unknown over its scale: the state\n"
+      "over its range on the first orbit, the period over the first period,\n"
+      "the parameter over |TO - FROM|; the branch then does not depend on\n"
+      "the parameter's units and --step defaults to 0.1)",
+      [a](const std::string& v) {
+        if (v == "si")
+          a->branch.norm = study::ArclengthNorm::kSi;
+        else if (v == "scaled")
+          a->branch.norm = study::ArclengthNorm::kScaled;
+        else
+          throw std::invalid_argument("--arclength: expected si or scaled, found '" + v + "'");
+        a->branch_options = true;
+      });
   orbit->add_flag_function(
       "--from-hopf",
       [a](std::int64_t) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -101,11 +102,13 @@ class BranchShooter {
   unsigned threads_;
 };
 
-// The unit tangent of the branch at a point with Jacobian A: A t = 0, oriented along `along`.
-Eigen::VectorXd unitTangent(const Eigen::MatrixXd& A, const Eigen::VectorXd& along) {
+// The unit tangent of the branch at a point with Jacobian A, in the scaled unknowns z / w:
+// A diag(w) t = 0, |t| = 1, oriented along `along` (scaled too).
+Eigen::VectorXd unitTangent(const Eigen::MatrixXd& A, const Eigen::VectorXd& along,
+                            const Eigen::VectorXd& w) {
   const Eigen::Index rows = A.rows(), cols = A.cols();
   Eigen::MatrixXd J(rows + 1, cols);
-  J.topRows(rows) = A;
+  J.topRows(rows) = A * w.asDiagonal();
   J.row(rows) = along.transpose();
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows + 1);
   rhs[rows] = 1.0;
@@ -127,10 +130,10 @@ struct Correction {
 // Newton from z0 on the closing and phase rows and one linear row, row . z = value: the
 // arclength row of a continuation step (row d, value d . z_pred) or the amplitude row of a
 // Hopf start (row e_obs, value the fixed peak, hopf_start.hpp). A correction farther than
-// `reach` from z0 fails.
+// `reach` from z0 in the norm of the weights w fails.
 Correction newtonWithRow(const BranchShooter& shooter, const Eigen::VectorXd& z0,
-                         const Eigen::VectorXd& row, double value, double reach, int max_iterations,
-                         double tolerance) {
+                         const Eigen::VectorXd& row, double value, double reach,
+                         const Eigen::VectorXd& w, int max_iterations, double tolerance) {
   Correction c;
   c.z = z0;
   const Eigen::Index n = z0.size() - 2;
@@ -169,19 +172,22 @@ Correction newtonWithRow(const BranchShooter& shooter, const Eigen::VectorXd& z0
           "Newton's iteration left the orbit (period " + shooting::messageNumber(c.z[n]) + " s)";
       return c;
     }
-    if ((c.z - z0).norm() > reach) {
-      c.why = "the correction (" + shooting::messageNumber((c.z - z0).norm()) +
+    const double moved = (c.z - z0).cwiseQuotient(w).norm();
+    if (moved > reach) {
+      c.why = "the correction (" + shooting::messageNumber(moved) +
               ") went farther than the step (" + shooting::messageNumber(reach) + ")";
       return c;
     }
   }
 }
 
-// The corrector of a continuation step from the prediction z_pred = z_k + ds d: the
-// correction normal to d, no longer than ds.
+// The corrector of a continuation step from the prediction z_pred = z_k + ds w d (d a unit
+// direction in the scaled unknowns z / w): the correction normal to d there, no longer than ds.
 Correction correct(const BranchShooter& shooter, const Eigen::VectorXd& z_pred,
-                   const Eigen::VectorXd& d, double ds, int max_iterations, double tolerance) {
-  return newtonWithRow(shooter, z_pred, d, d.dot(z_pred), ds, max_iterations, tolerance);
+                   const Eigen::VectorXd& d, double ds, const Eigen::VectorXd& w,
+                   int max_iterations, double tolerance) {
+  const Eigen::VectorXd row = d.cwiseQuotient(w);
+  return newtonWithRow(shooter, z_pred, row, row.dot(z_pred), ds, w, max_iterations, tolerance);
 }
 
 // The first orbit of a Hopf start: z[index] = value keeps it off the equilibrium.
@@ -190,7 +196,8 @@ Correction solveFixedAmplitude(const BranchShooter& shooter, const Eigen::Vector
                                double tolerance) {
   Eigen::VectorXd row = Eigen::VectorXd::Zero(z0.size());
   row[index] = 1.0;
-  return newtonWithRow(shooter, z0, row, value, INFINITY, max_iterations, tolerance);
+  return newtonWithRow(shooter, z0, row, value, INFINITY, Eigen::VectorXd::Ones(z0.size()),
+                       max_iterations, tolerance);
 }
 
 // Modulus of the largest multiplier among the non-trivial ones that `pick` selects (0: none).
@@ -223,7 +230,44 @@ double crossing(const BranchPoint& a, const BranchPoint& b, double ga, double gb
   return a.parameter + s * (b.parameter - a.parameter);
 }
 
+// The scaled norm's weight of each state entry: its range along the orbit from y0 over T,
+// at least 1e-3 of the largest range of its kind (positions, rotations, velocities, angular
+// velocities, friction states: by the entry's name, "box.x", "box.rx", "box.vx", "box.wx",
+// "z3") and 1e-3 of `floor` (the finite differences' scale: 10 um, 10 um/s, 10 urad), so that
+// an entry that does not move (a box's turn on a flat belt, its rounding 1e-19) weighs
+// nothing.
+Eigen::VectorXd stateScales(const shooting::Flow& flow, const OrbitCoordinates& coords,
+                            const Eigen::VectorXd& y0, double T, const Eigen::VectorXd& floor) {
+  Eigen::VectorXd lo = y0, hi = y0;
+  flow(y0, T, [&](double, const State& state) {
+    const Eigen::VectorXd y = coords.toVector(state);
+    lo = lo.cwiseMin(y);
+    hi = hi.cwiseMax(y);
+  });
+  const Eigen::VectorXd range = hi - lo;
+  auto kind = [&](Eigen::Index i) {
+    const std::string& name = coords.names()[static_cast<std::size_t>(i)];
+    const std::size_t dot = name.rfind('.');
+    if (dot == std::string::npos) return 'z';  // a friction state
+    const char c = name[dot + 1];
+    return c == 'r' || c == 'v' || c == 'w' ? c : 'x';
+  };
+  std::map<char, double> largest;
+  for (Eigen::Index i = 0; i < range.size(); ++i)
+    largest[kind(i)] = std::max(largest[kind(i)], range[i]);
+  Eigen::VectorXd w(range.size());
+  for (Eigen::Index i = 0; i < range.size(); ++i) {
+    const double group = largest[kind(i)];
+    w[i] = std::max({range[i], 1e-3 * group, 1e-3 * floor[i]});
+  }
+  return w;
+}
+
 }  // namespace
+
+std::string arclengthNormName(ArclengthNorm norm) {
+  return norm == ArclengthNorm::kScaled ? "scaled" : "si";
+}
 
 std::string branchEventName(BranchEventKind kind) {
   switch (kind) {
@@ -383,10 +427,22 @@ BranchResult continueOrbitFromText(
                         : spec.orbit.fd_step * std::max(std::abs(spec.from), range);
   const unsigned threads =
       std::max(1u, spec.orbit.threads ? spec.orbit.threads : std::thread::hardware_concurrency());
-  const BranchShooter shooter(
-      document, overrides, spec.parameter, coords, coords.velocityIndex(body, axis),
-      shooting::fdFloor(y0, reference.friction_values.size()), spec.orbit.fd_step, dp, threads);
-  const double step = spec.step > 0.0 ? spec.step : range / 10.0;
+  const Eigen::VectorXd floor = shooting::fdFloor(y0, reference.friction_values.size());
+  const BranchShooter shooter(document, overrides, spec.parameter, coords,
+                              coords.velocityIndex(body, axis), floor, spec.orbit.fd_step, dp,
+                              threads);
+  // The arclength's weights w: ones (SI), or each unknown's scale (orbit_branch.hpp).
+  const bool scaled = spec.norm == ArclengthNorm::kScaled;
+  Eigen::VectorXd w = Eigen::VectorXd::Ones(n + 2);
+  if (scaled) {
+    w.head(n) =
+        hopf ? floor : stateScales(shooting::Flow(first.model, coords), coords, y0, T0, floor);
+    w[n] = T0;
+    w[n + 1] = range;
+  }
+  r.norm = spec.norm;
+  r.weights = w;
+  const double step = spec.step > 0.0 ? spec.step : scaled ? 0.1 : range / 10.0;
   const double min_step = spec.min_step > 0.0 ? spec.min_step : step / 64.0;
   const double max_step = spec.max_step > 0.0 ? spec.max_step : 4.0 * step;
   const double direction = spec.to > spec.from ? 1.0 : -1.0;
@@ -400,7 +456,7 @@ BranchResult continueOrbitFromText(
     pt.start = z.head(n);
     pt.period = z[n];
     pt.parameter = z[n + 1];
-    pt.dp_ds = tangent[n + 1];
+    pt.dp_ds = w[n + 1] * tangent[n + 1];
     shooting::Floquet f = shooting::floquet(monodromy);
     pt.multipliers = std::move(f.multipliers);
     pt.trivial = f.trivial;
@@ -486,7 +542,7 @@ BranchResult continueOrbitFromText(
     first_iterations = orbit->iterations;
     along[n + 1] = direction;
   }
-  Eigen::VectorXd tangent = unitTangent(A, along);
+  Eigen::VectorXd tangent = unitTangent(A, along.cwiseQuotient(w), w);
   {
     BranchPoint pt = makePoint(z, monodromy, tangent);
     pt.iterations = first_iterations;
@@ -510,12 +566,12 @@ BranchResult continueOrbitFromText(
                       ") was reached before " + shooting::messageNumber(spec.to);
       break;
     }
-    const Eigen::VectorXd z_pred = z + ds * d;
-    Correction c = correct(shooter, z_pred, d, ds, spec.max_corrector, spec.orbit.tolerance);
+    const Eigen::VectorXd z_pred = z + ds * w.cwiseProduct(d);
+    Correction c = correct(shooter, z_pred, d, ds, w, spec.max_corrector, spec.orbit.tolerance);
     Eigen::VectorXd t;
     BranchPoint pt;
     if (c.ok) {
-      t = unitTangent(c.A, tangent);
+      t = unitTangent(c.A, tangent, w);
       pt = makePoint(c.z, c.monodromy, t);
       // An equilibrium closes on itself for any T: a branch whose orbit shrinks to nothing
       // has left the orbits (steady sliding or sticking), not found one.
@@ -541,11 +597,11 @@ BranchResult continueOrbitFromText(
     pt.iterations = c.iterations;
     pt.residual = c.residual;
     pt.step = ds;
-    pt.arclength = r.points.back().arclength + (c.z - z).norm();
+    pt.arclength = r.points.back().arclength + (c.z - z).cwiseQuotient(w).norm();
     const double p = pt.parameter;
     r.points.push_back(std::move(pt));
     if (progress) progress(r.points.back(), r.points.size() - 1);
-    d = (c.z - z).normalized();
+    d = (c.z - z).cwiseQuotient(w).normalized();
     z = c.z;
     tangent = t;
     if (hopf && (p <= low || p >= high)) {  // a Hopf start's branch goes either way
@@ -669,9 +725,17 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                    {"multipliers", mu}});
   }
   j["branch"] = pts;
-  j["settings"] = {{"max_points", spec.max_points},     {"step", spec.step},
-                   {"min_step", spec.min_step},         {"max_step", spec.max_step},
-                   {"tolerance", spec.orbit.tolerance}, {"fd_step", spec.orbit.fd_step}};
+  j["settings"] = {{"max_points", spec.max_points},
+                   {"step", spec.step},
+                   {"min_step", spec.min_step},
+                   {"max_step", spec.max_step},
+                   {"tolerance", spec.orbit.tolerance},
+                   {"fd_step", spec.orbit.fd_step},
+                   {"arclength_norm", arclengthNormName(spec.norm)}};
+  // The scaled norm's weights of the period and the parameter (the state's are per entry).
+  if (spec.norm == ArclengthNorm::kScaled && r.weights.size() >= 2)
+    j["settings"]["weights"] = {{"period", r.weights[r.weights.size() - 2]},
+                                {"parameter", r.weights[r.weights.size() - 1]}};
   j["seconds"] = r.seconds;
   return j.dump(2);
 }

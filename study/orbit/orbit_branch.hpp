@@ -17,8 +17,22 @@
 // control: ds grows by 1.5 after a corrector that converged in at most 2 iterations, halves
 // after one that failed (no convergence, a failed step, a correction longer than ds, an orbit
 // collapsed onto an equilibrium: amplitude below 1e-6 of the first point's, which closes on
-// itself for any T); the branch stops below the smallest step, naming why. The arclength
-// is measured in the unknowns' own SI units, unscaled.
+// itself for any T); the branch stops below the smallest step, naming why.
+// The arclength's norm (BranchSpec::norm): `si`, the unknowns in their own SI units
+// (|dz|^2 = |dy0|^2 + dT^2 + dp^2, a parameter in N/m weighs a million times one in MN/m), or
+// `scaled`, each unknown over its own scale (|dz|^2 = sum (dz_i / w_i)^2): a state entry over
+// its range along the first orbit (at least 1e-3 of the largest range among the positions,
+// rotations, velocities or friction states it is one of, and 10 um, um/s or urad; from a Hopf
+// point, whose first orbit is tiny, the finite differences' 1 cm, 1 cm/s, 10 mrad), the
+// period over the
+// first period, the parameter over |to - from|. Scaled, the branch does not depend on the
+// parameter's units: p -> c p gives the same points (p times c) and events, and a step is a
+// fraction of that balance (default 0.1). Every step, tangent and secant is formed in the
+// scaled unknowns z_i / w_i (the Newton rows A diag(w) and the arclength row d / w); the
+// columns' finite differences stay in SI (`fd_step`).
+// Keller's arclength with such weights: Allgower & Georg 2003, sec. 2.3; AUTO's scaled norm
+// (Doedel et al., AUTO-07P manual, "NPR, THETA").
+// (`arclength` and `step` of each point, and dp_ds, are in the norm's units.)
 // At each point: the period, the observed coordinate's peak-to-peak amplitude, the Floquet
 // multipliers (study/orbit/shooting.hpp), the unit tangent's parameter component dp/ds, and
 // the observed body's smallest slip speed on the orbit and the fraction of the period it
@@ -42,8 +56,7 @@
 // y_obs - y_obs,steady = eps in place of the arclength row), the unknowns z as above, from
 // the guess steady state + eps (mode's real part), T = 2 pi / omega, p = p_H; the branch then
 // leaves along the tangent on which the amplitude grows, and stops when p leaves the range.
-// Not here: branch switching at a period doubling, scaled arclength norms, matrix-free solves
-// for large states.
+// Not here: branch switching at a period doubling, matrix-free solves for large states.
 #pragma once
 
 #include <Eigen/Dense>
@@ -59,11 +72,17 @@
 
 namespace tribo::study {
 
+// The arclength's norm (above): the unknowns in SI units, or each over its own scale.
+enum class ArclengthNorm { kSi, kScaled };
+// "si", "scaled".
+std::string arclengthNormName(ArclengthNorm norm);
+
 struct BranchSpec {
   std::string parameter;    // a name in the scene's parameters: section
   double from = 0, to = 0;  // the branch starts at `from` and runs towards `to`
   int max_points = 20;      // points at most, the start included
-  double step = 0;          // first arclength step; 0: |to - from| / 10
+  ArclengthNorm norm = ArclengthNorm::kSi;
+  double step = 0;          // first arclength step; 0: |to - from| / 10 (si), 0.1 (scaled)
   double min_step = 0;      // the branch stops below this step; 0: step / 64
   double max_step = 0;      // 0: 4 step
   int max_corrector = 6;    // Newton iterations per point at most
@@ -97,7 +116,7 @@ struct BranchPoint {
   // study/modes/modes.hpp): the steady branch beside the orbits, stable where it is < 0;
   // NaN where the scene has no steady state.
   double steady_growth = NAN;
-  double dp_ds = 0;          // the unit tangent's parameter component
+  double dp_ds = 0;          // the unit tangent's parameter component (dp per unit of s)
   double arclength = 0;      // s from the branch's start
   int iterations = 0;        // the corrector's
   double residual = 0;       // |F| / (1 + |y0|) of the closing and phase rows
@@ -129,6 +148,8 @@ struct BranchResult {
   int hopf_analyses = 0;
   std::string stop_reason;
   double seconds = 0;
+  ArclengthNorm norm = ArclengthNorm::kSi;
+  Eigen::VectorXd weights;  // the norm's w per unknown (y0, T, p): ones for si
 };
 
 // The branch from the orbit findPeriodicOrbit finds at `from` (scene `path` loaded with

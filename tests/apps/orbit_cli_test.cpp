@@ -240,7 +240,7 @@ TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
   const Result alone = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --step 0.1");
   EXPECT_EQ(alone.status, 1) << alone.output;
   EXPECT_NE(alone.output.find("with --continue"), std::string::npos) << alone.output;
-  for (const std::string hopf : {" --from-hopf", " --hopf-amplitude 1e-3"}) {
+  for (const std::string hopf : {" --from-hopf", " --hopf-amplitude 1e-3", " --arclength scaled"}) {
     const Result r = runTribo("orbit " + kBelt + " --out " + dir_.string() + hopf);
     EXPECT_EQ(r.status, 1) << hopf << ": " << r.output;
     EXPECT_NE(r.output.find("with --continue"), std::string::npos) << r.output;
@@ -251,6 +251,11 @@ TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
   EXPECT_NE(amplitude.output.find("--hopf-amplitude: expected a number > 0, found '-1'"),
             std::string::npos)
       << amplitude.output;
+  const Result norm =
+      runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue v_b=1:2 --arclength l2");
+  EXPECT_EQ(norm.status, 1) << norm.output;
+  EXPECT_NE(norm.output.find("--arclength: expected si or scaled, found 'l2'"), std::string::npos)
+      << norm.output;
 }
 
 // --from-hopf: the branch starts at the damped Stribeck belt's Hopf point, where the damper

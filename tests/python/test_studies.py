@@ -201,6 +201,24 @@ def test_orbit_branch_points_are_the_orbits_at_their_parameter(belt):
         tribo.orbit_branch(tribo.load_scene(belt), "no_such", 1.0, 1.5)
     with pytest.raises(ValueError, match="max_points must be >= 2"):
         tribo.orbit_branch(tribo.load_scene(belt), "v_b", 1.0, 1.5, max_points=1)
+    with pytest.raises(ValueError, match="arclength must be 'si' or 'scaled'"):
+        tribo.orbit_branch(tribo.load_scene(belt), "v_b", 1.0, 1.5, arclength="SI")
+
+
+def test_orbit_branch_scaled_arclength_weighs_the_parameter_by_its_range(belt):
+    """arclength='scaled' measures each unknown over its scale: the parameter over the range
+    (0.5 here), the period over the first period; a step of 0.1 (the default) then moves the
+    belt speed by at most 4 x 0.1 of the range, and the points are the orbits at their speed."""
+    b = tribo.orbit_branch(tribo.load_scene(belt), "v_b", 1.0, 1.5, max_points=3,
+                           arclength="scaled")
+    settings = b["settings"]
+    assert settings["arclength_norm"] == "scaled"
+    assert settings["weights"]["parameter"] == 0.5
+    assert settings["weights"]["period"] == b["branch"][0]["period"]
+    p = b["columns"]["parameter"]
+    assert len(p) == 3 and all(0 < p[i + 1] - p[i] <= 0.2 + 1e-12 for i in range(2))
+    alone = tribo.orbit(tribo.load_scene(belt, set={"v_b": float(p[-1])}))
+    assert alone["period"] == pytest.approx(b["columns"]["period"][-1], rel=1e-9)
 
 
 def test_orbit_branch_from_hopf_starts_where_the_damper_cancels_the_slope(belt):
