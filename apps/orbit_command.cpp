@@ -156,12 +156,6 @@ int runBranch(Arguments& a) {
 }
 
 int runOrbit(Arguments& a) {
-  if (a.continuation && a.forced_options) {
-    std::fprintf(stderr,
-                 "tribo orbit: --period and --periods find one forced orbit; --continue follows "
-                 "autonomous orbits only\n");
-    return 1;
-  }
   if (a.continuation) return runBranch(a);
   if (a.branch_options) {
     std::fprintf(stderr,
@@ -337,7 +331,8 @@ Command addOrbitCommand(CLI::App& tribo) {
       "trivial multiplier. rk4 or semi_implicit_euler (docs/orbits.md).\n"
       "--continue follows the orbit in a parameter (pseudo-arclength continuation) and\n"
       "reports folds, period doublings, tori, stability changes, grazing and Hopf points\n"
-      "between its points.\n"
+      "between its points; a forced scene's branch is its forced orbits (in the forcing\n"
+      "frequency: the frequency response, unstable part included).\n"
       "exit status: 0 stable orbit (with --continue: a branch not lost on the way),\n"
       "1 usage, 2 bad scene, 4 output error, 8 unstable orbit, 11 no orbit found,\n"
       "12 the branch was lost (the points found so far are written), 5 interrupted (the\n"

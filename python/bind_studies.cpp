@@ -152,7 +152,8 @@ py::array_t<double> arrayOf(const std::vector<double>& v) {
 
 py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter, double start,
                           double end, int max_points, double step, double settle, double tolerance,
-                          bool from_hopf, double hopf_amplitude, const std::string& arclength) {
+                          bool from_hopf, double hopf_amplitude, const std::string& arclength,
+                          double forcing_period, int periods) {
   if (!(max_points >= 2) || !(step >= 0.0) || !(settle >= 0.0) || !(tolerance > 0.0) ||
       !(hopf_amplitude >= 0.0) || !std::isfinite(hopf_amplitude))
     throw py::value_error(
@@ -173,6 +174,10 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
   spec.orbit.settle = settle;
   spec.orbit.tolerance = tolerance;
   spec.from_hopf = from_hopf;
+  if (!(forcing_period >= 0.0) || !std::isfinite(forcing_period) || periods < 1)
+    throw py::value_error("orbit_branch: period must be >= 0 and periods >= 1");
+  spec.orbit.period = forcing_period;
+  spec.orbit.periods = periods;
   if (arclength == "scaled")
     spec.norm = study::ArclengthNorm::kScaled;
   else if (arclength != "si")
@@ -244,13 +249,16 @@ void bindStudies(py::module_& m) {
   m.def("orbit_branch", &runOrbitBranch, py::arg("scene"), py::arg("parameter"), py::arg("start"),
         py::arg("end"), py::arg("max_points") = 20, py::arg("step") = 0.0, py::arg("settle") = 0.0,
         py::arg("tolerance") = 1e-9, py::arg("from_hopf") = false, py::arg("hopf_amplitude") = 0.0,
-        py::arg("arclength") = "si",
+        py::arg("arclength") = "si", py::arg("period") = 0.0, py::arg("periods") = 1,
         "orbit_branch(scene, parameter, start, end, max_points=20, step=0, settle=0, "
-        "tolerance=1e-9, from_hopf=False, hopf_amplitude=0, arclength='si') -> dict: the orbit "
+        "tolerance=1e-9, from_hopf=False, hopf_amplitude=0, arclength='si', period=0, periods=1) "
+        "-> dict: the orbit "
         "at parameter = start continued towards end as `tribo orbit --continue` does; "
         "from_hopf=True starts instead at the Hopf point of steady sliding between start and "
         "end, with a first orbit of hopf_amplitude (0: 1e-3) ('hopf': where); arclength "
-        "'scaled' measures the step with each unknown over its scale (--arclength scaled) "
+        "'scaled' measures the step with each unknown over its scale (--arclength scaled); a "
+        "scene whose inputs vary in time gives a branch of forced orbits (period, periods as "
+        "for orbit()) "
         "(branch.json's document: status, stop_reason, events, "
         "'branch' per point), with 'columns' (parameter, period, amplitude_pp, "
         "largest_multiplier, stable, stick_fraction, min_slip, steady_growth_rate as arrays) and "

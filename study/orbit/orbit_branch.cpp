@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <thread>
 #include <utility>
 
@@ -15,6 +16,7 @@
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
 #include "study/modes/modes.hpp"
+#include "study/orbit/forcing.hpp"
 #include "study/orbit/hopf_start.hpp"
 #include "study/orbit/orbit_coordinates.hpp"
 #include "study/orbit/shooting.hpp"
@@ -35,12 +37,21 @@ std::string assignment(const std::string& name, double value) {
   return name + "=" + buf;
 }
 
-// The shooting rows and their Jacobian at z = (y0, T, p), the scene reloaded at p and p +- dp.
+// A forced branch's period: K forcing periods of the scene at p (`given` as forcingPeriod
+// takes it: a period the user gave, or 0 to read it from the inputs).
+struct ForcedPeriod {
+  int periods = 1;
+  double given = 0;
+};
+
+// The shooting rows and their Jacobian at z = (y0, T, p), the scene reloaded at p and p +- dp:
+// the orbit closing, then the phase (autonomous) or the period fixed by the forcing (forced).
 class BranchShooter {
  public:
   BranchShooter(const io::SceneDocument& document, std::vector<std::string> overrides,
                 std::string parameter, const OrbitCoordinates& coords, Eigen::Index phase,
-                Eigen::VectorXd floor, double fd_step, double dp, unsigned threads)
+                Eigen::VectorXd floor, double fd_step, double dp, unsigned threads,
+                std::optional<ForcedPeriod> forced)
       : document_(document),
         overrides_(std::move(overrides)),
         parameter_(std::move(parameter)),
@@ -49,7 +60,8 @@ class BranchShooter {
         floor_(std::move(floor)),
         fd_step_(fd_step),
         dp_(dp),
-        threads_(threads) {}
+        threads_(threads),
+        forced_(forced) {}
 
   io::Scene sceneAt(double p) const {
     std::vector<std::string> o = overrides_;
@@ -57,8 +69,9 @@ class BranchShooter {
     return document_.load(o);
   }
 
-  // F (n + 1: the orbit closing, the phase), A = dF/dz ((n + 1) x (n + 2)) and the monodromy
-  // matrix. Throws OrbitError (a failed step) or io::SceneError (p outside the scene's range).
+  // F (n + 1: the orbit closing; the phase, or for a forced orbit T - K P(p)), A = dF/dz
+  // ((n + 1) x (n + 2)) and the monodromy matrix. Throws OrbitError (a failed step, no
+  // forcing period) or io::SceneError (p outside the scene's range).
   void evaluate(const Eigen::VectorXd& z, Eigen::VectorXd& F, Eigen::MatrixXd& A,
                 Eigen::MatrixXd& monodromy) const {
     const Eigen::Index n = coords_.size();
@@ -69,7 +82,10 @@ class BranchShooter {
         flow_down(down_p.model, coords_);
     F.resize(n + 1);
     F.head(n) = flow(y, T) - y;
-    F[n] = y[phase_];
+    auto period = [&](const io::Scene& scene) {
+      return forced_->periods * forcingPeriod(*scene.model, forced_->given);
+    };
+    F[n] = forced_ ? T - period(at) : y[phase_];
     A = Eigen::MatrixXd::Zero(n + 1, n + 2);
     shooting::parallelColumns(n + 2, threads_, [&](Eigen::Index j) {
       // Central differences, as periodic_orbit.cpp takes them.
@@ -88,7 +104,12 @@ class BranchShooter {
     });
     monodromy = A.topLeftCorner(n, n);
     A.topLeftCorner(n, n) -= Eigen::MatrixXd::Identity(n, n);
-    A(n, phase_) = 1.0;
+    if (forced_) {
+      A(n, n) = 1.0;
+      A(n, n + 1) = -(period(up_p) - period(down_p)) / (2 * dp_);
+    } else {
+      A(n, phase_) = 1.0;
+    }
   }
 
  private:
@@ -100,6 +121,7 @@ class BranchShooter {
   Eigen::VectorXd floor_;
   double fd_step_, dp_;
   unsigned threads_;
+  std::optional<ForcedPeriod> forced_;
 };
 
 // The unit tangent of the branch at a point with Jacobian A, in the scaled unknowns z / w:
@@ -288,7 +310,7 @@ std::string branchEventName(BranchEventKind kind) {
 }
 
 std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& points,
-                                            double stick_speed) {
+                                            double stick_speed, bool autonomous) {
   std::vector<BranchEvent> events;
   auto below_minus_one = [](std::complex<double> mu) { return isReal(mu) && mu.real() < -1.0; };
   auto real_negative = [](std::complex<double> mu) { return isReal(mu) && mu.real() < 0.0; };
@@ -310,8 +332,8 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
       for (const BranchPoint& q : points) largest = std::max(largest, q.amplitude_pp);
       const bool falls = i > 0 && points[i - 1].amplitude_pp > a.amplitude_pp;
       const bool rises = i + 2 >= points.size() || points[i + 2].amplitude_pp > b.amplitude_pp;
-      const bool hopf =
-          falls && rises && std::min(a.amplitude_pp, b.amplitude_pp) < kHopfAmplitude * largest;
+      const bool hopf = autonomous && falls && rises &&
+                        std::min(a.amplitude_pp, b.amplitude_pp) < kHopfAmplitude * largest;
       events.push_back({hopf ? BranchEventKind::kHopf : BranchEventKind::kFold, i, i + 1,
                         a.parameter + 0.5 * a.dp_ds * sigma});
     }
@@ -357,6 +379,7 @@ BranchResult continueOrbitFromText(
     throw std::invalid_argument("the branch's range " + shooting::messageNumber(spec.from) + ":" +
                                 shooting::messageNumber(spec.to) + " is empty or not finite");
   const io::SceneDocument document(yaml, path);
+  std::string forced;  // why the scene is forced (study/orbit/forcing.hpp), empty if autonomous
   {
     const io::Scene base = document.load(overrides);
     const auto it = std::find_if(base.parameters.begin(), base.parameters.end(),
@@ -373,8 +396,21 @@ BranchResult continueOrbitFromText(
     if (!io::parseNumber(it->second))
       throw io::SceneError("parameter '" + spec.parameter + "' of " + path + " is '" + it->second +
                            "': expected a number to continue in");
+    forced = nonAutonomous(*base.model);
   }
   BranchResult r;
+  r.forced = !forced.empty();
+  r.periods = spec.orbit.periods;
+  if (r.forced && spec.from_hopf)
+    throw OrbitError(
+        "a Hopf point of steady sliding starts a branch of autonomous orbits; in "
+        "this scene " +
+        forced + ": start the branch from the forced orbit at " +
+        shooting::messageNumber(spec.from) + " (without --from-hopf)");
+  if (!r.forced && (spec.orbit.period > 0.0 || spec.orbit.periods != 1))
+    throw OrbitError(
+        "--period and --periods apply to forced scenes; this one is autonomous (no input "
+        "varies in time)");
   const auto sceneAt = [&](double p) {
     std::vector<std::string> o = overrides;
     o.push_back(assignment(spec.parameter, p));
@@ -392,8 +428,8 @@ BranchResult continueOrbitFromText(
   } else {
     orbit = std::make_unique<OrbitResult>(findPeriodicOrbit(sceneAt(spec.from), spec.orbit));
     // A damped settling run can lead Newton onto the equilibrium it decays to, which closes on
-    // itself for any T: no orbit to follow.
-    if (!(orbit->amplitude_pp > kCollapsed * orbit->guess_amplitude_pp))
+    // itself for any T: no orbit to follow (a forced orbit's period and phase are fixed).
+    if (!r.forced && !(orbit->amplitude_pp > kCollapsed * orbit->guess_amplitude_pp))
       throw OrbitError(
           "the orbit found at " + spec.parameter + " = " + shooting::messageNumber(spec.from) +
           " is an equilibrium (amplitude " + shooting::messageNumber(orbit->amplitude_pp) +
@@ -402,10 +438,13 @@ BranchResult continueOrbitFromText(
   }
   const double p0 = hopf ? hopf->parameter : spec.from;
   const io::Scene first = sceneAt(p0);
-  const int body = shooting::shootableBody(first);
+  const int body = r.forced ? shooting::observedBody(first) : shooting::shootableBody(first);
   const int axis = first.output.summary.coordinate;
   r.observed = first.output.summary.body + "." + std::string(1, "xyz"[axis]);
-  const State& reference = hopf ? hopf->steady : orbit->reference;
+  // A forced orbit's start is taken at t = 0, a whole number of forcing periods whatever the
+  // parameter makes the period (the settling run ended at one).
+  State reference = hopf ? hopf->steady : orbit->reference;
+  if (r.forced) reference.time = 0.0;
   const OrbitCoordinates coords(*first.model, reference);
   const Eigen::Index n = coords.size();
   // The Hopf start's guess: steady sliding plus eps times the mode's real part.
@@ -428,9 +467,11 @@ BranchResult continueOrbitFromText(
   const unsigned threads =
       std::max(1u, spec.orbit.threads ? spec.orbit.threads : std::thread::hardware_concurrency());
   const Eigen::VectorXd floor = shooting::fdFloor(y0, reference.friction_values.size());
-  const BranchShooter shooter(document, overrides, spec.parameter, coords,
-                              coords.velocityIndex(body, axis), floor, spec.orbit.fd_step, dp,
-                              threads);
+  const BranchShooter shooter(
+      document, overrides, spec.parameter, coords, coords.velocityIndex(body, axis), floor,
+      spec.orbit.fd_step, dp, threads,
+      r.forced ? std::optional<ForcedPeriod>({spec.orbit.periods, spec.orbit.period})
+               : std::nullopt);
   // The arclength's weights w: ones (SI), or each unknown's scale (orbit_branch.hpp).
   const bool scaled = spec.norm == ArclengthNorm::kScaled;
   Eigen::VectorXd w = Eigen::VectorXd::Ones(n + 2);
@@ -457,7 +498,7 @@ BranchResult continueOrbitFromText(
     pt.period = z[n];
     pt.parameter = z[n + 1];
     pt.dp_ds = w[n + 1] * tangent[n + 1];
-    shooting::Floquet f = shooting::floquet(monodromy);
+    shooting::Floquet f = shooting::floquet(monodromy, !r.forced);
     pt.multipliers = std::move(f.multipliers);
     pt.trivial = f.trivial;
     pt.trivial_error = f.trivial_error;
@@ -574,8 +615,9 @@ BranchResult continueOrbitFromText(
       t = unitTangent(c.A, tangent, w);
       pt = makePoint(c.z, c.monodromy, t);
       // An equilibrium closes on itself for any T: a branch whose orbit shrinks to nothing
-      // has left the orbits (steady sliding or sticking), not found one.
-      if (!(pt.amplitude_pp > kCollapsed * r.points.front().amplitude_pp)) {
+      // has left the orbits (steady sliding or sticking), not found one. (A forced orbit's
+      // period is fixed: a small response is an orbit.)
+      if (!r.forced && !(pt.amplitude_pp > kCollapsed * r.points.front().amplitude_pp)) {
         c.ok = false;
         c.why = "the orbit collapsed onto an equilibrium at " + spec.parameter + " = " +
                 shooting::messageNumber(pt.parameter) + " (amplitude " +
@@ -620,7 +662,7 @@ BranchResult continueOrbitFromText(
           "the branch turned back past the start value " + shooting::messageNumber(spec.from);
       break;
     }
-    const std::vector<BranchEvent> events = detectBranchEvents(r.points, stick_speed);
+    const std::vector<BranchEvent> events = detectBranchEvents(r.points, stick_speed, !r.forced);
     if (!events.empty() && events.back().kind == BranchEventKind::kHopf &&
         events.back().after + 1 == r.points.size()) {
       r.stop_reason = "the orbit shrank onto the steady state at a Hopf point, " + spec.parameter +
@@ -630,7 +672,7 @@ BranchResult continueOrbitFromText(
     }
     if (c.iterations <= 2) ds = std::min(1.5 * ds, max_step);
   }
-  r.events = detectBranchEvents(r.points, r.stick_speed);
+  r.events = detectBranchEvents(r.points, r.stick_speed, !r.forced);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
   return r;
 }
@@ -684,6 +726,8 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                                 : "stopped";
   j["stop_reason"] = r.stop_reason;
   j["stick_speed"] = r.stick_speed;
+  j["forced"] = r.forced;
+  if (r.forced) j["periods"] = r.periods;
   if (spec.from_hopf) {  // where the branch started, located by the modes analysis
     j["start"] = "hopf";
     j["hopf"] = {

@@ -56,6 +56,12 @@
 // y_obs - y_obs,steady = eps in place of the arclength row), the unknowns z as above, from
 // the guess steady state + eps (mode's real part), T = 2 pi / omega, p = p_H; the branch then
 // leaves along the tangent on which the amplitude grows, and stops when p leaves the range.
+// A forced scene (an input that varies in time, study/orbit/forcing.hpp) has a branch of forced
+// orbits: the same unknowns, the phase row replaced by T - K P(p) = 0 (P the forcing's period
+// at p, K = OrbitSpec::periods; its p column by central differences), the orbit's start taken
+// at t = 0 so that the forcing's phase stays whatever P becomes (a branch in the forcing
+// frequency: the frequency response, its folds and the unstable response between them), no
+// trivial multiplier, no Hopf start, no collapse check (a small response is an orbit).
 // Not here: branch switching at a period doubling, matrix-free solves for large states.
 #pragma once
 
@@ -150,6 +156,8 @@ struct BranchResult {
   double seconds = 0;
   ArclengthNorm norm = ArclengthNorm::kSi;
   Eigen::VectorXd weights;  // the norm's w per unknown (y0, T, p): ones for si
+  bool forced = false;      // the scene's inputs vary in time: a branch of forced orbits
+  int periods = 1;          // forced: each orbit spans this many forcing periods
 };
 
 // The branch from the orbit findPeriodicOrbit finds at `from` (scene `path` loaded with
@@ -170,9 +178,10 @@ BranchResult continueOrbitFromText(
     const std::function<void(const BranchPoint&, std::size_t)>& progress = {});
 
 // The events between consecutive points (points need parameter, arclength, dp_ds,
-// multipliers, trivial, stable and, for grazing, min_slip; stick_speed 0: no grazing).
+// multipliers, trivial, stable and, for grazing, min_slip; stick_speed 0: no grazing). A
+// branch of forced orbits (`autonomous` false) has no Hopf point: every turn is a fold.
 std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& points,
-                                            double stick_speed = 0);
+                                            double stick_speed = 0, bool autonomous = true);
 
 // branch.csv: one row per point (columns in docs/orbits.md); branch.json: the spec, the
 // events, the stop reason; branch_orbits.csv: each point's sampled orbit (point, t and the

@@ -65,12 +65,21 @@ TEST_F(OrbitCli, AForcedSceneGivesTheForcingsPeriodAndRefusesContinuation) {
   EXPECT_NEAR(j["period"].get<double>(), 2 / 1.2, 1e-12);  // f = 1.2 Hz in the scene
   EXPECT_FALSE(j.contains("trivial_multiplier_error"));
   for (const auto& mu : j["multipliers"]) EXPECT_FALSE(mu["trivial"].get<bool>());
-  // Continuation takes autonomous orbits only; --period with it is a usage error.
-  EXPECT_EQ(runTribo("orbit " + forced + " --out " + dir_.string() + " --continue f=1:2").status,
-            11);
-  EXPECT_EQ(runTribo("orbit " + forced + " --out " + dir_.string() + " --continue f=1:2 --period 1")
-                .status,
-            1);
+  // A forced scene continues in the forcing frequency (tests/study/forced_branch_test.cpp);
+  // --periods 2 with it makes every orbit two forcing periods long; a period the inputs do
+  // not repeat with is no orbit (exit 11).
+  const Result branch = runTribo("orbit " + forced + " --out " + dir_.string() +
+                                 " --continue f=1:1.1 --periods 2 --max-points 3");
+  EXPECT_EQ(branch.status, 0) << branch.output;
+  const auto b = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_TRUE(b["forced"].get<bool>());
+  EXPECT_EQ(b["periods"].get<int>(), 2);
+  for (const auto& p : b["branch"])
+    EXPECT_NEAR(p["period"].get<double>() * p["parameter"].get<double>(), 2.0, 1e-9);
+  EXPECT_EQ(
+      runTribo("orbit " + forced + " --out " + dir_.string() + " --continue f=1:2 --period 0.7")
+          .status,
+      11);
   EXPECT_EQ(runTribo("orbit " + forced + " --out " + dir_.string() + " --periods 0").status, 1);
   const Result krylov =
       runTribo("orbit " + forced + " --out " + dir_.string() + " --solver krylov");

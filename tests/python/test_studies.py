@@ -248,3 +248,23 @@ def test_orbit_branch_from_hopf_starts_where_the_damper_cancels_the_slope(belt):
         tribo.orbit_branch(scene, "v_b", 0.3, 0.6, from_hopf=True)
     with pytest.raises(ValueError, match="hopf_amplitude >= 0"):
         tribo.orbit_branch(scene, "v_b", 0.15, 0.5, from_hopf=True, hopf_amplitude=-1)
+
+
+def test_orbit_branch_of_a_forced_scene_follows_the_frequency_response(source_dir):
+    """A scene whose inputs vary in time gives a branch of forced orbits: in the forcing
+    frequency f, each point is the forced linear oscillator's closed-form response
+    2 F0 / sqrt((k - m w^2)^2 + (c w)^2) (m 1, k 100, c 2, F0 10) with period 1 / f, or
+    periods / f with periods=2; a bad period is refused before any work."""
+    scene = tribo.load_scene(str(source_dir / "scenes" / "forced_oscillator.yaml"))
+    b = tribo.orbit_branch(scene, "f", 1.0, 1.2, max_points=3, arclength="scaled", step=0.3)
+    assert b["forced"] is True
+    for f, amplitude, period in zip(b["columns"]["parameter"], b["columns"]["amplitude_pp"],
+                                    b["columns"]["period"]):
+        w = 2 * math.pi * f
+        assert amplitude == pytest.approx(20 / math.hypot(100 - w * w, 2 * w), rel=1e-4)
+        assert period * f == pytest.approx(1.0, abs=1e-9)
+    two = tribo.orbit_branch(scene, "f", 1.0, 1.2, max_points=2, periods=2)
+    assert two["periods"] == 2
+    assert two["branch"][0]["period"] == pytest.approx(2.0, rel=1e-9)
+    with pytest.raises(ValueError, match="periods >= 1"):
+        tribo.orbit_branch(scene, "f", 1.0, 1.2, periods=0)

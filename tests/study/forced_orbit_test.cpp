@@ -299,18 +299,21 @@ TEST(ForcedOrbit, RefusesWhatHasNoPeriodNamingTheInput) {
           "apply to forced scenes");
 }
 
-TEST(ForcedOrbit, ContinuationRefusesAForcedSceneNamingItsInput) {
+TEST(ForcedOrbit, ContinuationRefusesAHopfStartForAForcedSceneNamingItsInput) {
+  // A forced scene's branch starts from its forced orbit (tests/study/forced_branch_test.cpp);
+  // steady sliding's Hopf point is a start for autonomous orbits only.
   study::BranchSpec b;
   b.parameter = "f";
   b.from = 1.2;
   b.to = 1.5;
+  b.from_hopf = true;
   try {
     study::continueOrbit(kForced, {}, b);
-    ADD_FAILURE() << "a forced scene was continued";
+    ADD_FAILURE() << "a forced scene was continued from a Hopf point";
   } catch (const study::OrbitError& e) {
-    EXPECT_NE(std::string(e.what()).find("not autonomous (load 'shaker' force x varies in time"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("load 'shaker' force x varies in time"), std::string::npos)
         << e.what();
+    EXPECT_NE(std::string(e.what()).find("without --from-hopf"), std::string::npos) << e.what();
   }
 }
 
