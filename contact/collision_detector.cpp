@@ -14,6 +14,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -31,7 +32,7 @@ namespace tribo::contact {
 
 namespace {
 
-enum class PairKind {
+enum class PairKind : std::uint8_t {
   kHalfSpaceBox,    // the hot belt pair, straight to its corner manifold
   kHalfSpaceShape,  // A half-space, B anything: closed form
   kShapeHalfSpace,  // the same, normal flipped
@@ -102,12 +103,24 @@ Aabb worldBox(const Shape& shape, const Eigen::Isometry3d& pose, const Aabb* loc
     box.hi = centre + half;
     return box;
   }
+  // Shapes symmetric about their origin have support(-d) == support(d) bit for bit (|d| per
+  // component, a norm, a hypot): one call per axis.
+  const bool symmetric = shape.type == ShapeType::kBox || shape.type == ShapeType::kSphere ||
+                         shape.type == ShapeType::kCapsule || shape.type == ShapeType::kCylinder;
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d axis = r.row(i).transpose();  // world axis i in the shape frame
-    box.hi[i] = pose.translation()[i] + shape.support(axis);
-    box.lo[i] = pose.translation()[i] - shape.support(-axis);
+    const double up = shape.support(axis);
+    box.hi[i] = pose.translation()[i] + up;
+    box.lo[i] = pose.translation()[i] - (symmetric ? up : shape.support(-axis));
   }
   return box;
+}
+
+// Does `outer` contain `inner`? False when a coordinate of either is NaN.
+bool contains(const Aabb& outer, const Aabb& inner) {
+  return inner.lo.x() >= outer.lo.x() && inner.lo.y() >= outer.lo.y() &&
+         inner.lo.z() >= outer.lo.z() && inner.hi.x() <= outer.hi.x() &&
+         inner.hi.y() <= outer.hi.y() && inner.hi.z() <= outer.hi.z();
 }
 
 std::atomic<CollisionDetector::FclScopeHook> fcl_scope_hook{nullptr};
@@ -141,11 +154,13 @@ std::uint64_t pairKey(int a, int b) {
 
 }  // namespace
 
-// One pair to look at: its id, geometries A and B, and how.
+// One pair to look at: its id, geometries A and B, and how. `cull`: a pair of the skin list,
+// looked at only while the two geometries' tight world boxes overlap.
 struct Candidate {
   int id = -1;
   int a = -1, b = -1;
   PairKind kind = PairKind::kFcl;
+  bool cull = false;
 };
 
 struct CollisionDetector::Impl {
@@ -166,7 +181,15 @@ struct CollisionDetector::Impl {
   std::vector<std::pair<int, int>> close_pairs;
   fcl::CollisionRequestd request;  // shared by the threads: FCL only reads it
   std::vector<Candidate> candidates;
-  std::vector<Candidate> unbounded;   // pairs with a half-space: never culled
+  std::vector<Candidate> unbounded;  // pairs with a half-space: never culled
+  // The skin list (options.broadphase_skin > 0): every pair whose boxes grown by `margin` on
+  // each side (`fat`, by geometry, as of the last build) overlap, with the unbounded pairs,
+  // by pair id; rebuilt when some tight box has left its fat box.
+  double margin = -1.0;  // [m]; < 0 before the first build
+  std::vector<Aabb> fat;
+  std::vector<Candidate> skin_list;
+  bool skin_valid = false;
+  long skin_builds = 0;
   std::vector<Polyhedron> polyhedra;  // by geometry, for kPolyhedra pairs (else empty)
   bool timing = false;
   double fcl_seconds = 0.0;
@@ -185,6 +208,7 @@ struct CollisionDetector::Impl {
   Candidate candidate(int id, int a, int b) const { return {id, a, b, classify(a, b)}; }
   void setUp();
   void candidateFound(int g, int h);
+  void buildSkinList();
 
   // The narrowphase of every pair in `list`, appended to `out` in list order. Split across
   // `threads` when the list is long enough: thread t takes the t-th contiguous run of the
@@ -229,6 +253,8 @@ struct CollisionDetector::Impl {
   void narrowphase(const Candidate& c, std::span<const Eigen::Isometry3d> poses,
                    std::vector<ContactPoint>& out, Lane& lane) {
     const int a = c.a, b = c.b, p = c.id;
+    if (c.cull && !overlaps(boxes[static_cast<std::size_t>(a)], boxes[static_cast<std::size_t>(b)]))
+      return;  // what the grid on the tight boxes would not have reported
     const int max_points = options.max_points_per_pair;
     switch (c.kind) {
       case PairKind::kHalfSpaceBox:
@@ -394,6 +420,42 @@ void CollisionDetector::Impl::candidateFound(int g, int h) {
   if (it != pair_index.end()) candidates.push_back(listed[static_cast<std::size_t>(it->second)]);
 }
 
+// The skin list from the current tight boxes: the margin (fixed at the first build), the fat
+// boxes, the grid's pairs among them as candidates, and the unbounded pairs, sorted by id.
+void CollisionDetector::Impl::buildSkinList() {
+  if (margin < 0.0) {
+    std::vector<double> extents;
+    extents.reserve(bounded.size());
+    for (const int g : bounded) {
+      const Aabb& b = boxes[static_cast<std::size_t>(g)];
+      const double e = (b.hi - b.lo).maxCoeff();
+      if (e > 0.0 && std::isfinite(e)) extents.push_back(e);
+    }
+    double median = 1.0;  // every box a point: 1 m, as the grid's cell
+    if (!extents.empty()) {
+      const auto middle = extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2);
+      std::nth_element(extents.begin(), middle, extents.end());
+      median = *middle;
+    }
+    margin = options.broadphase_skin * median;
+  }
+  const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
+  for (const int g : bounded) {
+    const Aabb& b = boxes[static_cast<std::size_t>(g)];
+    fat[static_cast<std::size_t>(g)] = {b.lo - grow, b.hi + grow};
+  }
+  grid.overlappingPairs(fat, bounded, close_pairs);
+  candidates.clear();
+  for (const auto& [g, h] : close_pairs) candidateFound(g, h);
+  for (Candidate& c : candidates) c.cull = true;
+  candidates.insert(candidates.end(), unbounded.begin(), unbounded.end());
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& x, const Candidate& y) { return x.id < y.id; });
+  skin_list.assign(candidates.begin(), candidates.end());
+  skin_valid = true;
+  ++skin_builds;
+}
+
 // FCL objects, polyhedra and the broadphase, once the pairs (listed or by rule) are known.
 void CollisionDetector::Impl::setUp() {
   const int n = static_cast<int>(shapes.size());
@@ -466,6 +528,7 @@ void CollisionDetector::Impl::setUp() {
   if (!options.broadphase) return;
   std::vector<int> planes;
   boxes.resize(static_cast<std::size_t>(n));
+  fat.resize(static_cast<std::size_t>(n));
   mesh_local.resize(static_cast<std::size_t>(n));
   has_mesh_local.assign(static_cast<std::size_t>(n), 0);
   for (int g = 0; g < n; ++g) {
@@ -552,6 +615,7 @@ void CollisionDetector::setThreads(int threads) {
   impl_->grid.setThreads(impl_->threads);
 }
 double CollisionDetector::fclSeconds() const { return impl_->fcl_seconds; }
+long CollisionDetector::skinListBuilds() const { return impl_->skin_builds; }
 void CollisionDetector::setFclScopeHook(FclScopeHook hook) {
   fcl_scope_hook.store(hook, std::memory_order_relaxed);
 }
@@ -568,12 +632,24 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
     return;
   }
   constexpr std::size_t kBoxesPerThread = 512;
+  const bool skin = m.options.broadphase_skin > 0.0;
+  std::atomic<bool> escaped{false};  // some tight box left its fat box
   parallelFor(m.bounded.size(), threadsFor(m.bounded.size(), m.threads, kBoxesPerThread),
-              [&m, poses](std::size_t k) {
+              [&m, poses, skin, &escaped](std::size_t k) {
                 const auto g = static_cast<std::size_t>(m.bounded[k]);
                 m.boxes[g] = worldBox(m.shapes[g], poses[g],
                                       m.has_mesh_local[g] ? &m.mesh_local[g] : nullptr);
+                if (skin && !contains(m.fat[g], m.boxes[g]))
+                  escaped.store(true, std::memory_order_relaxed);
               });
+  if (skin) {
+    // The skin list holds every pair whose tight boxes can overlap while each stays in its fat
+    // box; its narrowphase skips the pairs whose tight boxes do not: the grid's candidates on
+    // the tight boxes, in the same id order.
+    if (!m.skin_valid || escaped.load(std::memory_order_relaxed)) m.buildSkinList();
+    m.narrowphaseAll(m.skin_list, poses, out);
+    return;
+  }
   m.grid.overlappingPairs(m.boxes, m.bounded, m.close_pairs);
   m.candidates.assign(m.unbounded.begin(), m.unbounded.end());
   for (const auto& [g, h] : m.close_pairs) m.candidateFound(g, h);

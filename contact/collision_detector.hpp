@@ -14,14 +14,26 @@
 // FCL's box/box manifold when the closed forms are off, BVH traversal for meshes), at most
 // `max_points_per_pair` points. A convex mesh with a box or a convex mesh grows EPA's single
 // point into the face manifold (contact/polyhedron_contacts.hpp) unless switched off. With
-// `broadphase` on, a hashed uniform grid over the geometries' tight world boxes culls the
-// pairs first (contact/broadphase.hpp); half-spaces stay out of it (their box is infinite)
-// and their pairs are always tested. FCL objects exist only for geometries its narrowphase
+// `broadphase` on, a hashed uniform grid culls the pairs first (contact/broadphase.hpp);
+// half-spaces stay out of it (their box is infinite) and their pairs are always tested.
+// The grid runs on the geometries' tight world boxes each grown by a skin on every side
+// (`broadphase_skin` times the median box's largest extent, fixed at the first call), and
+// the pairs it reports, filtered by the list or the rule, are kept with the half-space pairs
+// sorted by pair id: a Verlet neighbour list (Verlet, Phys. Rev. 159, 98 (1967); LAMMPS's
+// neighbor skin), reused for as long as every tight box lies inside its grown box and
+// rebuilt on the call where one does not (a NaN box never does). A call then computes the
+// tight boxes and runs the narrowphase on the kept pairs whose tight boxes overlap: exactly
+// the pairs the grid on the tight boxes reports, in the same order, so the points are the
+// same bit for bit as with `broadphase_skin` 0 (the grid on the tight boxes every call).
+// The skin (a tenth of the median box) was chosen by measurement on a falling sphere pile,
+// a resting box grid and a sphere chute (bench/contact/detect_skin_bench.cpp,
+// docs/performance.md). FCL objects exist only for geometries its narrowphase
 // may be asked about: a scene of boxes, spheres, capsules and half-spaces never calls FCL.
 // Does not allocate once its buffers have grown to their working size; FCL's narrowphase
 // may (libccd's EPA, the box/box manifold), which a test hook brackets.
 // Not here: forces, materials, which pairs exist (the model builder), contact identity
-// between steps (contact/stick_anchor.hpp).
+// between steps (contact/stick_anchor.hpp), a per-body update of the kept list (one box
+// leaving its grown box rebuilds the whole list), continuous (swept) detection.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -38,7 +50,12 @@
 namespace tribo::contact {
 
 struct CollisionOptions {
-  bool broadphase = false;                // cull pairs with the grid (contact/broadphase.hpp)
+  bool broadphase = false;  // cull pairs with the grid (contact/broadphase.hpp)
+  // With the broadphase: the skin of the cached pair list (a Verlet list), a fraction of the
+  // median geometry's largest extent added to each side of every box; the list is rebuilt
+  // when a tight box leaves its grown box. 0: no list, the grid runs on every call. The same
+  // contact points either way.
+  double broadphase_skin = 0.1;
   bool closed_form_box_halfspace = true;  // exact corners instead of FCL's single point
   // Other closed forms: primitive_contacts.hpp, box/box (box_box_contacts.hpp), capsule/box and
   // cylinder/box (box_round_contacts.hpp), sphere/capsule and capsule/capsule
@@ -103,6 +120,10 @@ class CollisionDetector {
   // measured only when `timing` is on (it costs two clock reads per call).
   void setTiming(bool timing);
   double fclSeconds() const;
+
+  // How many times the skin list was built since construction (0 without the broadphase or
+  // with broadphase_skin 0): for tests and benches.
+  long skinListBuilds() const;
 
   // Test hook, process-wide: when set, called with true right before and false right after
   // every call into FCL's narrowphase collide, so a test can tell FCL's own heap use from
