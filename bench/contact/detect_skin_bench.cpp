@@ -13,9 +13,9 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
-#include <sstream>
 #include <string>
 
+#include "chute_scene.hpp"
 #include "contact/collision_detector.hpp"
 #include "core/automatic_contacts.hpp"
 #include "core/model.hpp"
@@ -40,24 +40,6 @@ class Rule : public tribo::contact::PairRule {
   std::shared_ptr<const tribo::Model> model_;
 };
 
-std::string smallChute() {
-  const double g = 9.81, angle = 26.0 * M_PI / 180.0;
-  std::ostringstream y;
-  y.precision(17);
-  y << "parameters: {k: 1.5e5, c: 35.0, mu: 0.4, dt: 1.0e-3}\n"
-    << "simulation:\n  duration: 0.3\n  time_step: $dt\n  integrator: semi_implicit_euler\n"
-    << "  gravity: [" << g * std::sin(angle) << ", 0, " << -g * std::cos(angle) << "]\n"
-    << "friction_laws:\n  coulomb: {mu: $mu, regularization: tanh, v_eps: 0.01}\n"
-    << "materials:\n  - name: rubber\n    normal: {law: linear, stiffness: $k, damping: $c}\n"
-    << "    friction: coulomb\n    default: true\n"
-    << "bodies:\n  - name: chute\n    kind: kinematic\n"
-    << "    geometry: [{name: floor, shape: halfspace}]\n"
-    << "  - {name: s, mass: 0.5, position: [0, 0, 0.0525], geometry: [{name: g, shape: sphere, "
-       "radius: 0.05}], pattern: {grid: [40, 40, 5], spacing: [0.105, 0.105, 0.105], jitter: "
-       "0.002, seed: 1}}\n";
-  return y.str();
-}
-
 const tribo::io::Scene& scene(int which) {
   static std::unique_ptr<tribo::io::Scene> cache[3];
   auto& slot = cache[which];
@@ -65,7 +47,8 @@ const tribo::io::Scene& scene(int which) {
     slot = std::make_unique<tribo::io::Scene>(
         which == 0   ? tribo::io::loadScene(kScenes + "sphere_pile_stiff.yaml")
         : which == 1 ? tribo::io::loadScene(kScenes + "box_grid20.yaml")
-                     : tribo::io::loadSceneFromString(smallChute(), "chute.yaml", {}, {}, {}));
+                     : tribo::io::loadSceneFromString(tribo::bench::chuteYaml(40, 40, 5, 0.3),
+                                                      "chute.yaml", {}, {}, {}));
   return *slot;
 }
 

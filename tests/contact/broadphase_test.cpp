@@ -13,6 +13,7 @@
 
 #include "contact/collision_detector.hpp"
 #include "contact/split_count.hpp"
+#include "support/every_pair_rule.hpp"
 
 namespace tribo::contact {
 namespace {
@@ -266,16 +267,7 @@ Shape randomShape(std::mt19937& rng, int kind, double scale) {
   }
 }
 
-// Every pair whose shapes touch, in a rule over all geometries.
-class EveryPair : public PairRule {
- public:
-  explicit EveryPair(int n) : n_(n) {}
-  int pairId(int g, int h) const override { return std::min(g, h) * n_ + std::max(g, h); }
-  std::pair<int, int> geometries(int id) const override { return {id / n_, id % n_}; }
-
- private:
-  int n_;
-};
+using test::EveryPair;
 
 TEST(GridBroadphase, TheDetectorFindsEveryContactOfEveryShapeKindAsTheFullPairListDoes) {
   std::mt19937 rng(42);

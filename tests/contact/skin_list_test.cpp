@@ -14,20 +14,12 @@
 
 #include "contact/collision_detector.hpp"
 #include "contact/split_count.hpp"
+#include "support/every_pair_rule.hpp"
 
 namespace tribo::contact {
 namespace {
 
-// Every pair of geometries, by id g * n + h.
-class EveryPair : public PairRule {
- public:
-  explicit EveryPair(int n) : n_(n) {}
-  int pairId(int g, int h) const override { return std::min(g, h) * n_ + std::max(g, h); }
-  std::pair<int, int> geometries(int id) const override { return {id / n_, id % n_}; }
-
- private:
-  int n_;
-};
+using test::EveryPair;
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
