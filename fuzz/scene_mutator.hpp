@@ -97,17 +97,21 @@ inline std::string withParameters(std::string text, const std::string& lines) {
   return "parameters:\n" + lines + text;
 }
 
+// `value` with each "$p" made "$NAME". The search resumes after the inserted name, so a name
+// that itself holds "$p" is inserted once, not for ever.
+inline std::string withName(std::string value, const std::string& name) {
+  for (std::size_t at = value.find("$p"); at != std::string::npos;
+       at = value.find("$p", at + 1 + name.size()))
+    value.replace(at + 1, 1, name);
+  return value;
+}
+
 template <class Rng>
 std::string mutateScene(std::string text, Rng& rng) {
   const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
   std::vector<std::string> names = parameterNames(text);
   const std::string p = names.empty() ? "p" : names[pick(names.size())];
-  const auto hostile = [&] {
-    std::string v = hostileValues()[pick(hostileValues().size())];
-    for (std::size_t at = v.find("$p"); at != std::string::npos; at = v.find("$p", at + 1))
-      v.replace(at + 1, 1, p);
-    return v;
-  };
+  const auto hostile = [&] { return withName(hostileValues()[pick(hostileValues().size())], p); };
   const auto setSomeValue = [&](std::string& t, const std::string& v) {
     const auto spans = valueSpans(t);
     if (spans.empty()) return;

@@ -83,5 +83,20 @@ TEST(FuzzRegressions, SceneMutationsAreRepeatableAndEndInASceneOrItsError) {
   EXPECT_GT(changed, total / 2) << "most mutations change the text";
 }
 
+// A parameter name holding "$p" once made the mutator's substitution loop grow its string for
+// ever (a hang libFuzzer's -timeout does not see, as it runs in the custom mutator).
+TEST(FuzzRegressions, SceneMutatorSubstitutesANameHoldingItsOwnPattern) {
+  EXPECT_EQ(withName("$p + $p", "a$p"), "$a$p + $a$p");
+  EXPECT_EQ(withName("sqrt($p)", "$p$p"), "sqrt($$p$p)");
+  EXPECT_EQ(withName("1e308", "$p"), "1e308");
+  const std::string text = "parameters:\n  x$p: 1\n  $p: 2\nduration: 1\ndt: 0.001\n";
+  std::size_t changed = 0;
+  for (unsigned seed = 1; seed <= 64; ++seed) {
+    std::mt19937 rng(seed);
+    changed += mutateScene(text, rng) != text;
+  }
+  EXPECT_GT(changed, 32u);
+}
+
 }  // namespace
 }  // namespace tribo::fuzz
