@@ -30,6 +30,9 @@ constexpr double kCollapsed = 1e-6;
 // A turn of the parameter where the amplitude has a minimum below this fraction of the
 // branch's largest is a Hopf point, not a fold.
 constexpr double kHopfAmplitude = 0.2;
+// The step grows after a corrector that converged in at most 2 iterations, or in 3 that moved
+// the prediction by at most this fraction of the step (the branch is nearly straight there).
+constexpr double kStraight = 0.02;
 
 std::string assignment(const std::string& name, double value) {
   char buf[64];
@@ -670,7 +673,9 @@ BranchResult continueOrbitFromText(
                       " (past it the branch retraces itself)";
       break;
     }
-    if (c.iterations <= 2) ds = std::min(1.5 * ds, max_step);
+    const double off = (c.z - z_pred).cwiseQuotient(w).norm() / ds;
+    if (c.iterations <= 2 || (c.iterations == 3 && off <= kStraight))
+      ds = std::min(1.5 * ds, max_step);
   }
   r.events = detectBranchEvents(r.points, r.stick_speed, !r.forced);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();

@@ -14,7 +14,8 @@
 // Newton's method on the three rows with the Jacobian from central differences of the flow:
 // the y0 and T columns as in periodic_orbit.cpp, the p column from the scene reloaded at
 // p +- dp (io::SceneDocument re-reads the overrides without parsing the YAML again). Step
-// control: ds grows by 1.5 after a corrector that converged in at most 2 iterations, halves
+// control: ds grows by 1.5 after a corrector that converged in at most 2 iterations (or in 3
+// that moved the prediction by at most 0.02 ds: a nearly straight stretch), halves
 // after one that failed (no convergence, a failed step, a correction longer than ds, an orbit
 // collapsed onto an equilibrium: amplitude below 1e-6 of the first point's, which closes on
 // itself for any T); the branch stops below the smallest step, naming why.
