@@ -101,6 +101,10 @@ int runBranch(Arguments& a) {
     std::fprintf(stderr, "tribo orbit: %s\n", e.what());
     return 2;
   }
+  if (b.switch_amplitude > 0.0 && b.switch_at == study::BranchSwitch::kNone) {
+    std::fprintf(stderr, "tribo orbit: --switch-amplitude applies with --switch only\n");
+    return 1;
+  }
   study::BranchResult r;
   try {
     if (b.from_hopf)
@@ -111,8 +115,13 @@ int runBranch(Arguments& a) {
     else
       std::fprintf(stderr, "tribo orbit: the orbit at %s = %.6g, then the branch towards %.6g\n",
                    b.parameter.c_str(), b.from, b.to);
+    std::size_t seen = 0;
     r = study::continueOrbit(
         a.scene_path, a.overrides, b, [&](const study::BranchPoint& p, std::size_t i) {
+          if (i == 0 && seen++ > 0)
+            std::fprintf(stderr,
+                         "tribo orbit: switched at the located %s; the new branch's points:\n",
+                         study::branchSwitchName(b.switch_at).c_str());
           std::fprintf(stderr,
                        "tribo orbit: point %zu  %s = %.8g  period %.8g s  amplitude %.6g  "
                        "|mu|max %.3g  %s  (%d iterations)\n",
@@ -136,6 +145,10 @@ int runBranch(Arguments& a) {
     study::writeFileWhole(out / "branch.csv", study::branchCsvText(r));
     study::writeFileWhole(out / "branch_orbits.csv", study::branchOrbitsCsvText(r));
     study::writeFileWhole(out / "branch.json", study::branchJsonText(a.scene_path, b, r) + "\n");
+    if (r.switched.found)
+      study::writeFileWhole(out / "primary_branch.csv", study::primaryBranchCsvText(r));
+    else
+      std::filesystem::remove(out / "primary_branch.csv");  // not from an earlier run
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tribo orbit: %s\n", e.what());
     return 4;
@@ -151,7 +164,20 @@ int runBranch(Arguments& a) {
         "start            Hopf point at %s ~ %.8g, period %.8g s there (%d modes analyses)\n",
         b.parameter.c_str(), r.hopf_parameter, 2.0 * std::numbers::pi / r.hopf_omega,
         r.hopf_analyses);
+  if (r.switched.found) {
+    for (const study::BranchEvent& e : r.primary_events)
+      std::printf("primary event    %s at %s ~ %.6g (interpolated)\n",
+                  study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter);
+    std::printf(
+        "switch           %s located at %s = %.10g (multiplier %.9g%+.2gi, %d orbits at fixed "
+        "%s); primary: %zu points in primary_branch.csv\n",
+        study::branchSwitchName(b.switch_at).c_str(), b.parameter.c_str(), r.switched.parameter,
+        r.switched.multiplier.real(), r.switched.multiplier.imag(), r.switched.evaluations,
+        b.parameter.c_str(), r.primary.size());
+  }
   std::printf("results          %s (%.3g s)\n", out.string().c_str(), r.seconds);
+  if (b.switch_at != study::BranchSwitch::kNone && !r.switched.found && !r.interrupted && !r.lost)
+    return kExitNoSwitch;
   return r.interrupted ? kExitInterrupted : r.lost ? kExitBranchLost : 0;
 }
 
@@ -159,8 +185,9 @@ int runOrbit(Arguments& a) {
   if (a.continuation) return runBranch(a);
   if (a.branch_options) {
     std::fprintf(stderr,
-                 "tribo orbit: --max-points, --step, --arclength, --from-hopf and "
-                 "--hopf-amplitude apply with --continue only\n");
+                 "tribo orbit: --max-points, --step, --arclength, --from-hopf, "
+                 "--hopf-amplitude, --switch and --switch-amplitude apply with --continue "
+                 "only\n");
     return 1;
   }
   io::Scene scene;
@@ -314,6 +341,29 @@ Command addOrbitCommand(CLI::App& tribo) {
       "and TO (where `tribo modes` finds its leading oscillatory mode turning\n"
       "unstable) instead of at the orbit a settling run finds at FROM; finds the\n"
       "unstable cycles of a subcritical Hopf point");
+  addCheckedOption(*orbit, "--switch", "KIND",
+                   "with --continue: follow the branch until its first period_doubling (a\n"
+                   "multiplier through -1) or branch_point (a real multiplier through +1 that\n"
+                   "is not a fold's), locate it, and follow the branch that leaves it there\n"
+                   "(orbits of twice the period, or the same period) either way within FROM:TO;\n"
+                   "the first branch goes to DIR/primary_branch.csv",
+                   [a](const std::string& v) {
+                     if (v == "period_doubling")
+                       a->branch.switch_at = study::BranchSwitch::kPeriodDoubling;
+                     else if (v == "branch_point")
+                       a->branch.switch_at = study::BranchSwitch::kBranchPoint;
+                     else
+                       throw std::invalid_argument(
+                           "--switch: expected period_doubling or branch_point, found '" + v + "'");
+                     a->branch_options = true;
+                   });
+  addCheckedOption(*orbit, "--switch-amplitude", "A",
+                   "with --switch: the first orbit of the new branch is A off the located one\n"
+                   "[m or rad] along the critical mode, in its largest position entry (1e-3)",
+                   [a](const std::string& v) {
+                     a->branch.switch_amplitude = positive("--switch-amplitude", v);
+                     a->branch_options = true;
+                   });
   addCheckedOption(*orbit, "--hopf-amplitude", "A",
                    "with --from-hopf: the first orbit peaks A above steady sliding in the\n"
                    "summary's coordinate [m or rad] (1e-3)",

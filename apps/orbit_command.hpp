@@ -14,6 +14,7 @@ namespace tribo::app {
 
 inline constexpr int kExitNoOrbit = 11;
 inline constexpr int kExitBranchLost = 12;  // --continue: the branch stopped short of TO
+inline constexpr int kExitNoSwitch = 13;    // --switch: the branch had no such bifurcation
 inline constexpr int kExitInterrupted = 5;  // --continue: SIGINT or SIGTERM (as `tribo run`)
 
 // Adds `orbit` and its options to `tribo`.

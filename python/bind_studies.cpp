@@ -150,10 +150,38 @@ py::array_t<double> arrayOf(const std::vector<double>& v) {
   return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
 }
 
+// branch.csv's columns of `points` as NumPy arrays.
+py::dict branchColumns(const std::vector<study::BranchPoint>& points) {
+  std::vector<double> p, period, amplitude, largest, stick, slip, steady;
+  py::array_t<bool> stable(static_cast<py::ssize_t>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const study::BranchPoint& pt = points[i];
+    p.push_back(pt.parameter);
+    period.push_back(pt.period);
+    amplitude.push_back(pt.amplitude_pp);
+    largest.push_back(pt.largest);
+    stick.push_back(pt.stick_fraction);
+    slip.push_back(pt.min_slip);
+    steady.push_back(pt.steady_growth);
+    stable.mutable_at(static_cast<py::ssize_t>(i)) = pt.stable;
+  }
+  py::dict columns;
+  columns["parameter"] = arrayOf(p);
+  columns["period"] = arrayOf(period);
+  columns["amplitude_pp"] = arrayOf(amplitude);
+  columns["largest_multiplier"] = arrayOf(largest);
+  columns["stable"] = stable;
+  columns["stick_fraction"] = arrayOf(stick);
+  columns["min_slip"] = arrayOf(slip);
+  columns["steady_growth_rate"] = arrayOf(steady);
+  return columns;
+}
+
 py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter, double start,
                           double end, int max_points, double step, double settle, double tolerance,
                           bool from_hopf, double hopf_amplitude, const std::string& arclength,
-                          double forcing_period, int periods) {
+                          double forcing_period, int periods, const std::string& switch_at,
+                          double switch_amplitude) {
   if (!(max_points >= 2) || !(step >= 0.0) || !(settle >= 0.0) || !(tolerance > 0.0) ||
       !(hopf_amplitude >= 0.0) || !std::isfinite(hopf_amplitude))
     throw py::value_error(
@@ -184,6 +212,17 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
     throw py::value_error("orbit_branch: arclength must be 'si' or 'scaled', got '" + arclength +
                           "'");
   spec.hopf_amplitude = hopf_amplitude;
+  if (switch_at == "period_doubling")
+    spec.switch_at = study::BranchSwitch::kPeriodDoubling;
+  else if (switch_at == "branch_point")
+    spec.switch_at = study::BranchSwitch::kBranchPoint;
+  else if (switch_at != "none")
+    throw py::value_error(
+        "orbit_branch: switch must be 'none', 'period_doubling' or 'branch_point', got '" +
+        switch_at + "'");
+  if (!(switch_amplitude >= 0.0) || !std::isfinite(switch_amplitude))
+    throw py::value_error("orbit_branch: switch_amplitude must be >= 0");
+  spec.switch_amplitude = switch_amplitude;
   study::BranchResult r;
   {
     py::gil_scoped_release release;
@@ -192,34 +231,15 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
             : study::continueOrbitFromText(scene.origin, scene.scene.path, scene.overrides, spec);
   }
   py::object out = jsonToPython(study::branchJsonText(scene.scene.path, spec, r));
-  std::vector<double> p, period, amplitude, largest, stick, slip, steady;
-  py::array_t<bool> stable(static_cast<py::ssize_t>(r.points.size()));
+  out["columns"] = branchColumns(r.points);
+  if (r.switched.found) out["primary_columns"] = branchColumns(r.primary);
   py::list orbits;
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const study::BranchPoint& pt = r.points[i];
-    p.push_back(pt.parameter);
-    period.push_back(pt.period);
-    amplitude.push_back(pt.amplitude_pp);
-    largest.push_back(pt.largest);
-    stick.push_back(pt.stick_fraction);
-    slip.push_back(pt.min_slip);
-    steady.push_back(pt.steady_growth);
-    stable.mutable_at(static_cast<py::ssize_t>(i)) = pt.stable;
+  for (const study::BranchPoint& pt : r.points) {
     py::dict orbit;
     orbit["t"] = arrayOf(pt.t);
     orbit["x"] = arrayOf(pt.x);
     orbits.append(orbit);
   }
-  py::dict columns;
-  columns["parameter"] = arrayOf(p);
-  columns["period"] = arrayOf(period);
-  columns["amplitude_pp"] = arrayOf(amplitude);
-  columns["largest_multiplier"] = arrayOf(largest);
-  columns["stable"] = stable;
-  columns["stick_fraction"] = arrayOf(stick);
-  columns["min_slip"] = arrayOf(slip);
-  columns["steady_growth_rate"] = arrayOf(steady);
-  out["columns"] = columns;
   out["orbits"] = orbits;
   return out;
 }
@@ -250,15 +270,19 @@ void bindStudies(py::module_& m) {
         py::arg("end"), py::arg("max_points") = 20, py::arg("step") = 0.0, py::arg("settle") = 0.0,
         py::arg("tolerance") = 1e-9, py::arg("from_hopf") = false, py::arg("hopf_amplitude") = 0.0,
         py::arg("arclength") = "si", py::arg("period") = 0.0, py::arg("periods") = 1,
+        py::arg("switch") = "none", py::arg("switch_amplitude") = 0.0,
         "orbit_branch(scene, parameter, start, end, max_points=20, step=0, settle=0, "
-        "tolerance=1e-9, from_hopf=False, hopf_amplitude=0, arclength='si', period=0, periods=1) "
+        "tolerance=1e-9, from_hopf=False, hopf_amplitude=0, arclength='si', period=0, periods=1, "
+        "switch='none', switch_amplitude=0) "
         "-> dict: the orbit "
         "at parameter = start continued towards end as `tribo orbit --continue` does; "
         "from_hopf=True starts instead at the Hopf point of steady sliding between start and "
         "end, with a first orbit of hopf_amplitude (0: 1e-3) ('hopf': where); arclength "
         "'scaled' measures the step with each unknown over its scale (--arclength scaled); a "
         "scene whose inputs vary in time gives a branch of forced orbits (period, periods as "
-        "for orbit()) "
+        "for orbit()); switch='period_doubling' or 'branch_point' follows the branch to its first "
+        "such bifurcation, locates it and returns the branch that leaves it there (--switch: "
+        "'switch' says where, 'primary_columns' the first branch's columns) "
         "(branch.json's document: status, stop_reason, events, "
         "'branch' per point), with 'columns' (parameter, period, amplitude_pp, "
         "largest_multiplier, stable, stick_fraction, min_slip, steady_growth_rate as arrays) and "

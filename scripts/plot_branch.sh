@@ -4,7 +4,8 @@
 # ones dashed, with steady sliding along the axis beside them (its `tribo modes` growth rate at
 # each point: solid where it is stable, dashed where it is not) and the located events marked.
 # Where a stable orbit stands above a stable stretch of the axis, both motions coexist: a sweep
-# up and a sweep down disagree (hysteresis).
+# up and a sweep down disagree (hysteresis). After `--switch`, the branch switched from
+# (primary_branch.csv) is drawn in grey beside the new one.
 #   scripts/plot_branch.sh BRANCH_DIR [OUT.png]      # needs gnuplot; default BRANCH_DIR/branch.png
 # The figure in docs/figures/branch_stribeck.png comes from
 #   build/apps/tribo orbit scenes/belt.yaml --set friction=stribeck \
@@ -26,6 +27,11 @@ events=$(mktemp)
 trap 'rm -f "$events"' EXIT
 awk -F, -v OFS=, -v p="$p" -v a="$a" -v e="$e" 'NR > 1 && $e != "" {print $p, $a, $e}' "$csv" \
   > "$events"
+# With --switch: the branch it left (primary_branch.csv) in grey beside it.
+primary_plot=""
+if [ -f "$dir/primary_branch.csv" ]; then
+  primary_plot=", '$dir/primary_branch.csv' every ::1 using $p:(\$$s == 1 ? \$$a : 1/0) with linespoints lw 2 pt 7 lc 'gray40' title 'primary, stable', '' every ::1 using $p:(\$$s == 0 ? \$$a : 1/0) with linespoints lw 2 dt 2 pt 6 lc 'gray60' title 'primary, unstable'"
+fi
 name=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['parameter'])" \
   "$dir/branch.json" 2>/dev/null || echo parameter)
 observed=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['observed'])" \
@@ -44,6 +50,6 @@ plot '$csv' every ::1 using $p:(\$$s == 1 ? \$$a : 1/0) with linespoints lw 2 pt
      '' every ::1 using $p:(\$$s == 0 ? \$$a : 1/0) with linespoints lw 2 dt 2 pt 6 lc 'red' title 'unstable orbit', \
      '' every ::1 using $p:(\$$g < 0 ? 0 : 1/0) with points pt 5 ps 1.2 lc 'dark-green' title 'steady sliding stable', \
      '' every ::1 using $p:(\$$g >= 0 ? 0 : 1/0) with points pt 4 ps 1.2 lc 'orange' title 'steady sliding unstable', \
-     '$events' using 1:2:3 with labels offset 0,1.2 notitle
+     '$events' using 1:2:3 with labels offset 0,1.2 notitle$primary_plot
 GP
 echo "wrote $out"

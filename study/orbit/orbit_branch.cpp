@@ -16,6 +16,7 @@
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
 #include "study/modes/modes.hpp"
+#include "study/orbit/branch_switch.hpp"
 #include "study/orbit/forcing.hpp"
 #include "study/orbit/hopf_start.hpp"
 #include "study/orbit/orbit_coordinates.hpp"
@@ -33,6 +34,9 @@ constexpr double kHopfAmplitude = 0.2;
 // The step grows after a corrector that converged in at most 2 iterations, or in 3 that moved
 // the prediction by at most this fraction of the step (the branch is nearly straight there).
 constexpr double kStraight = 0.02;
+// Locating a bifurcation to switch at: orbits corrected at fixed p at most, and |g| enough.
+constexpr int kLocateEvaluations = 12;
+constexpr double kLocated = 1e-9;
 
 std::string assignment(const std::string& name, double value) {
   char buf[64];
@@ -65,6 +69,14 @@ class BranchShooter {
         dp_(dp),
         threads_(threads),
         forced_(forced) {}
+
+  // The same rows for orbits `factor` times as long: a forced orbit spans factor K forcing
+  // periods (an autonomous one's period is an unknown anyway).
+  BranchShooter withPeriods(int factor) const {
+    BranchShooter twin = *this;
+    if (twin.forced_) twin.forced_->periods *= factor;
+    return twin;
+  }
 
   io::Scene sceneAt(double p) const {
     std::vector<std::string> o = overrides_;
@@ -270,13 +282,7 @@ Eigen::VectorXd stateScales(const shooting::Flow& flow, const OrbitCoordinates& 
     hi = hi.cwiseMax(y);
   });
   const Eigen::VectorXd range = hi - lo;
-  auto kind = [&](Eigen::Index i) {
-    const std::string& name = coords.names()[static_cast<std::size_t>(i)];
-    const std::size_t dot = name.rfind('.');
-    if (dot == std::string::npos) return 'z';  // a friction state
-    const char c = name[dot + 1];
-    return c == 'r' || c == 'v' || c == 'w' ? c : 'x';
-  };
+  auto kind = [&](Eigen::Index i) { return coords.kind(i); };
   std::map<char, double> largest;
   for (Eigen::Index i = 0; i < range.size(); ++i)
     largest[kind(i)] = std::max(largest[kind(i)], range[i]);
@@ -449,6 +455,7 @@ BranchResult continueOrbitFromText(
   State reference = hopf ? hopf->steady : orbit->reference;
   if (r.forced) reference.time = 0.0;
   const OrbitCoordinates coords(*first.model, reference);
+  r.coordinates = coords.names();
   const Eigen::Index n = coords.size();
   // The Hopf start's guess: steady sliding plus eps times the mode's real part.
   const double eps = spec.hopf_amplitude > 0.0 ? spec.hopf_amplitude : kDefaultHopfAmplitude;
@@ -494,8 +501,9 @@ BranchResult continueOrbitFromText(
   r.stick_speed = stick_speed;
 
   // A converged point: its multipliers, tangent and the sampled orbit's amplitude.
-  auto makePoint = [&](const Eigen::VectorXd& z, const Eigen::MatrixXd& monodromy,
-                       const Eigen::VectorXd& tangent) {
+  auto makePoint = [&](const BranchShooter& shooter, const Eigen::VectorXd& z,
+                       const Eigen::MatrixXd& monodromy, const Eigen::VectorXd& tangent,
+                       const Eigen::VectorXd& w) {
     BranchPoint pt;
     pt.start = z.head(n);
     pt.period = z[n];
@@ -547,11 +555,15 @@ BranchResult continueOrbitFromText(
     pt.x_min = shooting::refinedMinimum(x);
     pt.amplitude_pp = pt.x_max - pt.x_min;
     // Steady sliding at the same parameter, as `tribo modes` analyses it: the branch beside
-    // the orbits (none where the scene has no steady state or the analysis fails).
-    try {
-      pt.steady_growth = analyzeModes(at).leading().growth_rate;
-    } catch (const std::exception&) {
-      pt.steady_growth = NAN;
+    // the orbits (none where the scene has no steady state or the analysis fails, nor for a
+    // forced scene, whose inputs keep it from resting in any state).
+    pt.steady_growth = NAN;
+    if (!r.forced) {
+      try {
+        pt.steady_growth = analyzeModes(at).leading().growth_rate;
+      } catch (const std::exception&) {
+        pt.steady_growth = NAN;
+      }
     }
     return pt;
   };
@@ -588,7 +600,7 @@ BranchResult continueOrbitFromText(
   }
   Eigen::VectorXd tangent = unitTangent(A, along.cwiseQuotient(w), w);
   {
-    BranchPoint pt = makePoint(z, monodromy, tangent);
+    BranchPoint pt = makePoint(shooter, z, monodromy, tangent, w);
     pt.iterations = first_iterations;
     pt.residual = F.norm() / (1.0 + z.head(n).norm());
     r.points.push_back(std::move(pt));
@@ -596,101 +608,262 @@ BranchResult continueOrbitFromText(
   }
   const double low = std::min(spec.from, spec.to), high = std::max(spec.from, spec.to);
 
-  Eigen::VectorXd d = tangent;  // the predictor's direction: the tangent, then the secant
-  double ds = step;
-  while (true) {
-    if (spec.stop && spec.stop->load()) {
-      r.interrupted = true;
-      r.stop_reason = "interrupted after " + std::to_string(r.points.size()) + " points, at " +
-                      spec.parameter + " = " + shooting::messageNumber(r.points.back().parameter);
-      break;
-    }
-    if (static_cast<int>(r.points.size()) >= spec.max_points) {
-      r.stop_reason = "the largest number of points (" + std::to_string(spec.max_points) +
-                      ") was reached before " + shooting::messageNumber(spec.to);
-      break;
-    }
-    const Eigen::VectorXd z_pred = z + ds * w.cwiseProduct(d);
-    Correction c = correct(shooter, z_pred, d, ds, w, spec.max_corrector, spec.orbit.tolerance);
-    Eigen::VectorXd t;
-    BranchPoint pt;
-    if (c.ok) {
-      t = unitTangent(c.A, tangent, w);
-      pt = makePoint(c.z, c.monodromy, t);
-      // An equilibrium closes on itself for any T: a branch whose orbit shrinks to nothing
-      // has left the orbits (steady sliding or sticking), not found one. (A forced orbit's
-      // period is fixed: a small response is an orbit.)
-      if (!r.forced && !(pt.amplitude_pp > kCollapsed * r.points.front().amplitude_pp)) {
-        c.ok = false;
-        c.why = "the orbit collapsed onto an equilibrium at " + spec.parameter + " = " +
-                shooting::messageNumber(pt.parameter) + " (amplitude " +
-                shooting::messageNumber(pt.amplitude_pp) + ")";
-      }
-    }
-    if (!c.ok) {
-      ds /= 2;
-      if (ds < min_step) {
-        r.lost = true;
-        r.stop_reason = "the branch was lost after " + spec.parameter + " = " +
-                        shooting::messageNumber(z[n + 1]) +
-                        ": the corrector failed with the step at its " + "smallest (" +
-                        shooting::messageNumber(2 * ds) + "): " + c.why;
+  // Follows a branch from its first point (in r.points, at z with `tangent`) on `shooter`,
+  // in the norm of w: towards `to` (or, `either_way`, until p leaves [from, to]); with
+  // `switch_at`, until the first such bifurcation between the last two points.
+  std::unique_ptr<BranchShooter> secondary;  // a switch's: orbits twice as long, or the same
+  auto follow = [&](const BranchShooter& shooter, Eigen::VectorXd z, Eigen::VectorXd tangent,
+                    const Eigen::VectorXd& w, bool either_way, BranchSwitch switch_at) {
+    Eigen::VectorXd d = tangent;  // the predictor's direction: the tangent, then the secant
+    double ds = step;
+    while (true) {
+      if (spec.stop && spec.stop->load()) {
+        r.interrupted = true;
+        r.stop_reason = "interrupted after " + std::to_string(r.points.size()) + " points, at " +
+                        spec.parameter + " = " + shooting::messageNumber(r.points.back().parameter);
         break;
       }
-      continue;
+      if (static_cast<int>(r.points.size()) >= spec.max_points) {
+        r.stop_reason = "the largest number of points (" + std::to_string(spec.max_points) +
+                        ") was reached before " + shooting::messageNumber(spec.to);
+        break;
+      }
+      const Eigen::VectorXd z_pred = z + ds * w.cwiseProduct(d);
+      Correction c = correct(shooter, z_pred, d, ds, w, spec.max_corrector, spec.orbit.tolerance);
+      Eigen::VectorXd t;
+      BranchPoint pt;
+      if (c.ok) {
+        t = unitTangent(c.A, tangent, w);
+        pt = makePoint(shooter, c.z, c.monodromy, t, w);
+        // An equilibrium closes on itself for any T: a branch whose orbit shrinks to nothing
+        // has left the orbits (steady sliding or sticking), not found one. (A forced orbit's
+        // period is fixed: a small response is an orbit.)
+        if (!r.forced && !(pt.amplitude_pp > kCollapsed * r.points.front().amplitude_pp)) {
+          c.ok = false;
+          c.why = "the orbit collapsed onto an equilibrium at " + spec.parameter + " = " +
+                  shooting::messageNumber(pt.parameter) + " (amplitude " +
+                  shooting::messageNumber(pt.amplitude_pp) + ")";
+        }
+      }
+      if (!c.ok) {
+        ds /= 2;
+        if (ds < min_step) {
+          r.lost = true;
+          r.stop_reason = "the branch was lost after " + spec.parameter + " = " +
+                          shooting::messageNumber(z[n + 1]) +
+                          ": the corrector failed with the step at its " + "smallest (" +
+                          shooting::messageNumber(2 * ds) + "): " + c.why;
+          break;
+        }
+        continue;
+      }
+      pt.iterations = c.iterations;
+      pt.residual = c.residual;
+      pt.step = ds;
+      pt.arclength = r.points.back().arclength + (c.z - z).cwiseQuotient(w).norm();
+      const double p = pt.parameter;
+      r.points.push_back(std::move(pt));
+      if (progress) progress(r.points.back(), r.points.size() - 1);
+      d = (c.z - z).cwiseQuotient(w).normalized();
+      z = c.z;
+      tangent = t;
+      if (either_way && (p <= low || p >= high)) {  // a Hopf start's branch goes either way
+        r.reached_end = true;
+        r.stop_reason = "reached " + spec.parameter + " = " +
+                        shooting::messageNumber(p <= low ? low : high) + " (the range's end)";
+        break;
+      }
+      if (!either_way && (p - spec.to) * direction >= 0.0) {
+        r.reached_end = true;
+        r.stop_reason = "reached " + spec.parameter + " = " + shooting::messageNumber(spec.to);
+        break;
+      }
+      if (!either_way && (p - spec.from) * direction < 0.0) {
+        r.stop_reason =
+            "the branch turned back past the start value " + shooting::messageNumber(spec.from);
+        break;
+      }
+      const std::vector<BranchEvent> events = detectBranchEvents(r.points, stick_speed, !r.forced);
+      if (!events.empty() && events.back().kind == BranchEventKind::kHopf &&
+          events.back().after + 1 == r.points.size()) {
+        r.stop_reason = "the orbit shrank onto the steady state at a Hopf point, " +
+                        spec.parameter + " ~ " + shooting::messageNumber(events.back().parameter) +
+                        " (past it the branch retraces itself)";
+        break;
+      }
+      if (const std::optional<BranchEvent> e = switchEvent(events, switch_at);
+          e && e->after + 1 == r.points.size()) {
+        r.switched.kind = e->kind;
+        r.switched.before = e->before;
+        r.switched.after = e->after;
+        r.stop_reason = branchEventName(e->kind) + " at " + spec.parameter + " ~ " +
+                        shooting::messageNumber(e->parameter) + ": switching branches there";
+        break;
+      }
+      const double off = (c.z - z_pred).cwiseQuotient(w).norm() / ds;
+      if (c.iterations <= 2 || (c.iterations == 3 && off <= kStraight))
+        ds = std::min(1.5 * ds, max_step);
     }
-    pt.iterations = c.iterations;
-    pt.residual = c.residual;
-    pt.step = ds;
-    pt.arclength = r.points.back().arclength + (c.z - z).cwiseQuotient(w).norm();
-    const double p = pt.parameter;
-    r.points.push_back(std::move(pt));
-    if (progress) progress(r.points.back(), r.points.size() - 1);
-    d = (c.z - z).cwiseQuotient(w).normalized();
-    z = c.z;
-    tangent = t;
-    if (hopf && (p <= low || p >= high)) {  // a Hopf start's branch goes either way
-      r.reached_end = true;
-      r.stop_reason = "reached " + spec.parameter + " = " +
-                      shooting::messageNumber(p <= low ? low : high) + " (the range's end)";
-      break;
+  };
+  follow(shooter, z, tangent, w, hopf != nullptr, spec.switch_at);
+  r.events = detectBranchEvents(r.points, r.stick_speed, !r.forced);
+  if (spec.switch_at != BranchSwitch::kNone && !r.interrupted && !r.lost) {
+    if (r.switched.after == 0) {  // the primary ended without the bifurcation asked for
+      r.stop_reason += "; no " + switchWords(spec.switch_at) + " on it to switch at";
+    } else {
+      r.events = detectBranchEvents(r.points, stick_speed, !r.forced);
+      // Locate it: g(p) = |mu(p)| - 1 between the two points, each g from the orbit corrected
+      // at fixed p (the parameter's row), by Illinois' regula falsi.
+      const BranchPoint &pa = r.points[r.switched.before], &pb = r.points[r.switched.after];
+      auto zOf = [&](const BranchPoint& q) {
+        Eigen::VectorXd zq(n + 2);
+        zq << q.start, q.period, q.parameter;
+        return zq;
+      };
+      const Eigen::VectorXd za = zOf(pa), zb = zOf(pb);
+      Eigen::VectorXd p_row = Eigen::VectorXd::Zero(n + 2);
+      p_row[n + 1] = 1.0;
+      struct Probe {
+        double p = 0, g = NAN;
+        Correction c;
+        CriticalMode mode;
+      };
+      auto probe = [&](double p) {
+        Probe q;
+        q.p = p;
+        const double s = (p - pa.parameter) / (pb.parameter - pa.parameter);
+        q.c = newtonWithRow(
+            shooter, za + s * (zb - za), p_row, p, INFINITY, Eigen::VectorXd::Ones(n + 2),
+            std::max(spec.max_corrector, spec.orbit.max_iterations), spec.orbit.tolerance);
+        ++r.switched.evaluations;
+        if (q.c.ok) {
+          q.mode = criticalMode(q.c.monodromy, q.c.A.col(n).head(n), spec.switch_at, !r.forced);
+          if (q.mode.ok) q.g = std::abs(q.mode.mu) - 1.0;
+        }
+        return q;
+      };
+      Probe a = probe(pa.parameter), b = probe(pb.parameter);
+      Probe best = std::abs(a.g) < std::abs(b.g) ? a : b;
+      std::string why;
+      if (!(a.g * b.g <= 0.0)) {
+        why = "the critical multiplier's modulus does not cross 1 between the points (" +
+              shooting::messageNumber(a.g + 1.0) + ", " + shooting::messageNumber(b.g + 1.0) + ")";
+      } else {
+        int side = 0;  // Illinois: halve the g of an end kept twice
+        for (int k = 0; k < kLocateEvaluations && std::abs(best.g) > kLocated; ++k) {
+          double p = b.p - b.g * (b.p - a.p) / (b.g - a.g);
+          if (!std::isfinite(p) || p == a.p || p == b.p) p = 0.5 * (a.p + b.p);
+          Probe q = probe(p);
+          if (!std::isfinite(q.g)) q = probe(0.5 * (a.p + b.p));
+          if (!std::isfinite(q.g)) {
+            why = "the orbit at " + spec.parameter + " = " + shooting::messageNumber(q.p) +
+                  " was not found: " + q.c.why;
+            break;
+          }
+          if (std::abs(q.g) < std::abs(best.g)) best = q;
+          if (q.g * b.g < 0.0) {
+            a = b;
+            b = q;
+            side = 0;
+          } else {
+            b = q;
+            if (side == 1) a.g /= 2;
+            side = 1;
+          }
+        }
+      }
+      r.switched.parameter = best.p;
+      r.switched.multiplier = best.mode.mu;
+      r.switched.residual = std::abs(best.g);
+      if (why.empty() && std::isfinite(best.g) && best.mode.ok) {
+        // The secondary's first orbit, a off the located one along v, the row r . z fixed
+        // with r = (v, 0, 0) less its part along the primary's tangent there.
+        const bool doubled = spec.switch_at == BranchSwitch::kPeriodDoubling;
+        const double a_off =
+            spec.switch_amplitude > 0.0 ? spec.switch_amplitude : kDefaultSwitchAmplitude;
+        r.switched.amplitude = a_off;
+        r.switched.period = best.c.z[n];
+        const Eigen::VectorXd ones = Eigen::VectorXd::Ones(n + 2);
+        Eigen::VectorXd old_tangent = unitTangent(best.c.A, (zb - za).normalized(), ones);
+        if (doubled) old_tangent[n] *= 2.0;  // the primary traversed twice
+        old_tangent.normalize();
+        const Eigen::VectorXd v =
+            normalizedMode(best.mode.v, coords, coords.positionIndex(body, axis));
+        Eigen::VectorXd row = Eigen::VectorXd::Zero(n + 2);
+        row.head(n) = v;
+        row -= row.dot(old_tangent) * old_tangent;
+        Eigen::VectorXd z1 = best.c.z;
+        z1.head(n) += a_off * v;
+        if (doubled) z1[n] *= 2.0;
+        secondary = std::make_unique<BranchShooter>(shooter.withPeriods(doubled ? 2 : 1));
+        const Correction c1 = newtonWithRow(*secondary, z1, row, row.dot(z1), INFINITY, ones,
+                                            std::max(spec.max_corrector, spec.orbit.max_iterations),
+                                            spec.orbit.tolerance);
+        if (c1.ok) {
+          r.switched.found = true;
+          r.primary = std::move(r.points);
+          r.primary_events = std::move(r.events);
+          r.points.clear();
+          r.events.clear();
+          // The scaled norm's weights: the primary's, or where the critical mode moves an
+          // entry more, that motion at 1000 a (1 m or rad in the mode's largest position
+          // entry by default): an entry the primary did not move (a hanging pendulum's
+          // swing, its weight 1e-3 of its kind's range) must not measure the new motion.
+          Eigen::VectorXd w2 = w;
+          if (scaled) {
+            w2.head(n) = w.head(n).cwiseMax(1000.0 * a_off * v.cwiseAbs());
+            if (doubled) w2[n] *= 2.0;
+            r.weights = w2;
+          }
+          const Eigen::VectorXd t1 = unitTangent(c1.A, row.cwiseProduct(w2), w2);
+          BranchPoint pt = makePoint(*secondary, c1.z, c1.monodromy, t1, w2);
+          pt.iterations = c1.iterations;
+          pt.residual = c1.residual;
+          r.points.push_back(std::move(pt));
+          if (progress) progress(r.points.back(), 0);
+          r.stop_reason.clear();
+          follow(*secondary, c1.z, t1, w2, true, BranchSwitch::kNone);
+        } else {
+          why = "no orbit " + shooting::messageNumber(a_off) +
+                " off the located one along "
+                "its critical mode: " +
+                c1.why + " (another --switch-amplitude may help)";
+        }
+      }
+      if (!r.switched.found) {
+        r.lost = true;
+        r.stop_reason = "the " + switchWords(spec.switch_at) + " between " + spec.parameter +
+                        " = " + shooting::messageNumber(pa.parameter) + " and " +
+                        shooting::messageNumber(pb.parameter) +
+                        " gave no secondary branch: " + (why.empty() ? "it was not located" : why);
+      }
     }
-    if (!hopf && (p - spec.to) * direction >= 0.0) {
-      r.reached_end = true;
-      r.stop_reason = "reached " + spec.parameter + " = " + shooting::messageNumber(spec.to);
-      break;
-    }
-    if (!hopf && (p - spec.from) * direction < 0.0) {
-      r.stop_reason =
-          "the branch turned back past the start value " + shooting::messageNumber(spec.from);
-      break;
-    }
-    const std::vector<BranchEvent> events = detectBranchEvents(r.points, stick_speed, !r.forced);
-    if (!events.empty() && events.back().kind == BranchEventKind::kHopf &&
-        events.back().after + 1 == r.points.size()) {
-      r.stop_reason = "the orbit shrank onto the steady state at a Hopf point, " + spec.parameter +
-                      " ~ " + shooting::messageNumber(events.back().parameter) +
-                      " (past it the branch retraces itself)";
-      break;
-    }
-    const double off = (c.z - z_pred).cwiseQuotient(w).norm() / ds;
-    if (c.iterations <= 2 || (c.iterations == 3 && off <= kStraight))
-      ds = std::min(1.5 * ds, max_step);
   }
   r.events = detectBranchEvents(r.points, r.stick_speed, !r.forced);
+  // The secondary's first orbit is a off the bifurcation, where its critical multiplier is
+  // still 1 or -1 to O(a^2) and dp/ds 0 to O(a): a fold or stability change between it and
+  // the next point is that bifurcation, reported as the switch, not a second one.
+  if (r.switched.found)
+    std::erase_if(r.events, [](const BranchEvent& e) {
+      return e.before == 0 &&
+             (e.kind == BranchEventKind::kFold || e.kind == BranchEventKind::kStabilityChange);
+    });
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
   return r;
 }
 
-std::string branchCsvText(const BranchResult& r) {
+namespace {
+
+std::string pointsCsvText(const std::vector<BranchPoint>& points,
+                          const std::vector<BranchEvent>& branch_events) {
   std::string csv =
       "index,parameter,period,amplitude_pp,largest_multiplier,stable,stick_fraction,min_slip,"
       "x_min,x_max,dp_ds,arclength,iterations,residual,trivial_error,steady_growth_rate,"
       "event\n";
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const BranchPoint& p = r.points[i];
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const BranchPoint& p = points[i];
     std::string events;
-    for (const BranchEvent& e : r.events)
+    for (const BranchEvent& e : branch_events)
       if (e.after == i) {
         if (!events.empty()) events += ';';
         events += branchEventName(e.kind);
@@ -705,6 +878,14 @@ std::string branchCsvText(const BranchResult& r) {
            "\n";
   }
   return csv;
+}
+
+}  // namespace
+
+std::string branchCsvText(const BranchResult& r) { return pointsCsvText(r.points, r.events); }
+
+std::string primaryBranchCsvText(const BranchResult& r) {
+  return pointsCsvText(r.primary, r.primary_events);
 }
 
 std::string branchOrbitsCsvText(const BranchResult& r) {
@@ -744,6 +925,30 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
   } else {
     j["start"] = "orbit";
   }
+  if (spec.switch_at != BranchSwitch::kNone) {
+    // Where the secondary branch (this one) left the primary (primary_branch.csv).
+    j["switch"] = {{"at", branchSwitchName(spec.switch_at)},
+                   {"found", r.switched.found},
+                   {"primary_points", r.switched.found ? r.primary.size() : r.points.size()}};
+    if (r.switched.after > 0) {
+      j["switch"]["between"] = {r.switched.before, r.switched.after};
+      j["switch"]["evaluations"] = r.switched.evaluations;
+    }
+    if (r.switched.found) {
+      j["switch"]["parameter"] = r.switched.parameter;
+      j["switch"]["multiplier"] = {{"re", r.switched.multiplier.real()},
+                                   {"im", r.switched.multiplier.imag()}};
+      j["switch"]["residual"] = r.switched.residual;
+      j["switch"]["primary_period"] = r.switched.period;
+      j["switch"]["amplitude"] = r.switched.amplitude;
+      nlohmann::ordered_json primary_events = nlohmann::ordered_json::array();
+      for (const BranchEvent& e : r.primary_events)
+        primary_events.push_back({{"kind", branchEventName(e.kind)},
+                                  {"parameter", e.parameter},
+                                  {"between", {e.before, e.after}}});
+      j["switch"]["primary_events"] = primary_events;
+    }
+  }
   j["points"] = r.points.size();
   nlohmann::ordered_json events = nlohmann::ordered_json::array();
   for (const BranchEvent& e : r.events)
@@ -780,7 +985,8 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                    {"max_step", spec.max_step},
                    {"tolerance", spec.orbit.tolerance},
                    {"fd_step", spec.orbit.fd_step},
-                   {"arclength_norm", arclengthNormName(spec.norm)}};
+                   {"arclength_norm", arclengthNormName(spec.norm)},
+                   {"switch_amplitude", spec.switch_amplitude}};
   // The scaled norm's weights of the period and the parameter (the state's are per entry).
   if (spec.norm == ArclengthNorm::kScaled && r.weights.size() >= 2)
     j["settings"]["weights"] = {{"period", r.weights[r.weights.size() - 2]},

@@ -63,7 +63,22 @@
 // at t = 0 so that the forcing's phase stays whatever P becomes (a branch in the forcing
 // frequency: the frequency response, its folds and the unstable response between them), no
 // trivial multiplier, no Hopf start, no collapse check (a small response is an orbit).
-// Not here: branch switching at a period doubling, matrix-free solves for large states.
+// Branch switching (BranchSpec::switch_at): the branch above (the primary) is followed until
+// the first period doubling (or branch point: a real multiplier through +1 that is not a
+// fold's) between two of its points; the point is then located by the Illinois variant of
+// regula falsi on g(p) = |mu(p)| - 1, mu the multiplier nearest -1 (+1, the trivial one set
+// aside by its eigenvector, the flow's direction, the T column of the Jacobian), each g from
+// the orbit corrected at fixed p (the parameter's row in place of the arclength's), to
+// |g| <= 1e-9 or 12 evaluations. The secondary branch leaves the located orbit z* = (y*, T*,
+// p*) along the critical multiplier's eigenvector v (Seydel 2010, sec. 7.6-7.7; Kuznetsov,
+// "Elements of Applied Bifurcation Theory", 3rd ed., Springer 2004, sec. 10.3): at a period
+// doubling the orbit of twice the period (T* -> 2 T*; a forced orbit spans 2 K forcing
+// periods), at a branch point the same period. Its first orbit is solved with the row
+// r . (z - z1) = 0, z1 = (y* + a v, T', p*), r = (v, 0, 0) less its part along the primary's
+// tangent (so the primary, traversed once or twice, does not satisfy it), v scaled so that its
+// largest position or rotation entry is 1 and a = switch_amplitude [m or rad]; the secondary
+// branch then runs either way from it, within [from, to], like a Hopf start's.
+// Not here: matrix-free solves for large states; a torus's branch (quasi-periodic, no orbit).
 #pragma once
 
 #include <Eigen/Dense>
@@ -78,6 +93,12 @@
 #include "study/orbit/periodic_orbit.hpp"
 
 namespace tribo::study {
+
+// Which bifurcation of the primary branch the secondary leaves from (above).
+enum class BranchSwitch { kNone, kPeriodDoubling, kBranchPoint };
+// "none", "period_doubling", "branch_point".
+std::string branchSwitchName(BranchSwitch kind);
+inline constexpr double kDefaultSwitchAmplitude = 1e-3;
 
 // The arclength's norm (above): the unknowns in SI units, or each over its own scale.
 enum class ArclengthNorm { kSi, kScaled };
@@ -102,6 +123,11 @@ struct BranchSpec {
   // range.
   bool from_hopf = false;
   double hopf_amplitude = 0;
+  // Switch at the primary branch's first period doubling or branch point to the branch that
+  // leaves it there; the first secondary orbit is `switch_amplitude` [m or rad] off the
+  // primary's along the critical mode (0: kDefaultSwitchAmplitude).
+  BranchSwitch switch_at = BranchSwitch::kNone;
+  double switch_amplitude = 0;
   // Set from outside (a signal handler): the branch ends after the point in hand, with the
   // points so far (BranchResult::interrupted).
   const std::atomic<bool>* stop = nullptr;
@@ -141,10 +167,31 @@ struct BranchEvent {
   double parameter = 0;               // where, interpolated
 };
 
+// Where a secondary branch left the primary (BranchSpec::switch_at).
+struct BranchSwitchPoint {
+  bool found = false;                 // the bifurcation was on the primary branch and located
+  BranchEventKind kind{};             // kPeriodDoubling or kStabilityChange (a branch point)
+  std::size_t before = 0, after = 0;  // the primary's points it lies between
+  double parameter = NAN;             // located
+  std::complex<double> multiplier;    // the critical one at the located orbit
+  double residual = NAN;              // |g| = ||mu| - 1| there
+  int evaluations = 0;                // orbits corrected at fixed p to locate it
+  double period = NAN;                // the primary orbit's there
+  double amplitude = 0;               // a, the first secondary orbit's offset
+};
+
 struct BranchResult {
-  std::string observed;  // "box.x"
+  std::string observed;                  // "box.x"
+  std::vector<std::string> coordinates;  // the names of each point's `start` entries
+  // The branch; with a switch, the secondary one (the primary's in `primary`).
   std::vector<BranchPoint> points;
   std::vector<BranchEvent> events;
+  // With BranchSpec::switch_at: the primary branch up to the bifurcation, its events and where
+  // the secondary left it (switched.found false: the primary ended without one; `points` then
+  // holds the primary).
+  std::vector<BranchPoint> primary;
+  std::vector<BranchEvent> primary_events;
+  BranchSwitchPoint switched;
   double stick_speed = 0;    // the scene's output.summary.stick_speed, for grazing
   bool reached_end = false;  // a point at or past `to`
   bool lost = false;         // stopped by the corrector failing at the smallest step
@@ -188,6 +235,8 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
 // events, the stop reason; branch_orbits.csv: each point's sampled orbit (point, t and the
 // observed coordinate), for replay and plots.
 std::string branchCsvText(const BranchResult& r);
+// primary_branch.csv (with a switch): the primary branch's rows, in branch.csv's columns.
+std::string primaryBranchCsvText(const BranchResult& r);
 std::string branchOrbitsCsvText(const BranchResult& r);
 std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec,
                            const BranchResult& r);

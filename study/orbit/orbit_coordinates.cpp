@@ -78,6 +78,11 @@ State OrbitCoordinates::fromVector(const Eigen::VectorXd& y) const {
   return s;
 }
 
+char OrbitCoordinates::kind(Eigen::Index i) const {
+  if (i >= friction_offset_) return 'z';
+  return "xrvw"[(i % 12) / 3];
+}
+
 Eigen::Index OrbitCoordinates::velocityIndex(int body, int axis) const {
   const Eigen::Index o = offset_.at(static_cast<std::size_t>(body));
   return o < 0 ? -1 : o + 6 + axis;

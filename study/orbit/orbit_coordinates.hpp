@@ -36,6 +36,9 @@ class OrbitCoordinates {
   // The index in y of body `body`'s velocity component `axis` (0..2); -1 for a body that is
   // not dynamic.
   Eigen::Index velocityIndex(int body, int axis) const;
+  // What entry i is: 'x' a position, 'r' a rotation, 'v' a velocity, 'w' an angular
+  // velocity, 'z' a friction law's internal state.
+  char kind(Eigen::Index i) const;
   Eigen::Index positionIndex(int body, int axis) const;
 
  private:

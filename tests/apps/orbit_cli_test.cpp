@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -289,6 +290,54 @@ TEST_F(OrbitCli, FromHopfStartsAtTheHopfPointAndSaysWhere) {
   EXPECT_EQ(none.status, 11) << none.output;
   EXPECT_NE(none.output.find("no Hopf point between 0.3 and 0.6"), std::string::npos)
       << none.output;
+}
+
+TEST_F(OrbitCli, SwitchWritesBothBranchesAndExitsThirteenWithoutTheBifurcation) {
+  // The parametric pendulum loses its hanging orbit by a period doubling (located and checked
+  // against the Mathieu equation in tests/study/branch_switch_test.cpp).
+  const std::string pendulum = std::string(TRIBO_SOURCE_DIR) + "/scenes/parametric_pendulum.yaml";
+  const Result r =
+      runTribo("orbit " + pendulum + " --out " + dir_.string() +
+               " --continue f=1.2:0.85 --switch period_doubling --step 0.1 --max-points 3");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("switched at the located period_doubling"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("switch           period_doubling located at f = 1.0794"),
+            std::string::npos)
+      << r.output;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_TRUE(j["switch"]["found"].get<bool>());
+  EXPECT_NEAR(j["switch"]["parameter"].get<double>(), 1.0794813, 1e-6);
+  EXPECT_EQ(j["points"].get<int>(), 3);
+  // The primary's rows in primary_branch.csv, branch.csv's columns; the secondary's periods
+  // twice the shaking's.
+  const std::string primary = slurp(dir_ / "primary_branch.csv");
+  EXPECT_EQ(primary.rfind("index,parameter,period,", 0), 0u) << primary;
+  EXPECT_NE(primary.find("period_doubling"), std::string::npos) << primary;
+  for (const auto& p : j["branch"])
+    EXPECT_NEAR(p["period"].get<double>() * p["parameter"].get<double>(), 2.0, 1e-9);
+
+  // The forced linear oscillator has no period doubling: the branch is written, exit 13, and
+  // no primary_branch.csv is left from the run before.
+  const std::string oscillator = std::string(TRIBO_SOURCE_DIR) + "/scenes/forced_oscillator.yaml";
+  const Result none = runTribo("orbit " + oscillator + " --out " + dir_.string() +
+                               " --continue f=0.8:1.2 --step 0.2 --switch period_doubling");
+  EXPECT_EQ(none.status, 13) << none.output;
+  EXPECT_NE(none.output.find("no period doubling on it to switch at"), std::string::npos)
+      << none.output;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "primary_branch.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "branch.csv"));
+  // Usage: a kind it does not know, an amplitude without --switch.
+  const Result bad = runTribo("orbit " + pendulum + " --continue f=1.2:0.85 --switch torus");
+  EXPECT_EQ(bad.status, 1) << bad.output;
+  EXPECT_NE(bad.output.find("expected period_doubling or branch_point, found 'torus'"),
+            std::string::npos)
+      << bad.output;
+  const Result lone = runTribo("orbit " + pendulum + " --out " + dir_.string() +
+                               " --continue f=1.2:0.85 --switch-amplitude 0.01");
+  EXPECT_EQ(lone.status, 1) << lone.output;
+  EXPECT_NE(lone.output.find("--switch-amplitude applies with --switch only"), std::string::npos)
+      << lone.output;
 }
 
 }  // namespace

@@ -268,3 +268,52 @@ def test_orbit_branch_of_a_forced_scene_follows_the_frequency_response(source_di
     assert two["branch"][0]["period"] == pytest.approx(2.0, rel=1e-9)
     with pytest.raises(ValueError, match="periods >= 1"):
         tribo.orbit_branch(scene, "f", 1.0, 1.2, periods=0)
+
+
+def test_orbit_branch_switches_at_the_parametric_pendulums_period_doubling(source_dir):
+    """switch='period_doubling' follows the shaken pendulum's hanging orbit to the edge of the
+    damped Mathieu equation's first tongue (multiplier -1; its frequency found here by RK4 on
+    th'' + (c th' + m L (g + a(t)) th) / I_O = 0 and bisection) and returns the swinging
+    orbits of twice the shaking's period that leave it there; a kind it does not know is
+    refused."""
+    m, L, i_bob, c, V, g = 1.0, 1.0, 1e-4, 0.1, 0.5, 9.81
+    inertia = i_bob + m * L * L
+
+    def monodromy_g(f, n=2000):
+        def rhs(t, y):
+            a = 2 * math.pi * f * V * math.cos(2 * math.pi * f * t)
+            return (y[1], -(c * y[1] + m * L * (g + a) * y[0]) / inertia)
+
+        def flow(y):
+            h, t = 1 / f / n, 0.0
+            for _ in range(n):
+                k1 = rhs(t, y)
+                k2 = rhs(t + h / 2, (y[0] + h / 2 * k1[0], y[1] + h / 2 * k1[1]))
+                k3 = rhs(t + h / 2, (y[0] + h / 2 * k2[0], y[1] + h / 2 * k2[1]))
+                k4 = rhs(t + h, (y[0] + h * k3[0], y[1] + h * k3[1]))
+                y = tuple(y[j] + h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]) for j in (0, 1))
+                t += h
+            return y
+
+        a, b = flow((1.0, 0.0)), flow((0.0, 1.0))
+        tr, det = a[0] + b[1], a[0] * b[1] - a[1] * b[0]
+        disc = tr * tr / 4 - det
+        return math.sqrt(det) - 1 if disc < 0 else -(tr / 2 - math.sqrt(disc)) - 1
+
+    lo, hi = 1.06, 1.12  # unstable at lo, stable at hi
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if monodromy_g(mid) > 0 else (lo, mid)
+    scene = tribo.load_scene(str(source_dir / "scenes" / "parametric_pendulum.yaml"))
+    b = tribo.orbit_branch(scene, "f", 1.2, 0.85, step=0.1, max_points=3,
+                           switch="period_doubling")
+    assert b["switch"]["found"] is True
+    assert b["switch"]["parameter"] == pytest.approx(lo, rel=1e-6)
+    assert b["switch"]["multiplier"]["re"] == pytest.approx(-1.0, abs=1e-8)
+    assert len(b["primary_columns"]["parameter"]) == b["switch"]["primary_points"]
+    assert max(b["primary_columns"]["amplitude_pp"]) < 1e-12  # hanging straight down
+    for f, period in zip(b["columns"]["parameter"], b["columns"]["period"]):
+        assert f * period == pytest.approx(2.0, rel=1e-9)
+    assert b["columns"]["amplitude_pp"][-1] > 0.1
+    with pytest.raises(ValueError, match="switch must be"):
+        tribo.orbit_branch(scene, "f", 1.2, 0.85, switch="torus")
