@@ -3,6 +3,7 @@
 # scene, into docs/figures/ (PNG, gnuplot). One command per figure, or all of them:
 #   scripts/figures/figures.sh                 # every figure
 #   scripts/figures/figures.sh fig6 fig10      # some
+#   scripts/figures/figures.sh fig11c fig12c   # Figs. 11-12 from branches of periodic orbits
 # Sweeps go to out/figures/<fig>/ and resume when run again, so re-plotting is cheap.
 # Environment: TRIBO (default build/apps/tribo), OUT (default out/figures), FIGURES (default
 # docs/figures), LAUNCH (a prefix for the contour-map sweeps, e.g. "mpirun -n 2").
@@ -97,7 +98,43 @@ fig12() {
     "Fig. 12: limit-cycle amplitude p-p [m] (v_b = 1.5 m/s)"
 }
 
-ALL=(fig4 fig5 fig6 fig7 fig8 fig9 fig10 fig11 fig12)
+# The contour maps again from branches of periodic orbits (`tribo orbit --continue`,
+# docs/orbits.md): one branch per value of the map's other parameter, sampled on the sweep's
+# grid (branch_grid.py), timed; beside the sweep's map when it is there, the differences.
+branches() {  # NAME PARAMETER FROM:TO OTHER VALUES(comma-separated)
+  local name=$1 parameter=$2 range=$3 other=$4 values=$5 v t0 dirs=()
+  mkdir -p "$OUT/$name"
+  t0=$(date +%s.%N)
+  for v in ${values//,/ }; do
+    $TRIBO orbit $SCENE --out "$OUT/$name/$other=$v" --set dt=0.004 --set "$other=$v" \
+      --continue "$parameter=$range" --arclength scaled --step 0.3 --max-points 80 --tolerance 1e-6 \
+      >"$OUT/$name/$other=$v.log" 2>&1 || echo "figures: $name: $other=$v ended with $?" >&2
+    dirs+=("$OUT/$name/$other=$v=$v")
+  done
+  echo "figures: branches $name: ${#dirs[@]} branches; wall time $(echo "$(date +%s.%N) - $t0" | bc) s"
+  BRANCH_DIRS=("${dirs[@]}")
+}
+branch_contour() {  # FIG SWEEP GRID AXIS XEXPR YEXPR PARAMETER OTHER XLABEL YLABEL TITLE
+  local fig=$1 sweep=$2 grid=$3 cmp=()
+  [ -f "$OUT/$sweep/results.csv" ] && cmp=(--sweep "$OUT/$sweep/results.csv" "$7" "$8")
+  python3 $HERE/branch_grid.py --grid "$grid" --branch-axis "$4" --x "$5" --y "$6" "${cmp[@]}" \
+    "${BRANCH_DIRS[@]}" >"$OUT/$fig.dat"
+  gnuplot -e "data='$OUT/$fig.dat'; out='$FIGURES/$fig.png'; xl='$9'; yl='${10}'; ttl='${11}'" \
+    $HERE/contour.gp
+  echo "figures: $FIGURES/$fig.png"
+}
+fig11c() {  # branches in v_b, one per omega_n
+  branches fig11c v_b 0.5:5 k "$(omega_k 1 10 20)"
+  branch_contour fig11c fig11 0.5:5:20 x 'v' 'math.sqrt(v / 10)' v_b k "belt speed v_b [m/s]" \
+    "omega_n [rad/s]" "Fig. 11 from branches: limit-cycle amplitude p-p [m] (mu_s - mu_k = 0.05)"
+}
+fig12c() {  # branches in mu_s (down from 0.5, where stick-slip is strong), one per omega_n
+  branches fig12c mu_s 0.5:0.31 k "$(omega_k 1 10 20)"
+  branch_contour fig12c fig12 0.31:0.5:20 y 'math.sqrt(v / 10)' 'v - 0.3' mu_s k \
+    "omega_n [rad/s]" "mu_s - mu_k" "Fig. 12 from branches: limit-cycle amplitude p-p [m] (v_b = 1.5 m/s)"
+}
+
+ALL=(fig4 fig5 fig6 fig7 fig8 fig9 fig10 fig11 fig12 fig11c fig12c)
 for f in "${@:-${ALL[@]}}"; do
   [[ " ${ALL[*]} " == *" $f "* ]] || { echo "figures: unknown figure '$f' (${ALL[*]})" >&2; exit 1; }
   $f
