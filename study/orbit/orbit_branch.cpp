@@ -471,15 +471,15 @@ BranchResult continueOrbitFromText(
     T0 = orbit->period;
   }
   const double range = std::abs(spec.to - spec.from);
-  const double dp = spec.fd_parameter > 0.0
-                        ? spec.fd_parameter
-                        : spec.orbit.fd_step * std::max(std::abs(spec.from), range);
+  const double fd_step = shooting::fdStepFor(*first.model, spec.orbit.fd_step);
+  const double dp =
+      spec.fd_parameter > 0.0 ? spec.fd_parameter : fd_step * std::max(std::abs(spec.from), range);
   const unsigned threads =
       std::max(1u, spec.orbit.threads ? spec.orbit.threads : std::thread::hardware_concurrency());
   const Eigen::VectorXd floor = shooting::fdFloor(y0, reference.friction_values.size());
   const BranchShooter shooter(
-      document, overrides, spec.parameter, coords, coords.velocityIndex(body, axis), floor,
-      spec.orbit.fd_step, dp, threads,
+      document, overrides, spec.parameter, coords, coords.velocityIndex(body, axis), floor, fd_step,
+      dp, threads,
       r.forced ? std::optional<ForcedPeriod>({spec.orbit.periods, spec.orbit.period})
                : std::nullopt);
   // The arclength's weights w: ones (SI), or each unknown's scale (orbit_branch.hpp).
@@ -551,7 +551,12 @@ BranchResult continueOrbitFromText(
       pt.min_slip = min_slip;
       pt.stick_fraction = stuck / pt.period;
     }
-    pt.x_max = *std::max_element(x.begin(), x.end());
+    // A forced orbit peaks anywhere between samples: refined as the minimum is (an autonomous
+    // one starts at its peak).
+    std::vector<double> negated(x.size());
+    std::transform(x.begin(), x.end(), negated.begin(), [](double v) { return -v; });
+    pt.x_max =
+        r.forced ? -shooting::refinedMinimum(negated) : *std::max_element(x.begin(), x.end());
     pt.x_min = shooting::refinedMinimum(x);
     pt.amplitude_pp = pt.x_max - pt.x_min;
     // Steady sliding at the same parameter, as `tribo modes` analyses it: the branch beside

@@ -10,6 +10,7 @@
 #include <optional>
 #include <thread>
 
+#include "core/integrator.hpp"
 #include "core/simulator.hpp"
 #include "study/orbit/forcing.hpp"
 #include "study/orbit/krylov.hpp"
@@ -21,6 +22,20 @@ namespace tribo::study {
 using shooting::Flow;
 
 namespace {
+
+// For a Newton iteration that stalled on an adaptive integrator's flow: its error control
+// makes the flow smooth only to about rtol, so a residual stuck near rtol asks for a tighter
+// rtol (or a looser --tolerance); empty otherwise.
+std::string adaptiveHint(const Model& model, double tolerance, double residual) {
+  const double rtol = model.options.relative_tolerance;
+  if (!isAdaptive(model.options.integrator) || !(residual < 1e3 * rtol)) return "";
+  return "; with " + integratorName(model.options.integrator) +
+         " the flow is accurate to "
+         "about its rtol (" +
+         shooting::messageNumber(rtol) + "), above the tolerance (" +
+         shooting::messageNumber(tolerance) + "): set simulation.rtol near " +
+         shooting::messageNumber(0.1 * tolerance) + " or raise --tolerance";
+}
 
 unsigned threadsOf(const OrbitSpec& spec) {
   return std::max(1u, spec.threads ? spec.threads : std::thread::hardware_concurrency());
@@ -198,7 +213,8 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
                      settled_return +
                      " of its start): the response may not repeat with this period (a "
                      "subharmonic wants --periods, a quasi-periodic or chaotic one has none; a "
-                     "longer --settle brings the guess closer)");
+                     "longer --settle brings the guess closer)" +
+                     adaptiveHint(model, spec.tolerance, r.residual));
   r.period = T;
   r.start = y;
   shooting::Floquet f = krylov ? leadingFloquet(flow, y, T, scalesOf(y, floor), spec, false, r)
@@ -213,7 +229,9 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
 
 }  // namespace
 
-OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
+OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
+  OrbitSpec spec = given;
+  spec.fd_step = shooting::fdStepFor(*scene.model, given.fd_step);
   const auto wall = std::chrono::steady_clock::now();
   const Model& model = *scene.model;
   const io::SummarySpec& watched = scene.output.summary;
@@ -325,7 +343,8 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& spec) {
                      std::to_string(spec.max_iterations) + " iterations (residual " +
                      std::to_string(r.residual) +
                      "): the orbit may not be isolated, or the "
-                     "finite differences are too coarse for it");
+                     "finite differences are too coarse for it" +
+                     adaptiveHint(model, spec.tolerance, r.residual));
 
   r.period = T;
   r.start = y;
@@ -376,7 +395,7 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
   j["newton"] = {{"iterations", r.iterations},
                  {"residual", r.residual},
                  {"tolerance", spec.tolerance},
-                 {"fd_step", spec.fd_step},
+                 {"fd_step", shooting::fdStepFor(*scene.model, spec.fd_step)},
                  {"solver", r.solver},
                  {"flows", r.flows},
                  {"krylov_products", r.krylov_products}};

@@ -23,7 +23,11 @@
 //   phi_KP(y0) - y0 = 0
 // is solved the same way; there is no trivial multiplier (every one inside the unit circle
 // for a stable orbit). The first guess is the state after the settling run's whole periods.
-// Limits: fixed-step integrators (rk4, semi_implicit_euler); friction memory on contacts that
+// Any integrator: a fixed-step one (rk4, semi_implicit_euler) flows to T with its last step
+// shortened; an adaptive one (dopri5, bdf) ends its last communication interval on T, and
+// its finite differences span at least rtol^(1/3) (shooting::fdStepFor): its flow is smooth
+// in y0 only to about rtol, so Newton's tolerance must lie above rtol (the error says so).
+// Limits: friction memory on contacts that
 // stay the same along the orbit; forced scenes whose inputs repeat (sines, sine drives, or a
 // period the user gives and every input is checked against).
 // Continuation in a parameter and the bifurcations along a branch: study/orbit/orbit_branch.hpp.

@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 
+#include "core/integrator.hpp"
 #include "core/simulator.hpp"
 #include "core/thread_count.hpp"
 #include "study/orbit/forcing.hpp"
@@ -35,10 +36,6 @@ int observedBody(const io::Scene& scene) {
                                     [&](const Body& b) { return b.name == watched.body; });
   if (body_it == model.bodies.end() || body_it->kind != BodyKind::kDynamic)
     throw OrbitError("the observed body '" + watched.body + "' is not a dynamic body");
-  const IntegratorType integrator = model.options.integrator;
-  if (integrator != IntegratorType::kRk4 && integrator != IntegratorType::kSemiImplicitEuler)
-    throw OrbitError("shooting needs a fixed-step integrator (rk4 or semi_implicit_euler), not " +
-                     integratorName(integrator));
   return static_cast<int>(body_it - model.bodies.begin());
 }
 
@@ -49,6 +46,11 @@ int shootableBody(const io::Scene& scene) {
                      "): its orbits are forced, with the forcing's period; `tribo orbit` "
                      "without --continue finds one, continuation follows autonomous orbits only");
   return body;
+}
+
+double fdStepFor(const Model& model, double fd_step) {
+  if (!isAdaptive(model.options.integrator)) return fd_step;
+  return std::max(fd_step, std::cbrt(model.options.relative_tolerance));
 }
 
 State advance(const std::shared_ptr<const Model>& model, const State& start, double T,

@@ -1,8 +1,9 @@
 // The pieces a shooting method for periodic orbits is made of, shared by the single orbit
 // (study/orbit/periodic_orbit.hpp) and its continuation in a parameter
 // (study/orbit/orbit_branch.hpp); internal to study/orbit/. The flow phi_T(y) of the scene's
-// own fixed-step integrator (the last step shortened so that it ends at T exactly), the
-// checks that a scene can be shot (fixed step, an observed body coordinate, autonomous), the
+// own integrator (a fixed step's last step shortened, an adaptive one's last interval, so that
+// it ends at T exactly), the checks that a scene can be shot (an observed body coordinate,
+// autonomous), the finite-difference step an integrator wants, the
 // first guess from a settled run, the finite-difference steps of the Jacobian's columns and
 // their spread over threads, and the Floquet multipliers of a monodromy matrix (Seydel,
 // "Practical Bifurcation and Stability Analysis", 3rd ed., Springer 2010, sec. 7.3-7.4).
@@ -26,11 +27,18 @@
 namespace tribo::study::shooting {
 
 // The observed body's index in the model after checking that its summary observes a
-// dynamic body's coordinate and its integrator has a fixed step. Throws OrbitError naming
-// what is missing.
+// dynamic body's coordinate. Throws OrbitError naming what is missing.
 int observedBody(const io::Scene& scene);
 // observedBody after checking that the scene is autonomous (study/orbit/forcing.hpp).
 int shootableBody(const io::Scene& scene);
+
+// The finite-difference step shooting uses on `model`'s integrator: `fd_step` for the
+// fixed-step ones (their flow is smooth in y0 to rounding), at least rtol^(1/3) for the
+// adaptive ones (dopri5, bdf): their error control chooses other internal steps for a
+// perturbed start, so the flow is smooth only to about rtol, and a central difference over d
+// errs by rtol / d plus d^2, least near d = rtol^(1/3) (Dennis & Schnabel, "Numerical
+// Methods for Unconstrained Optimization and Nonlinear Equations", SIAM 1996, sec. 5.4).
+double fdStepFor(const Model& model, double fd_step);
 
 // The state T after `start` on the scene's integrator (the last step shortened so that it
 // ends at T exactly); `sample(t - start.time, state)` after each step if given, then
