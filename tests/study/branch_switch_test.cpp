@@ -16,7 +16,8 @@
 //   stability to an asymmetric pair at a branch point, a real multiplier through +1 without
 //   a fold, which the test finds by its own 2-D shooting and bisection in M0. The branch
 //   switched to is asymmetric (th(t + P/2) != -th(t)), and each of its orbits closes under the
-//   test's integration.
+//   test's integration. Further on, the asymmetric swing (found by a settling run where it is
+//   stable) doubles its period where the test's own shooting of it has a multiplier -1.
 // - a branch with no period doubling (the forced linear oscillator) ends as asked with no
 //   switch and says so.
 #include "study/orbit/branch_switch.hpp"
@@ -271,6 +272,12 @@ struct Forced : Pendulum {
     const Eigen2 e = eigenvalues(J[0], J[1], J[2], J[3]);
     return e.real ? e.high : e.modulus;
   }
+  // -mu_low - 1 (> 0: a multiplier below -1), the modulus - 1 while the pair is complex.
+  double doublingMargin(double M0, const Vec2& y) const {
+    const auto J = jacobian(M0, y);
+    const Eigen2 e = eigenvalues(J[0], J[1], J[2], J[3]);
+    return e.real ? -e.low - 1 : e.modulus - 1;
+  }
 };
 
 TEST(BranchSwitch, TheForcedPendulumsSymmetricSwingBranchesToAnAsymmetricPair) {
@@ -338,6 +345,53 @@ TEST(BranchSwitch, TheForcedPendulumsSymmetricSwingBranchesToAnAsymmetricPair) {
       EXPECT_GT(asymmetry(p), 1e-2);  // measured 0.48 to 1.7 from the second point
     }
   }
+}
+
+TEST(BranchSwitch, TheForcedPendulumsAsymmetricSwingDoublesItsPeriod) {
+  // Past the branch point the asymmetric swing is stable, so a settling run at M0 = 10.2
+  // finds it; its branch loses stability by a period doubling, the first of the cascade.
+  const Forced pend{{1.0, 1.0, 1e-4, 1.566}, 0.33231};
+  study::BranchSpec spec = switchSpec("M0", 10.2, 11.0, 6, BranchSwitch::kPeriodDoubling);
+  spec.norm = study::ArclengthNorm::kSi;
+  spec.step = 0.1;
+  const study::BranchResult r =
+      study::continueOrbit(kForced, {"c=1.566", "f=0.33231", "M0=10.2"}, spec);
+  ASSERT_TRUE(r.switched.found) << r.stop_reason;
+  // The reference: the test's own shooting from the primary's first orbit (its start state),
+  // followed in M0 to the bracket the primary gives and bisected on mu = -1.
+  double lo = r.primary[r.switched.before].parameter, hi = r.primary[r.switched.after].parameter;
+  Vec2 y = pend.orbit(10.2, swing(r, r.primary.front(), "", 1.0));
+  for (double M0 = 10.2; M0 < lo; M0 = std::min(M0 + 0.05, lo)) y = pend.orbit(M0, y);
+  y = pend.orbit(lo, y);
+  ASSERT_LT(pend.doublingMargin(lo, y), 0.0);
+  for (int i = 0; i < 30; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const Vec2 ym = pend.orbit(mid, y);
+    if (pend.doublingMargin(mid, ym) < 0.0) {
+      lo = mid;
+      y = ym;
+    } else {
+      hi = mid;
+    }
+  }
+  const double m_pd = 0.5 * (lo + hi);
+  // Located (measured 4.3e-8 of the reference's 10.460496), the multiplier -1 to 3e-8 (the
+  // locator's 12 orbits; the shaken pendulum's reach 1e-9).
+  EXPECT_NEAR(r.switched.parameter / m_pd, 1.0, 1e-6) << r.switched.parameter << " " << m_pd;
+  EXPECT_NEAR(r.switched.multiplier.real(), -1.0, 1e-7);
+  // The new orbits span two forcing periods and close under the test's integration over
+  // them, not over one.
+  ASSERT_GE(r.points.size(), 3u) << r.stop_reason;
+  for (const BranchPoint& p : r.points) {
+    SCOPED_TRACE("M0 " + study::csvNumber(p.parameter, 10));
+    EXPECT_NEAR(p.period * 0.33231, 2.0, 1e-9);
+    const Vec2 y0 = swing(r, p, "", 1.0);
+    const Vec2 once = pend.flow(p.parameter, y0), twice = pend.flow(p.parameter, once);
+    EXPECT_LT(angleGap(twice, y0), 2e-5);
+  }
+  EXPECT_GT(angleGap(pend.flow(r.points.back().parameter, swing(r, r.points.back(), "", 1.0)),
+                     swing(r, r.points.back(), "", 1.0)),
+            1e-3);
 }
 
 TEST(BranchSwitch, ABranchWithoutThePeriodDoublingEndsAsAskedAndSaysSo) {
