@@ -2,7 +2,8 @@
 // orbit's peak-to-peak amplitude against the continued parameter; stable orbits joined by solid
 // lines, unstable ones by dashed lines, split where the stability changes; steady sliding on
 // the parameter axis, solid where its growth rate is negative and dashed where it is positive,
-// split where it changes sign; the located events and the Hopf start marked and labelled),
+// split where it changes sign; the located events and the Hopf start marked and labelled;
+// after a branch switch, the branch switched from in grey),
 // and the chosen point's orbit replayed: the observed coordinate over one period with a marker
 // running along it in time and the located extremes dotted. Clicking a point chooses it,
 // hovering shows its values, left and right arrows choose the previous and next point along
@@ -23,7 +24,7 @@
     var i = kv.indexOf("=");
     if (kv) hash[decodeURIComponent(i < 0 ? kv : kv.slice(0, i))] = i < 0 ? "" : decodeURIComponent(kv.slice(i + 1));
   });
-  var colours = { stable: "#5b9bd5", unstable: "#e15759", steadyStable: "#59a14f",
+  var colours = { stable: "#5b9bd5", unstable: "#e15759", primary: "#8c8c8c", steadyStable: "#59a14f",
                   steadyUnstable: "#f28e2b", event: "#edc948", chosen: "#ffffff", text: "#ddd" };
   var DASH = [7, 5];
 
@@ -44,6 +45,11 @@
   if (meta.stop_reason) notes.push(meta.stop_reason);
   if (meta.hopf) notes.push("started at a Hopf point of steady sliding, " + meta.parameter + " = " +
                             shown(meta.hopf.parameter, 8));
+  var primary = data.primary || [];
+  if (meta.switch && meta.switch.found)
+    notes.push("switched from the grey branch (" + primary.length + " points) at its " +
+               meta.switch.at.replace("_", " ") + ", " + meta.parameter + " = " +
+               shown(meta.switch.parameter, 8));
   if (!meta.steady_growth) notes.push("branch.csv has no steady sliding growth rates: the axis is bare");
   if (meta.orbit_samples < meta.orbit_rows)
     notes.push("orbits decimated: " + meta.orbit_samples + " of " + meta.orbit_rows + " samples held");
@@ -52,8 +58,9 @@
   var legend = document.getElementById("legend-line");
   [["stable", "\u2014 stable orbit"], ["unstable", "- - unstable orbit"],
    ["steadyStable", "\u2014 steady sliding stable (amplitude 0)"], ["steadyUnstable", "- - steady sliding unstable"],
-   ["event", "\u25c6 event"]].forEach(function (entry) {
+   ["event", "\u25c6 event"], ["primary", "\u2014 branch switched from"]].forEach(function (entry) {
     if (!meta.steady_growth && entry[0].indexOf("steady") === 0) return;
+    if (entry[0] === "primary" && primary.length === 0) return;
     var s = document.createElement("span");
     s.style.color = colours[entry[0]];
     s.style.marginRight = "14px";
@@ -80,7 +87,7 @@
   // The diagram's ranges: every point, event and the Hopf start; amplitude from a little below 0
   // (so that steady sliding's line stands clear of the frame).
   var plo = Infinity, phi = -Infinity, amax = 0;
-  points.forEach(function (p) {
+  points.concat(primary).forEach(function (p) {
     if (isFinite(p.parameter)) { plo = Math.min(plo, p.parameter); phi = Math.max(phi, p.parameter); }
     if (isFinite(p.amplitude_pp)) amax = Math.max(amax, p.amplitude_pp);
   });
@@ -159,6 +166,8 @@
     label(ctx, list, prefix + "y_axis", yName, 14, yMid, "center", true);
     ctx.font = "12px sans-serif";
     out.box = [x0, y0, x1, y1];
+    out.x_range = [xlo, xhi];
+    out.y_range = [ylo, yhi];
     return { X: X, Y: Y, axes: out };
   }
 
@@ -184,7 +193,22 @@
     var f = frame(g, labels, w, h, plo, phi, alo, ahi, meta.parameter, "peak to peak of " + meta.observed, "");
     var X = f.X, Y = f.Y;
     axes = f.axes;
-    segments = { orbit_solid: 0, orbit_dashed: 0, steady_solid: 0, steady_dashed: 0 };
+    segments = { orbit_solid: 0, orbit_dashed: 0, steady_solid: 0, steady_dashed: 0,
+                 primary_solid: 0, primary_dashed: 0 };
+
+    // The branch switched from (grey, dashed where unstable), under everything else; its
+    // points are not chosen (their orbits are not in this folder).
+    for (var j = 0; j + 1 < primary.length; ++j) {
+      var pa = primary[j], pb = primary[j + 1], both = pa.stable && pb.stable;
+      line(g, X(pa.parameter), Y(pa.amplitude_pp), X(pb.parameter), Y(pb.amplitude_pp), colours.primary, !both, 2);
+      segments[both ? "primary_solid" : "primary_dashed"] += 1;
+    }
+    primary.forEach(function (pt) {
+      g.fillStyle = g.strokeStyle = colours.primary;
+      g.lineWidth = 1.5;
+      g.beginPath(); g.arc(X(pt.parameter), Y(pt.amplitude_pp), 3, 0, 2 * Math.PI);
+      if (pt.stable) g.fill(); else g.stroke();
+    });
 
     // Steady sliding on the axis, by parameter (it is a function of the parameter alone).
     if (meta.steady_growth) {

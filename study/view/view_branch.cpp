@@ -85,7 +85,9 @@ nlohmann::json hopfStartOf(const nlohmann::json& manifest) {
 
 struct BranchTable {
   nlohmann::json points = nlohmann::json::array();
-  bool steady_growth = false;  // the steady_growth_rate column is there
+  // The steady_growth_rate column is there with a value in some row (a forced branch leaves
+  // it empty: it has no steady state).
+  bool steady_growth = false;
 };
 
 // branch.csv: one object per row, its numbers checked (an empty optional field is null).
@@ -108,7 +110,6 @@ BranchTable readBranchTable(const std::filesystem::path& file) {
   const std::vector<std::string> optional = {"stick_fraction", "min_slip", "x_min", "x_max",
                                              "steady_growth_rate"};
   BranchTable table;
-  table.steady_growth = column.count("steady_growth_rate") > 0;
   for (std::size_t l = 1; l < lines.size(); ++l) {
     if (lines[l].empty() || lines[l] == "\r") continue;
     const std::string where = named(file) + " line " + std::to_string(l + 1);
@@ -148,6 +149,8 @@ BranchTable readBranchTable(const std::filesystem::path& file) {
   }
   if (table.points.empty())
     throw std::runtime_error(named(file) + " has no points (no rows after its header)");
+  for (const nlohmann::json& point : table.points)
+    table.steady_growth = table.steady_growth || !point["steady_growth_rate"].is_null();
   return table;
 }
 
@@ -285,6 +288,15 @@ BranchViewInfo writeBranchView(const std::filesystem::path& dir, const ViewOptio
   const std::size_t cap = std::max<std::size_t>(2, std::min(options.frame_cap, by_budget));
   const BranchOrbits orbits = readBranchOrbits(dir / "branch_orbits.csv", observed, points, cap);
 
+  // After a branch switch (`--switch`): the branch it left, drawn beside this one, and where.
+  nlohmann::json primary = nlohmann::json::array();
+  nlohmann::json switched;
+  if (std::filesystem::exists(dir / "primary_branch.csv")) {
+    primary = readBranchTable(dir / "primary_branch.csv").points;
+    if (manifest.contains("switch") && manifest["switch"].is_object())
+      switched = manifest["switch"];
+  }
+
   nlohmann::json strides = nlohmann::json::array();
   for (std::size_t p = 0; p < points; ++p) strides.push_back(orbits.stride[p]);
   const nlohmann::json meta = {
@@ -302,9 +314,11 @@ BranchViewInfo writeBranchView(const std::filesystem::path& dir, const ViewOptio
       {"orbit_rows", orbits.total_rows},
       {"orbit_samples", orbits.kept},
       {"orbit_cap", cap},
-      {"orbit_strides", strides}};
+      {"orbit_strides", strides},
+      {"switch", switched}};
   std::string data = "{\"meta\":" + meta.dump() + ",\"points\":" + table.points.dump() +
-                     ",\"events\":" + events.dump() + ",\"orbits\":[";
+                     ",\"primary\":" + primary.dump() + ",\"events\":" + events.dump() +
+                     ",\"orbits\":[";
   for (std::size_t p = 0; p < points; ++p) {
     if (p) data += ",\n";
     data += "{\"t\":";
@@ -332,6 +346,7 @@ BranchViewInfo writeBranchView(const std::filesystem::path& dir, const ViewOptio
   info.orbit_rows = orbits.total_rows;
   info.orbit_samples = orbits.kept;
   info.steady_growth = table.steady_growth;
+  info.primary_points = primary.size();
   return info;
 }
 

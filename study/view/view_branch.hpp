@@ -4,8 +4,9 @@
 // the continued parameter, stable orbits solid and unstable ones dashed, steady sliding on the
 // parameter axis by its growth rate, the located events and the Hopf start marked), and the
 // orbit of a chosen point replayed over one period. The page embeds the points' columns, the
-// events and every point's sampled orbit (decimated to ViewOptions' caps); a canvas only, no
-// three.js. docs/view.md describes the page.
+// events and every point's sampled orbit (decimated to ViewOptions' caps), and after a branch
+// switch the branch it left (primary_branch.csv, drawn in grey, its points not chosen); a
+// canvas only, no three.js. docs/view.md describes the page.
 // Not here: the page's behaviour (view/branch.js), computing the branch (study/orbit/).
 #pragma once
 
@@ -24,6 +25,7 @@ struct BranchViewInfo {
   std::size_t orbit_rows = 0;     // rows of branch_orbits.csv
   std::size_t orbit_samples = 0;  // of them, the samples the page holds
   bool steady_growth = false;     // branch.csv has steady sliding's growth rates
+  std::size_t primary_points = 0;  // rows of primary_branch.csv (after a branch switch)
 };
 
 // True when `dir` holds branch.json.

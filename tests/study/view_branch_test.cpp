@@ -246,3 +246,43 @@ TEST(ViewBranch, MalformedOrbitsAreNamed) {
   EXPECT_TRUE(holds(errorOf(dir), orbits.string() + "' is empty"));
   EXPECT_FALSE(fs::exists(dir / "view.html"));
 }
+
+TEST(ViewBranch, ASwitchedBranchCarriesTheBranchItLeftAndWhere) {
+  const fs::path dir = branchDir("switched");
+  EXPECT_EQ(writeBranchView(dir).primary_points, 0u);  // no switch: no primary
+  EXPECT_TRUE(pageData(dir / "view.html")["primary"].empty());
+  // The branch a --switch left: primary_branch.csv, and branch.json's "switch".
+  std::string manifest = kManifest;
+  manifest.replace(manifest.find("\"points\": 3"), 11,
+                   "\"points\": 3, \"switch\": {\"at\": \"period_doubling\", \"found\": true, "
+                   "\"parameter\": 1.25, \"primary_points\": 2}");
+  writeText(dir / "branch.json", manifest);
+  writeText(dir / "primary_branch.csv",
+            "index,parameter,period,amplitude_pp,largest_multiplier,stable,steady_growth_rate,"
+            "event\n0,1.5,0.6,0,0.9,1,,\n1,1.2,0.65,0,1.1,0,,period_doubling\n");
+  const BranchViewInfo info = writeBranchView(dir);
+  EXPECT_EQ(info.primary_points, 2u);
+  const nlohmann::json data = pageData(info.file);
+  ASSERT_EQ(data["primary"].size(), 2u);
+  EXPECT_DOUBLE_EQ(data["primary"][1]["parameter"].get<double>(), 1.2);
+  EXPECT_EQ(data["primary"][1]["stable"], false);
+  EXPECT_EQ(data["meta"]["switch"]["at"], "period_doubling");
+  EXPECT_DOUBLE_EQ(data["meta"]["switch"]["parameter"].get<double>(), 1.25);
+  // A malformed primary table is named like branch.csv.
+  writeText(dir / "primary_branch.csv",
+            "index,parameter,period,amplitude_pp,largest_multiplier,stable\n0,1.5,0.6,0,0.9,2\n");
+  EXPECT_TRUE(holds(errorOf(dir),
+                    (dir / "primary_branch.csv").string() + "' line 2: stable '2' is not 0 or 1"))
+      << errorOf(dir);
+}
+
+TEST(ViewBranch, AForcedBranchsEmptySteadyColumnLeavesTheAxisBare) {
+  // A forced scene has no steady state: its steady_growth_rate column is empty in every row.
+  const fs::path dir = branchDir("forced");
+  std::string table = kTable;
+  table.replace(table.find(",0.06,\n"), 7, ",,\n");
+  table.replace(table.find(",-0.01,\n"), 8, ",,\n");
+  writeText(dir / "branch.csv", table);
+  EXPECT_FALSE(writeBranchView(dir).steady_growth);
+  EXPECT_FALSE(pageData(dir / "view.html")["meta"]["steady_growth"].get<bool>());
+}

@@ -694,6 +694,51 @@ def case_branch(tribo, source, work):
               "%s: point %d, period %.10g s" % (a["action"], a["selected"], a["period"]))
 
 
+def case_branch_switch(tribo, source, work):
+    """A branch switched to at a period doubling (tribo orbit --continue --switch) and its page:
+    the branch switched from (primary_branch.csv) drawn in grey beside the new one, solid
+    between its stable points and dashed into the unstable one past the doubling, inside the
+    diagram's ranges; the note says where the switch was."""
+    out = os.path.join(work, "branch_switch")
+    if os.path.exists(out):
+        shutil.rmtree(out)
+    result = subprocess.run([tribo, "orbit", os.path.join(source, "scenes", "parametric_pendulum.yaml"),
+                             "--continue", "f=1.2:0.85", "--switch", "period_doubling", "--step", "0.1",
+                             "--max-points", "4", "--out", out],
+                            capture_output=True, text=True, timeout=120)
+    check(result.returncode == 0, "tribo orbit --switch: " + result.stdout.strip()[-300:] +
+          result.stderr.strip()[-300:])
+    with open(os.path.join(out, "primary_branch.csv")) as f:
+        primary = list(csv.DictReader(f))
+    with open(os.path.join(out, "branch.csv")) as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(out, "branch.json")) as f:
+        manifest = json.load(f)
+    check(len(primary) >= 2 and manifest["switch"]["found"],
+          "%d primary points, the switch found" % len(primary))
+    result = subprocess.run([tribo, "view", out], capture_output=True, text=True, timeout=120)
+    check(result.returncode == 0, "tribo view: " + result.stdout.strip() + result.stderr.strip())
+    status, dom = browse(work, "file://%s/view.html" % out, "dom", width=1000, height=800,
+                         budget=2000, with_dom=True)
+    check(status["errors"] == [], "no JavaScript or console errors: %s" % status["errors"])
+    check(status["points"] == len(rows) and len(status["drawn_points"]) == len(rows),
+          "the new branch's %d points drawn as dots (branch.csv: %d)" %
+          (len(status["drawn_points"]), len(rows)))
+    stable = [r["stable"] == "1" for r in primary]
+    solid = sum(1 for a, b in zip(stable, stable[1:]) if a and b)
+    segments = status["segments"]
+    check(segments["primary_solid"] == solid and
+          segments["primary_solid"] + segments["primary_dashed"] == len(primary) - 1,
+          "the primary's %d segments drawn, %d solid between stable points: %s" %
+          (len(primary) - 1, solid, segments))
+    first = float(primary[0]["parameter"])
+    lo, hi = status["axes"]["x_range"]
+    check(lo <= first <= hi and lo <= min(float(r["parameter"]) for r in rows),
+          "the x range [%.4g, %.4g] holds the primary's start %.4g and the new branch" % (lo, hi, first))
+    check("switched from the grey branch" in dom and ("%d points" % len(primary)) in dom,
+          "the page notes the switch")
+
+
 def main():
     tribo, source, work, case = sys.argv[1:5]
     if not chromium():
@@ -710,7 +755,8 @@ def main():
     os.makedirs(work, exist_ok=True)
     {"loads": case_loads, "position": case_position, "controls": case_controls,
      "orientation_note": case_orientation_note, "orientation": case_orientation, "sweep": case_sweep,
-     "elements": case_elements, "branch": case_branch}[case](os.path.abspath(tribo), source, work)
+     "elements": case_elements, "branch": case_branch,
+     "branch_switch": case_branch_switch}[case](os.path.abspath(tribo), source, work)
     print("PASS")
 
 
