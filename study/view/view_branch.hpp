@@ -20,11 +20,11 @@ namespace tribo::study {
 struct BranchViewInfo {
   std::filesystem::path file;
   std::size_t bytes = 0;
-  std::size_t points = 0;         // rows of branch.csv
-  std::size_t events = 0;         // events of branch.json
-  std::size_t orbit_rows = 0;     // rows of branch_orbits.csv
-  std::size_t orbit_samples = 0;  // of them, the samples the page holds
-  bool steady_growth = false;     // branch.csv has steady sliding's growth rates
+  std::size_t points = 0;          // rows of branch.csv
+  std::size_t events = 0;          // events of branch.json
+  std::size_t orbit_rows = 0;      // rows of branch_orbits.csv
+  std::size_t orbit_samples = 0;   // of them, the samples the page holds
+  bool steady_growth = false;      // branch.csv has steady sliding's growth rates
   std::size_t primary_points = 0;  // rows of primary_branch.csv (after a branch switch)
 };
 
