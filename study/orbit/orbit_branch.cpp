@@ -435,15 +435,8 @@ BranchResult continueOrbitFromText(
     r.hopf_omega = hopf->omega;
     r.hopf_analyses = hopf->analyses;
   } else {
+    // (An equilibrium Newton may find instead, from a damped settling run, is refused there.)
     orbit = std::make_unique<OrbitResult>(findPeriodicOrbit(sceneAt(spec.from), spec.orbit));
-    // A damped settling run can lead Newton onto the equilibrium it decays to, which closes on
-    // itself for any T: no orbit to follow (a forced orbit's period and phase are fixed).
-    if (!r.forced && !(orbit->amplitude_pp > kCollapsed * orbit->guess_amplitude_pp))
-      throw OrbitError(
-          "the orbit found at " + spec.parameter + " = " + shooting::messageNumber(spec.from) +
-          " is an equilibrium (amplitude " + shooting::messageNumber(orbit->amplitude_pp) +
-          " against the settling run's " + shooting::messageNumber(orbit->guess_amplitude_pp) +
-          "): the oscillation decays there; start the branch where it does not");
   }
   const double p0 = hopf ? hopf->parameter : spec.from;
   const io::Scene first = sceneAt(p0);

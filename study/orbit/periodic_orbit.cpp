@@ -37,6 +37,10 @@ std::string adaptiveHint(const Model& model, double tolerance, double residual) 
          shooting::messageNumber(0.1 * tolerance) + " or raise --tolerance";
 }
 
+// An autonomous orbit whose amplitude is below this fraction of the settling run's is an
+// equilibrium Newton found instead (the same bound continuation uses, orbit_branch.cpp).
+constexpr double kEquilibrium = 1e-6;
+
 unsigned threadsOf(const OrbitSpec& spec) {
   return std::max(1u, spec.threads ? spec.threads : std::thread::hardware_concurrency());
 }
@@ -359,6 +363,16 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
 
   // One period sampled at the step, from the orbit's start (a maximum of x).
   sampleOrbit(flow, coords, y, T, body, axis, r);
+  // An equilibrium closes on itself for any T: a settling run whose oscillation was decaying
+  // leads Newton onto it, and its "orbit" is a point (its "trivial" multiplier is then no
+  // check at all). Refused where the amplitude is below kEquilibrium of the settling run's.
+  if (!(r.amplitude_pp > kEquilibrium * r.guess_amplitude_pp))
+    throw OrbitError("the orbit found is an equilibrium (amplitude " +
+                     shooting::messageNumber(r.amplitude_pp) + " in " + r.observed +
+                     " against the settling run's " +
+                     shooting::messageNumber(r.guess_amplitude_pp) +
+                     "): the oscillation decays here; a limit cycle needs other settings, or a "
+                     "longer --settle if the run had not yet reached one");
   r.flows = flow.count();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
   return r;
