@@ -79,6 +79,8 @@
 // largest position or rotation entry is 1 and a = switch_amplitude [m or rad]; the secondary
 // branch then runs either way from it, within [from, to], like a Hopf start's.
 // Not here: matrix-free solves for large states; a torus's branch (quasi-periodic, no orbit).
+// Where: the loop and the switch in orbit_branch.cpp, the rows and corrector in
+// branch_shooter.hpp, the events in branch_events.cpp, the files in branch_files.cpp.
 #pragma once
 
 #include <Eigen/Dense>
