@@ -272,6 +272,22 @@ struct Forced : Pendulum {
     const Eigen2 e = eigenvalues(J[0], J[1], J[2], J[3]);
     return e.real ? e.high : e.modulus;
   }
+  // Where `margin(M0, orbit)` turns from negative to positive in [lo, hi], by bisection, the
+  // orbit followed from y (the orbit at lo) on the negative side.
+  template <typename Margin>
+  double bisect(double lo, double hi, Vec2 y, Margin margin) const {
+    for (int i = 0; i < 30; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const Vec2 ym = orbit(mid, y);
+      if (margin(mid, ym) < 0.0) {
+        lo = mid;
+        y = ym;
+      } else {
+        hi = mid;
+      }
+    }
+    return 0.5 * (lo + hi);
+  }
   // -mu_low - 1 (> 0: a multiplier below -1), the modulus - 1 while the pair is complex.
   double doublingMargin(double M0, const Vec2& y) const {
     const auto J = jacobian(M0, y);
@@ -288,18 +304,9 @@ TEST(BranchSwitch, TheForcedPendulumsSymmetricSwingBranchesToAnAsymmetricPair) {
   for (int i = 0; i < 40; ++i) y = pend.flow(5.0, y);
   y = pend.orbit(5.0, y);
   for (double M0 = 5.25; M0 <= 9.7; M0 += 0.25) y = pend.orbit(M0, y);
-  double lo = 9.7, hi = 10.0;
-  for (int i = 0; i < 30; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    const Vec2 ym = pend.orbit(mid, y);
-    if (pend.largestMultiplier(mid, ym) < 1.0) {
-      lo = mid;
-      y = ym;
-    } else {
-      hi = mid;
-    }
-  }
-  const double m_bp = 0.5 * (lo + hi);
+  const double m_bp = pend.bisect(9.7, 10.0, y, [&](double M0, const Vec2& ym) {
+    return pend.largestMultiplier(M0, ym) - 1.0;
+  });
 
   study::BranchSpec spec = switchSpec("M0", 9.0, 12.0, 8, BranchSwitch::kBranchPoint);
   spec.norm = study::ArclengthNorm::kSi;
@@ -364,17 +371,8 @@ TEST(BranchSwitch, TheForcedPendulumsAsymmetricSwingDoublesItsPeriod) {
   for (double M0 = 10.2; M0 < lo; M0 = std::min(M0 + 0.05, lo)) y = pend.orbit(M0, y);
   y = pend.orbit(lo, y);
   ASSERT_LT(pend.doublingMargin(lo, y), 0.0);
-  for (int i = 0; i < 30; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    const Vec2 ym = pend.orbit(mid, y);
-    if (pend.doublingMargin(mid, ym) < 0.0) {
-      lo = mid;
-      y = ym;
-    } else {
-      hi = mid;
-    }
-  }
-  const double m_pd = 0.5 * (lo + hi);
+  const double m_pd = pend.bisect(
+      lo, hi, y, [&](double M0, const Vec2& ym) { return pend.doublingMargin(M0, ym); });
   // Located (measured 4.3e-8 of the reference's 10.460496), the multiplier -1 to 3e-8 (the
   // locator's 12 orbits; the shaken pendulum's reach 1e-9).
   EXPECT_NEAR(r.switched.parameter / m_pd, 1.0, 1e-6) << r.switched.parameter << " " << m_pd;
