@@ -228,12 +228,8 @@ BranchResult continueOrbitFromText(
       pt.min_slip = min_slip;
       pt.stick_fraction = stuck / pt.period;
     }
-    // A forced orbit peaks anywhere between samples: refined as the minimum is (an autonomous
-    // one starts at its peak).
-    std::vector<double> negated(x.size());
-    std::transform(x.begin(), x.end(), negated.begin(), [](double v) { return -v; });
-    pt.x_max =
-        r.forced ? -shooting::refinedMinimum(negated) : *std::max_element(x.begin(), x.end());
+    // A forced orbit peaks anywhere between samples (an autonomous one starts at its peak).
+    pt.x_max = r.forced ? shooting::refinedMaximum(x) : *std::max_element(x.begin(), x.end());
     pt.x_min = shooting::refinedMinimum(x);
     pt.amplitude_pp = pt.x_max - pt.x_min;
     // Steady sliding at the same parameter, as `tribo modes` analyses it: the branch beside

@@ -116,9 +116,7 @@ void sampleOrbit(const Flow& flow, const OrbitCoordinates& coords, const Eigen::
     r.t.push_back(t);
     r.x.push_back(s.bodies[b].position[axis]);
   });
-  std::vector<double> negated(r.x.size());
-  std::transform(r.x.begin(), r.x.end(), negated.begin(), [](double v) { return -v; });
-  r.x_max = r.forced ? -shooting::refinedMinimum(negated) : r.x.front();
+  r.x_max = r.forced ? shooting::refinedMaximum(r.x) : r.x.front();
   r.x_min = shooting::refinedMinimum(r.x);
   r.amplitude_pp = r.x_max - r.x_min;
 }

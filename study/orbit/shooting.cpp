@@ -202,4 +202,10 @@ double refinedMinimum(const std::vector<double>& x) {
   return b - (a - c) * (a - c) / (8.0 * d);
 }
 
+double refinedMaximum(const std::vector<double>& x) {
+  std::vector<double> negated(x.size());
+  std::transform(x.begin(), x.end(), negated.begin(), [](double v) { return -v; });
+  return -refinedMinimum(negated);
+}
+
 }  // namespace tribo::study::shooting

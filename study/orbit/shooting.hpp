@@ -104,5 +104,8 @@ std::string messageNumber(double v);
 
 // The smallest value of x by a parabola through the smallest sample and its neighbours.
 double refinedMinimum(const std::vector<double>& x);
+// The largest value of x, refined the same way (a forced orbit peaks anywhere between
+// samples).
+double refinedMaximum(const std::vector<double>& x);
 
 }  // namespace tribo::study::shooting
