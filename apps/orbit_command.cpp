@@ -227,8 +227,11 @@ int runOrbit(Arguments& a) {
                 1.0 / r.period, r.guess_period);
   std::printf("amplitude        %.10g peak to peak in %s (%.10g to %.10g)\n", r.amplitude_pp,
               r.observed.c_str(), r.x_min, r.x_max);
-  std::printf("newton           %d iterations, residual %.3g (%s: %ld flows", r.iterations,
-              r.residual, r.solver.c_str(), r.flows);
+  std::printf(
+      "newton           %d iterations after %d return-map iterations, residual %.3g (%s: %ld "
+      "flows; converged after %ld, %.3g periods of integration",
+      r.iterations, r.picard_iterations, r.residual, r.solver.c_str(), r.flows, r.flows_to_converge,
+      r.periods_to_converge);
   if (r.solver == "krylov") std::printf(", %ld Krylov products", r.krylov_products);
   std::printf(")\n");
   const char* which = r.solver == "krylov" ? " leading" : "";
@@ -266,6 +269,10 @@ Command addOrbitCommand(CLI::App& tribo) {
   addCheckedOption(*orbit, "--tolerance", "X",
                    "Newton's tolerance on |phi_T(y0) - y0| / (1 + |y0|) (1e-9)",
                    [a](const std::string& v) { a->spec.tolerance = positive("--tolerance", v); });
+  orbit->add_flag_callback(
+      "--newton-only", [a] { a->spec.return_map = false; },
+      "skip the return-map iterations that come before Newton's (the orbit is the\n"
+      "same; they save most of the flows on a strongly contracting one)");
   addCheckedOption(*orbit, "--period", "SECONDS",
                    "a forced scene: the forcing's period (default: read from its inputs,\n"
                    "which must then be sines or sine drives; any input is checked to\n"

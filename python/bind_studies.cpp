@@ -114,8 +114,9 @@ py::list runTradeoff(const py::object& scene, const py::object& set,
 }
 
 py::object runOrbit(const SceneHandle& scene, double settle, double tolerance, double period,
-                    int periods, const std::string& solver) {
+                    int periods, const std::string& solver, bool newton_only) {
   study::OrbitSpec spec;
+  spec.return_map = !newton_only;
   if (solver == "dense")
     spec.solver = study::OrbitSolver::kDense;
   else if (solver == "krylov")
@@ -257,11 +258,14 @@ void bindStudies(py::module_& m) {
         "actuators' targets). Raises NoSteadyState, ModesError.");
   m.def("orbit", &runOrbit, py::arg("scene"), py::arg("settle") = 0.0, py::arg("tolerance") = 1e-9,
         py::arg("period") = 0.0, py::arg("periods") = 1, py::arg("solver") = "auto",
-        "orbit(scene, settle=0, tolerance=1e-9, period=0, periods=1, solver='auto') -> dict: "
-        "the periodic "
+        py::arg("newton_only") = false,
+        "orbit(scene, settle=0, tolerance=1e-9, period=0, periods=1, solver='auto', "
+        "newton_only=False) -> dict: the periodic "
         "orbit as `tribo orbit` finds it (orbit.json's document: period, amplitude_pp, stable, "
-        "multipliers, newton, forced, start...) with 't' and 'x', the observed coordinate over "
-        "one period as arrays. A scene whose inputs vary in time has a forced orbit: period "
+        "multipliers, newton (with picard_iterations, flows_to_converge, periods_to_converge), "
+        "forced, start...) with 't' and 'x', the observed coordinate over "
+        "one period as arrays. newton_only=True skips the return-map iterations before "
+        "Newton's (--newton-only). A scene whose inputs vary in time has a forced orbit: period "
         "is the forcing's (0: read from its sines), periods the orbit's length in forcing "
         "periods. solver: 'dense', 'krylov' (GMRES and Arnoldi on flows; the 8 leading "
         "multipliers) or 'auto' (krylov from 40 unknowns). Raises OrbitError (no oscillation, no "

@@ -1,8 +1,10 @@
 // Cost of periodic orbits (study/orbit/) read against what a user would otherwise run: the
 // settled simulation of one sweep point (the scene's own duration, `tribo run`), measured
-// first in the same process. Names: BM_Baseline_SettledRun/belt; BM_Orbit/belt (one orbit,
-// `tribo orbit`: its settling run, Newton's shooting with the Jacobian's columns on the
-// cores, the Floquet multipliers; counter over_settled_run); BM_OrbitBranch/belt (the branch
+// first in the same process. Names: BM_Baseline_SettledRun/belt; BM_Orbit/belt_newton_only
+// and BM_Orbit/belt (one orbit, `tribo orbit`: its settling run, shooting with the Jacobian's
+// columns on the cores, the Floquet multipliers; without and with the return-map iterations
+// before Newton's, study/orbit/picard.hpp; counters over_settled_run, flows,
+// periods_to_converge and over_newton_only); BM_OrbitBranch/belt (the branch
 // from v_b = 1.5 to 3 in steps of 0.5, `tribo orbit --continue`: counters points and
 // per_point_over_settled_run). What a branch point costs against a sweep point is the
 // question a user of `--continue` asks. BM_OrbitLanes/<dense|krylov>/N: the orbit of N belt
@@ -50,13 +52,26 @@ void BM_Baseline_SettledRun(benchmark::State& st) {
   });
 }
 
-void BM_Orbit(benchmark::State& st) {
+double& newtonOnlySeconds() {
+  static double seconds = 0.0;
+  return seconds;
+}
+
+// One orbit; `return_map` false is Newton's method alone (the baseline of the return map's
+// gain, measured first).
+void BM_Orbit(benchmark::State& st, bool return_map) {
   const auto scene = tribo::io::loadScene(kBelt);
-  const double each = timed(st, [&] {
-    const auto r = tribo::study::findPeriodicOrbit(scene);
-    benchmark::DoNotOptimize(r.period);
-  });
+  tribo::study::OrbitSpec spec;
+  spec.return_map = return_map;
+  tribo::study::OrbitResult r;
+  const double each = timed(st, [&] { r = tribo::study::findPeriodicOrbit(scene, spec); });
   if (settledSeconds() > 0.0) st.counters["over_settled_run"] = each / settledSeconds();
+  st.counters["flows"] = static_cast<double>(r.flows);
+  st.counters["periods_to_converge"] = r.periods_to_converge;
+  if (!return_map)
+    newtonOnlySeconds() = each;
+  else if (newtonOnlySeconds() > 0.0)
+    st.counters["over_newton_only"] = each / newtonOnlySeconds();
 }
 
 void BM_OrbitBranch(benchmark::State& st) {
@@ -117,7 +132,8 @@ BENCHMARK_CAPTURE(BM_OrbitLanes, krylov, tribo::study::OrbitSolver::kKrylov)
 BENCHMARK(BM_Baseline_SettledRun)
     ->Name("BM_Baseline_SettledRun/belt")
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Orbit)->Name("BM_Orbit/belt")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Orbit, belt_newton_only, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Orbit, belt, true)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OrbitBranch)
     ->Name("BM_OrbitBranch/belt")
     ->Unit(benchmark::kMillisecond)

@@ -15,6 +15,7 @@
 #include "study/orbit/forcing.hpp"
 #include "study/orbit/krylov.hpp"
 #include "study/orbit/orbit_coordinates.hpp"
+#include "study/orbit/picard.hpp"
 #include "study/orbit/shooting.hpp"
 
 namespace tribo::study {
@@ -167,12 +168,18 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
   const bool krylov = useKrylov(spec, n);
   r.solver = krylov ? "krylov" : "dense";
   Eigen::MatrixXd monodromy(krylov ? 0 : n, krylov ? 0 : n);
+  if (spec.return_map)
+    r.picard_iterations = shooting::picardForced(flow, y, T, spec.tolerance).iterations;
   bool converged = false;
   for (int it = 0;; ++it) {
     const Eigen::VectorXd end = flow(y, T);
     const Eigen::VectorXd F = end - y;
     r.residual = F.norm() / (1.0 + y.norm());
     r.iterations = it;
+    if (r.residual <= spec.tolerance) {
+      r.flows_to_converge = flow.count();
+      r.periods_to_converge = flow.integrated() / T;
+    }
     if (!krylov)
       shooting::parallelColumns(n, threadsOf(spec), [&](Eigen::Index j) {
         const double d = spec.fd_step * std::max(std::abs(y[j]), floor[j]);
@@ -183,6 +190,19 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
       });
     if (r.residual <= spec.tolerance) {
       converged = true;
+      if (!krylov) {
+        // One more step with the monodromy at hand, kept if it lowers the residual (as for
+        // the autonomous orbit).
+        const Eigen::VectorXd y2 =
+            y + (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F);
+        if (y2.allFinite()) {
+          if (const double res2 = (flow(y2, T) - y2).norm() / (1.0 + y2.norm());
+              res2 < r.residual) {
+            y = y2;
+            r.residual = res2;
+          }
+        }
+      }
       break;
     }
     if (it == spec.max_iterations) break;
@@ -293,6 +313,13 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
     shooting::parallelColumns(n + 1, threads, column);
   };
 
+  // Return-map iterations first: a stick-slip orbit converges in two or three of them
+  // (study/orbit/picard.hpp); Newton's method takes over where they do not shrink the
+  // residual fast.
+  if (spec.return_map)
+    r.picard_iterations =
+        shooting::picardAutonomous(flow, y, T, phase, model.options.time_step, spec.tolerance)
+            .iterations;
   bool converged = false;
   for (int it = 0;; ++it) {
     const Eigen::VectorXd end = flow(y, T);
@@ -301,9 +328,34 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
     F[n] = y[phase];
     r.residual = F.norm() / (1.0 + y.norm());
     r.iterations = it;
+    if (r.residual <= spec.tolerance) {
+      r.flows_to_converge = flow.count();
+      r.periods_to_converge = flow.integrated() / T;
+    }
     if (!krylov) jacobian();  // also the monodromy at the final point
     if (r.residual <= spec.tolerance) {
       converged = true;
+      if (!krylov) {
+        // One more step with the Jacobian at hand (the multipliers' anyway), kept if it
+        // lowers the residual: return-map iterations stop at the tolerance.
+        Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
+        J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
+        J.topRightCorner(n, 1) = along;
+        J(n, phase) = 1.0;
+        const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(-F);
+        const Eigen::VectorXd y2 = y + dz.head(n);
+        const double T2 = T + dz[n];
+        if (y2.allFinite() && T2 > 0.0) {
+          Eigen::VectorXd F2(n + 1);
+          F2.head(n) = flow(y2, T2) - y2;
+          F2[n] = y2[phase];
+          if (const double res2 = F2.norm() / (1.0 + y2.norm()); res2 < r.residual) {
+            y = y2;
+            T = T2;
+            r.residual = res2;
+          }
+        }
+      }
       break;
     }
     if (it == spec.max_iterations) break;
@@ -363,8 +415,12 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
   sampleOrbit(flow, coords, y, T, body, axis, r);
   // An equilibrium closes on itself for any T: a settling run whose oscillation was decaying
   // leads Newton onto it, and its "orbit" is a point (its "trivial" multiplier is then no
-  // check at all). Refused where the amplitude is below kEquilibrium of the settling run's.
-  if (!(r.amplitude_pp > kEquilibrium * r.guess_amplitude_pp))
+  // check at all). Refused where the amplitude is below kEquilibrium of the settling run's,
+  // or within a hundred times Newton's tolerance of nothing (a settling run that had already
+  // decayed to rounding gives a guess of that size too).
+  const double size = 1.0 + std::max(std::abs(r.x_max), std::abs(r.x_min));
+  if (!(r.amplitude_pp > kEquilibrium * r.guess_amplitude_pp) ||
+      !(r.amplitude_pp > 100.0 * spec.tolerance * size))
     throw OrbitError("the orbit found is an equilibrium (amplitude " +
                      shooting::messageNumber(r.amplitude_pp) + " in " + r.observed +
                      " against the settling run's " +
@@ -409,7 +465,10 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
                  {"tolerance", spec.tolerance},
                  {"fd_step", shooting::fdStepFor(*scene.model, spec.fd_step)},
                  {"solver", r.solver},
+                 {"picard_iterations", r.picard_iterations},
                  {"flows", r.flows},
+                 {"flows_to_converge", r.flows_to_converge},
+                 {"periods_to_converge", r.periods_to_converge},
                  {"krylov_products", r.krylov_products}};
   j["guess"] = {{"settle", spec.settle > 0.0 ? spec.settle : scene.model->options.duration},
                 {"period", r.guess_period},

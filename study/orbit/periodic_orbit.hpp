@@ -10,7 +10,9 @@
 //                         so that the flow ends at T exactly
 //   v_obs(y0)      = 0    phase: the orbit starts where the observed coordinate (the scene's
 //                         summary body and coordinate) turns from rising to falling
-// solved by Newton's method with the Jacobian from finite differences of the flow (one column
+// solved by return-map iterations while they contract fast (study/orbit/picard.hpp: a
+// stick-slip orbit converges in two of them), then Newton's method with the Jacobian from
+// finite differences of the flow (one column
 // per unknown, the columns shared over the cores) and least squares (QR with column
 // pivoting: directions the joints' constraints remove make it singular). The Floquet
 // multipliers are the eigenvalues of the monodromy matrix d phi_T / d y0 at the orbit; one is
@@ -60,14 +62,16 @@ class OrbitError : public std::runtime_error {
 // flows per unknown, on the cores; every multiplier) or Krylov (matrix-free: GMRES for Newton's
 // step, one flow per product, and Arnoldi for the leading multipliers;
 // study/orbit/krylov.hpp); auto takes Krylov from kKrylovFromUnknowns unknowns on (measured,
-// bench/scenes/orbit_bench.cpp BM_OrbitLanes: Krylov takes 0.87 of dense shooting's time at 12
-// unknowns, 0.34 at 48, 0.17 at 120 and 0.15 at 300).
+// bench/scenes/orbit_bench.cpp BM_OrbitLanes, with the return-map iterations before Newton's:
+// Krylov takes 1.17 of dense shooting's time at 12 unknowns, 0.87 at 48, 0.47 at 120 and 0.49
+// at 300).
 enum class OrbitSolver { kAuto, kDense, kKrylov };
 inline constexpr long kKrylovFromUnknowns = 40;
 
 struct OrbitSpec {
   double settle = 0.0;      // [s] the run that gives the first guess; 0: the scene's duration
   int max_iterations = 12;  // Newton iterations at most
+  bool return_map = true;   // return-map iterations before Newton's (study/orbit/picard.hpp)
   double tolerance = 1e-9;  // converged when |F| <= tolerance (1 + |y0|)
   double fd_step = 1e-7;    // finite-difference step, relative to each unknown's scale
   unsigned threads = 0;     // for the Jacobian's columns; 0: one per core
@@ -82,20 +86,25 @@ struct OrbitResult {
   double period = 0;                                // [s]
   double x_max = 0, x_min = 0, amplitude_pp = 0;    // of the observed coordinate on the orbit
   double guess_period = 0, guess_amplitude_pp = 0;  // from the settled run
-  int iterations = 0;
-  double residual = 0;                            // |F| at the end, relative to 1 + |y0|
+  int iterations = 0;                               // Newton's
+  int picard_iterations = 0;  // return-map iterations before Newton's (study/orbit/picard.hpp)
+  double residual = 0;        // |F| at the end, relative to 1 + |y0|
   std::vector<std::complex<double>> multipliers;  // by decreasing modulus
   int trivial = -1;  // which one is the trivial multiplier (nearest 1); -1 for a forced orbit
-  double trivial_error = 0;       // |mu_trivial - 1|
-  bool stable = false;            // every other multiplier inside the unit circle
-  double largest_multiplier = 0;  // the largest modulus of the others
-  bool forced = false;            // the scene has inputs that vary in time: the period is theirs
-  std::string forcing;            // forced: the first input that varies, and how many more
-  double forcing_period = 0;      // [s] forced: the inputs' common period
-  int periods = 1;                // forced: the orbit's period over the forcing's
-  std::string solver;             // "dense" or "krylov"
-  long flows = 0;                 // flows of one period computed (the settling run aside)
-  long krylov_products = 0;       // Krylov: GMRES and Arnoldi products
+  double trivial_error = 0;        // |mu_trivial - 1|
+  bool stable = false;             // every other multiplier inside the unit circle
+  double largest_multiplier = 0;   // the largest modulus of the others
+  bool forced = false;             // the scene has inputs that vary in time: the period is theirs
+  std::string forcing;             // forced: the first input that varies, and how many more
+  double forcing_period = 0;       // [s] forced: the inputs' common period
+  int periods = 1;                 // forced: the orbit's period over the forcing's
+  std::string solver;              // "dense" or "krylov"
+  long flows = 0;                  // flows computed (the settling run aside): of one period,
+                                   // and one step a return-map iteration
+  long flows_to_converge = 0;      // of those, the flows until the residual was met (the rest
+                                   // are the multipliers' and the sampled period's)
+  double periods_to_converge = 0;  // the time those flows integrated, in periods
+  long krylov_products = 0;        // Krylov: GMRES and Arnoldi products
   std::vector<std::string> coordinates;  // names of y0's entries
   Eigen::VectorXd start;                 // y0
   State reference;           // the state y0's coordinates are taken against (its contacts and time)

@@ -87,6 +87,7 @@ Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
                                  const std::function<void(double, const State&)>& sample,
                                  const std::function<void(const Workspace&)>& contacts) const {
   ++count_;
+  integrated_.fetch_add(T);
   return coords_.toVector(advance(model_, coords_.fromVector(y), T, sample, contacts));
 }
 

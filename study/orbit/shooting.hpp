@@ -57,13 +57,15 @@ class Flow {
   Eigen::VectorXd operator()(const Eigen::VectorXd& y, double T,
                              const std::function<void(double, const State&)>& sample = {},
                              const std::function<void(const Workspace&)>& contacts = {}) const;
-  // Flows computed so far (on any thread).
+  // Flows computed so far (on any thread), and the time they integrated [s].
   long count() const { return count_.load(); }
+  double integrated() const { return integrated_.load(); }
 
  private:
   std::shared_ptr<const Model> model_;
   const OrbitCoordinates& coords_;
   mutable std::atomic<long> count_{0};
+  mutable std::atomic<double> integrated_{0.0};
 };
 
 // The last two maxima of the observed coordinate in a run of `seconds`: the state at the

@@ -130,6 +130,21 @@ def test_orbit_is_the_cli_orbit_json(cli, belt, tmp_path):
         tribo.orbit(tribo.load_scene(belt, set={"v_b": 0, "duration": 3}))
 
 
+def test_orbit_newton_only_is_the_same_orbit_at_more_periods_of_integration(belt):
+    """The return-map iterations (default) and Newton's method alone (newton_only=True, as
+    --newton-only) find the same stick-slip orbit; the first converges within ten periods of
+    integration, the second spends a 26-flow Jacobian an iteration."""
+    scene = tribo.load_scene(belt, set={"duration": 30})
+    fast = tribo.orbit(scene)
+    slow = tribo.orbit(scene, newton_only=True)
+    assert fast["period"] == pytest.approx(slow["period"], rel=1e-9)
+    assert fast["amplitude_pp"] == pytest.approx(slow["amplitude_pp"], rel=1e-8)
+    assert fast["newton"]["picard_iterations"] >= 1
+    assert slow["newton"]["picard_iterations"] == 0
+    assert fast["newton"]["periods_to_converge"] <= 10
+    assert slow["newton"]["periods_to_converge"] >= 26
+
+
 def test_forced_orbit_is_the_linear_oscillators_closed_form_response(source_dir):
     """A block shaken by F0 sin(w t) on a spring and a damper has a forced orbit of the
     forcing's period, of peak-to-peak 2 F0 / |k - m w^2 + i c w| (closed form here), with
