@@ -13,6 +13,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -141,6 +142,15 @@ struct ChannelCase {
   const char* duration;
 };
 
+// Names the case (scene and channel), for the test's name and its folder.
+std::string caseName(const ChannelCase& c) {
+  std::string name = std::string(c.scene) + "_" + c.channel;
+  for (char& ch : name)
+    if (ch == '.') ch = '_';
+  return name;
+}
+void PrintTo(const ChannelCase& c, std::ostream* os) { *os << caseName(c); }
+
 class ChannelSummary : public ::testing::TestWithParam<ChannelCase> {};
 
 TEST_P(ChannelSummary, StreamedEqualsKeptAndTheBodysFigures) {
@@ -155,7 +165,8 @@ TEST_P(ChannelSummary, StreamedEqualsKeptAndTheBodysFigures) {
   Rows rows;
   RunOptions options;
   options.sink = &rows;
-  const fs::path dir = freshDir("channel");
+  // A folder of its own: ctest runs the cases side by side, and each clears its folder.
+  const fs::path dir = freshDir("channel_" + caseName(c));
   options.spill_dir = dir;
   const RunResult streamed = runScene(scene, options);
   ASSERT_TRUE(kept.complete && streamed.complete);
