@@ -182,7 +182,7 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
                           double end, int max_points, double step, double settle, double tolerance,
                           bool from_hopf, double hopf_amplitude, const std::string& arclength,
                           double forcing_period, int periods, const std::string& switch_at,
-                          double switch_amplitude) {
+                          double switch_amplitude, bool newton_only) {
   if (!(max_points >= 2) || !(step >= 0.0) || !(settle >= 0.0) || !(tolerance > 0.0) ||
       !(hopf_amplitude >= 0.0) || !std::isfinite(hopf_amplitude))
     throw py::value_error(
@@ -224,6 +224,7 @@ py::object runOrbitBranch(const SceneHandle& scene, const std::string& parameter
   if (!(switch_amplitude >= 0.0) || !std::isfinite(switch_amplitude))
     throw py::value_error("orbit_branch: switch_amplitude must be >= 0");
   spec.switch_amplitude = switch_amplitude;
+  spec.orbit.return_map = !newton_only;
   study::BranchResult r;
   {
     py::gil_scoped_release release;
@@ -275,16 +276,19 @@ void bindStudies(py::module_& m) {
         py::arg("tolerance") = 1e-9, py::arg("from_hopf") = false, py::arg("hopf_amplitude") = 0.0,
         py::arg("arclength") = "si", py::arg("period") = 0.0, py::arg("periods") = 1,
         py::arg("switch") = "none", py::arg("switch_amplitude") = 0.0,
+        py::arg("newton_only") = false,
         "orbit_branch(scene, parameter, start, end, max_points=20, step=0, settle=0, "
         "tolerance=1e-9, from_hopf=False, hopf_amplitude=0, arclength='si', period=0, periods=1, "
-        "switch='none', switch_amplitude=0) "
+        "switch='none', switch_amplitude=0, newton_only=False) "
         "-> dict: the orbit "
         "at parameter = start continued towards end as `tribo orbit --continue` does; "
         "from_hopf=True starts instead at the Hopf point of steady sliding between start and "
         "end, with a first orbit of hopf_amplitude (0: 1e-3) ('hopf': where); arclength "
         "'scaled' measures the step with each unknown over its scale (--arclength scaled); a "
         "scene whose inputs vary in time gives a branch of forced orbits (period, periods as "
-        "for orbit()); switch='period_doubling' or 'branch_point' follows the branch to its first "
+        "for orbit()); newton_only=True takes every step with the arclength corrector (no "
+        "return-map steps on stick-slip stretches: --newton-only); "
+        "switch='period_doubling' or 'branch_point' follows the branch to its first "
         "such bifurcation, locates it and returns the branch that leaves it there (--switch: "
         "'switch' says where, 'primary_columns' the first branch's columns) "
         "(branch.json's document: status, stop_reason, events, "

@@ -4,14 +4,16 @@
 // and BM_Orbit/belt (one orbit, `tribo orbit`: its settling run, shooting with the Jacobian's
 // columns on the cores, the Floquet multipliers; without and with the return-map iterations
 // before Newton's, study/orbit/picard.hpp; counters over_settled_run, flows,
-// periods_to_converge and over_newton_only); BM_OrbitBranch/belt (the branch
-// from v_b = 1.5 to 3 in steps of 0.5, `tribo orbit --continue`: counters points and
-// per_point_over_settled_run). What a branch point costs against a sweep point is the
-// question a user of `--continue` asks. BM_OrbitLanes/<dense|krylov>/N: the orbit of N belt
-// oscillators side by side (tests/support/belt_lanes.hpp, 12 N unknowns) by dense shooting
-// (2 (12 N + 1) flows a Newton iteration, on the cores) and by matrix-free Krylov shooting
-// (GMRES and Arnoldi, a flow a product); counters unknowns, flows, krylov_products and, for
-// Krylov, over_dense (its time over dense shooting's at the same N, measured before it).
+// periods_to_converge and over_newton_only); BM_OrbitBranch/belt_newton_only and
+// BM_OrbitBranch/belt (the branch from v_b = 1 to 4 in steps of 0.1, `tribo orbit
+// --continue`, without and with the return map's steps, study/orbit/branch_return_map.hpp:
+// counters points, by_return_map, per_point_over_settled_run and over_newton_only). What a branch
+// point costs against a sweep point is the question a user of `--continue` asks.
+// BM_OrbitLanes/<dense|krylov>/N: the orbit of N belt oscillators side by side
+// (tests/support/belt_lanes.hpp, 12 N unknowns) by dense shooting (2 (12 N + 1) flows a Newton
+// iteration, on the cores) and by matrix-free Krylov shooting (GMRES and Arnoldi, a flow a
+// product); counters unknowns, flows, krylov_products and, for Krylov, over_dense (its time over
+// dense shooting's at the same N, measured before it).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -74,21 +76,38 @@ void BM_Orbit(benchmark::State& st, bool return_map) {
     st.counters["over_newton_only"] = each / newtonOnlySeconds();
 }
 
-void BM_OrbitBranch(benchmark::State& st) {
+double& newtonOnlyBranchSeconds() {
+  static double seconds = 0.0;
+  return seconds;
+}
+
+// The belt's branch from v_b = 1 to 4 in steps of 0.1 (about 30 points); `return_map` false
+// is the arclength corrector at every point (the baseline, measured first).
+void BM_OrbitBranch(benchmark::State& st, bool return_map) {
   tribo::study::BranchSpec spec;
   spec.parameter = "v_b";
-  spec.from = 1.5;
-  spec.to = 3.0;
-  spec.step = 0.5;
-  std::size_t points = 0;
+  spec.from = 1.0;
+  spec.to = 4.0;
+  spec.step = 0.1;
+  spec.max_step = 0.1;
+  spec.max_points = 100;
+  spec.orbit.return_map = return_map;
+  std::size_t points = 0, by_return_map = 0;
   const double each = timed(st, [&] {
     const auto r = tribo::study::continueOrbit(kBelt, {}, spec);
     points = r.points.size();
+    by_return_map = 0;
+    for (const auto& p : r.points) by_return_map += p.by_return_map ? 1 : 0;
   });
   st.counters["points"] = static_cast<double>(points);
+  st.counters["by_return_map"] = static_cast<double>(by_return_map);
   if (settledSeconds() > 0.0 && points > 0)
     st.counters["per_point_over_settled_run"] =
         each / static_cast<double>(points) / settledSeconds();
+  if (!return_map)
+    newtonOnlyBranchSeconds() = each;
+  else if (newtonOnlyBranchSeconds() > 0.0)
+    st.counters["over_newton_only"] = each / newtonOnlyBranchSeconds();
 }
 
 std::map<long, double>& denseSeconds() {
@@ -134,7 +153,7 @@ BENCHMARK(BM_Baseline_SettledRun)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Orbit, belt_newton_only, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Orbit, belt, true)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_OrbitBranch)
-    ->Name("BM_OrbitBranch/belt")
+BENCHMARK_CAPTURE(BM_OrbitBranch, belt_newton_only, false)
     ->Unit(benchmark::kMillisecond)
-    ->Iterations(2);
+    ->Iterations(1);
+BENCHMARK_CAPTURE(BM_OrbitBranch, belt, true)->Unit(benchmark::kMillisecond)->Iterations(2);

@@ -134,6 +134,9 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                    {"min_slip", std::isfinite(p.min_slip) ? nlohmann::ordered_json(p.min_slip)
                                                           : nlohmann::ordered_json()},
                    {"trivial_multiplier_error", p.trivial_error},
+                   // "return_map": the multipliers are the leading two, estimated
+                   // (branch_return_map.hpp); "newton": all, from the monodromy matrix.
+                   {"method", p.by_return_map ? "return_map" : "newton"},
                    {"steady_growth_rate", std::isfinite(p.steady_growth)
                                               ? nlohmann::ordered_json(p.steady_growth)
                                               : nlohmann::ordered_json()},
@@ -147,6 +150,7 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                    {"tolerance", spec.orbit.tolerance},
                    {"fd_step", spec.orbit.fd_step},
                    {"arclength_norm", arclengthNormName(spec.norm)},
+                   {"return_map", spec.orbit.return_map},
                    {"switch_amplitude", spec.switch_amplitude}};
   // The scaled norm's weights of the period and the parameter (the state's are per entry).
   if (spec.norm == ArclengthNorm::kScaled && r.weights.size() >= 2)

@@ -65,6 +65,16 @@ class BranchShooter {
     return document_.load(o);
   }
 
+  const OrbitCoordinates& coordinates() const { return coords_; }
+  Eigen::Index phase() const { return phase_; }
+  bool forced() const { return forced_.has_value(); }
+  // A forced orbit's period at the scene `at`: K forcing periods.
+  double forcedPeriod(const io::Scene& at) const {
+    return forced_->periods * forcingPeriod(*at.model, forced_->given);
+  }
+  const Eigen::VectorXd& floor() const { return floor_; }
+  double fdStep() const { return fd_step_; }
+
   // F (n + 1: the orbit closing; the phase, or for a forced orbit T - K P(p)), A = dF/dz
   // ((n + 1) x (n + 2)) and the monodromy matrix. Throws OrbitError (a failed step, no
   // forcing period) or io::SceneError (p outside the scene's range).
@@ -78,9 +88,7 @@ class BranchShooter {
         flow_down(down_p.model, coords_);
     F.resize(n + 1);
     F.head(n) = flow(y, T) - y;
-    auto period = [&](const io::Scene& scene) {
-      return forced_->periods * forcingPeriod(*scene.model, forced_->given);
-    };
+    auto period = [&](const io::Scene& scene) { return forcedPeriod(scene); };
     F[n] = forced_ ? T - period(at) : y[phase_];
     A = Eigen::MatrixXd::Zero(n + 1, n + 2);
     shooting::parallelColumns(n + 2, threads_, [&](Eigen::Index j) {

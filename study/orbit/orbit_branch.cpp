@@ -16,6 +16,7 @@
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
 #include "study/modes/modes.hpp"
+#include "study/orbit/branch_return_map.hpp"
 #include "study/orbit/branch_shooter.hpp"
 #include "study/orbit/branch_switch.hpp"
 #include "study/orbit/forcing.hpp"
@@ -35,6 +36,9 @@ constexpr double kStraight = 0.02;
 // Locating a bifurcation to switch at: orbits corrected at fixed p at most, and |g| enough.
 constexpr int kLocateEvaluations = 12;
 constexpr double kLocated = 1e-9;
+// A step by the return map (branch_return_map.hpp) is tried after a point whose non-trivial
+// multipliers are all below this, and kept when its own estimates are.
+constexpr double kReturnMapBelow = 0.05;
 
 using branch::assignment;
 using branch::BranchShooter;
@@ -178,15 +182,13 @@ BranchResult continueOrbitFromText(
   r.stick_speed = stick_speed;
 
   // A converged point: its multipliers, tangent and the sampled orbit's amplitude.
-  auto makePoint = [&](const BranchShooter& shooter, const Eigen::VectorXd& z,
-                       const Eigen::MatrixXd& monodromy, const Eigen::VectorXd& tangent,
-                       const Eigen::VectorXd& w) {
+  auto makePoint = [&](const BranchShooter& shooter, const Eigen::VectorXd& z, shooting::Floquet f,
+                       const Eigen::VectorXd& tangent, const Eigen::VectorXd& w) {
     BranchPoint pt;
     pt.start = z.head(n);
     pt.period = z[n];
     pt.parameter = z[n + 1];
     pt.dp_ds = w[n + 1] * tangent[n + 1];
-    shooting::Floquet f = shooting::floquet(monodromy, !r.forced);
     pt.multipliers = std::move(f.multipliers);
     pt.trivial = f.trivial;
     pt.trivial_error = f.trivial_error;
@@ -278,7 +280,7 @@ BranchResult continueOrbitFromText(
   }
   Eigen::VectorXd tangent = unitTangent(A, along.cwiseQuotient(w), w);
   {
-    BranchPoint pt = makePoint(shooter, z, monodromy, tangent, w);
+    BranchPoint pt = makePoint(shooter, z, shooting::floquet(monodromy, !r.forced), tangent, w);
     pt.iterations = first_iterations;
     pt.residual = F.norm() / (1.0 + z.head(n).norm());
     r.points.push_back(std::move(pt));
@@ -307,12 +309,36 @@ BranchResult continueOrbitFromText(
         break;
       }
       const Eigen::VectorXd z_pred = z + ds * w.cwiseProduct(d);
-      Correction c = correct(shooter, z_pred, d, ds, w, spec.max_corrector, spec.orbit.tolerance);
+      // Where the last orbit contracts strongly, the return map at the predicted parameter
+      // (branch_return_map.hpp); the arclength corrector otherwise, or where it fails or lands
+      // farther than the step from the prediction (another attractor at that parameter).
+      Correction c;
+      shooting::Floquet floquet;
+      bool by_return_map = false;
+      if (spec.orbit.return_map && r.points.back().largest < kReturnMapBelow) {
+        const branch::ReturnMapStep q =
+            branch::returnMapStep(shooter, z_pred, spec.orbit.tolerance, kReturnMapBelow);
+        if (q.ok && (q.z - z_pred).cwiseQuotient(w).norm() <= ds) {
+          by_return_map = true;
+          c.ok = true;
+          c.z = q.z;
+          c.iterations = q.iterations;
+          c.residual = q.residual;
+          floquet = q.floquet;
+        }
+      }
+      if (!by_return_map) {
+        c = correct(shooter, z_pred, d, ds, w, spec.max_corrector, spec.orbit.tolerance);
+        if (c.ok) floquet = shooting::floquet(c.monodromy, !r.forced);
+      }
       Eigen::VectorXd t;
       BranchPoint pt;
       if (c.ok) {
-        t = unitTangent(c.A, tangent, w);
-        pt = makePoint(shooter, c.z, c.monodromy, t, w);
+        // A return-map point's tangent is the secant that reached it (no Jacobian there).
+        t = by_return_map ? Eigen::VectorXd((c.z - z).cwiseQuotient(w).normalized())
+                          : unitTangent(c.A, tangent, w);
+        pt = makePoint(shooter, c.z, floquet, t, w);
+        pt.by_return_map = by_return_map;
         // An equilibrium closes on itself for any T: a branch whose orbit shrinks to nothing
         // has left the orbits (steady sliding or sticking), not found one. (A forced orbit's
         // period is fixed: a small response is an orbit.)
@@ -379,7 +405,7 @@ BranchResult continueOrbitFromText(
         break;
       }
       const double off = (c.z - z_pred).cwiseQuotient(w).norm() / ds;
-      if (c.iterations <= 2 || (c.iterations == 3 && off <= kStraight))
+      if (by_return_map || c.iterations <= 2 || (c.iterations == 3 && off <= kStraight))
         ds = std::min(1.5 * ds, max_step);
     }
   };
@@ -494,7 +520,8 @@ BranchResult continueOrbitFromText(
             r.weights = w2;
           }
           const Eigen::VectorXd t1 = unitTangent(c1.A, row.cwiseProduct(w2), w2);
-          BranchPoint pt = makePoint(*secondary, c1.z, c1.monodromy, t1, w2);
+          BranchPoint pt =
+              makePoint(*secondary, c1.z, shooting::floquet(c1.monodromy, !r.forced), t1, w2);
           pt.iterations = c1.iterations;
           pt.residual = c1.residual;
           r.points.push_back(std::move(pt));

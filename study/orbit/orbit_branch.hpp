@@ -13,11 +13,15 @@
 // point the unit tangent, the null vector of the Jacobian of the first two rows). Corrector:
 // Newton's method on the three rows with the Jacobian from central differences of the flow:
 // the y0 and T columns as in periodic_orbit.cpp, the p column from the scene reloaded at
-// p +- dp (io::SceneDocument re-reads the overrides without parsing the YAML again). Step
-// control: ds grows by 1.5 after a corrector that converged in at most 2 iterations (or in 3
-// that moved the prediction by at most 0.02 ds: a nearly straight stretch), halves
-// after one that failed (no convergence, a failed step, a correction longer than ds, an orbit
-// collapsed onto an equilibrium: amplitude below 1e-6 of the first point's, which closes on
+// p +- dp (io::SceneDocument re-reads the overrides without parsing the YAML again). After a
+// point whose non-trivial multipliers are all below 0.05 (stick-slip), a step is first tried
+// by the return map at the predicted parameter (study/orbit/branch_return_map.hpp: no
+// Jacobian, the leading multipliers estimated; OrbitSpec::return_map false never tries one),
+// the corrector taking over where it fails. Step
+// control: ds grows by 1.5 after a return-map step or a corrector that converged in at most 2
+// iterations (or in 3 that moved the prediction by at most 0.02 ds: a nearly straight stretch),
+// halves after one that failed (no convergence, a failed step, a correction longer than ds, an
+// orbit collapsed onto an equilibrium: amplitude below 1e-6 of the first point's, which closes on
 // itself for any T); the branch stops below the smallest step, naming why.
 // The arclength's norm (BranchSpec::norm): `si`, the unknowns in their own SI units
 // (|dz|^2 = |dy0|^2 + dT^2 + dp^2, a parameter in N/m weighs a million times one in MN/m), or
@@ -151,9 +155,12 @@ struct BranchPoint {
   // study/modes/modes.hpp): the steady branch beside the orbits, stable where it is < 0;
   // NaN where the scene has no steady state.
   double steady_growth = NAN;
-  double dp_ds = 0;          // the unit tangent's parameter component (dp per unit of s)
-  double arclength = 0;      // s from the branch's start
-  int iterations = 0;        // the corrector's
+  double dp_ds = 0;      // the unit tangent's parameter component (dp per unit of s)
+  double arclength = 0;  // s from the branch's start
+  int iterations = 0;    // the corrector's (the return map's where by_return_map)
+  // Reached by the return map at the predicted parameter (branch_return_map.hpp): its
+  // multipliers are then the trivial one and the two leading others, estimated.
+  bool by_return_map = false;
   double residual = 0;       // |F| / (1 + |y0|) of the closing and phase rows
   double step = 0;           // the step ds that reached this point (0 for the first)
   Eigen::VectorXd start;     // y0

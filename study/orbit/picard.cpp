@@ -9,25 +9,19 @@ namespace tribo::study::shooting {
 
 namespace {
 
-// The vector field at y by a one-sided difference of second order over two steps of h,
-// f = (-3 y + 4 phi_h(y) - phi_2h(y)) / 2h (a first-order one errs by h f' / 2: at the section
-// the observed coordinate's rate is 0, and that error would move the iterate off it).
-Eigen::VectorXd vectorField(const Flow& flow, const Eigen::VectorXd& y, double h) {
-  return (4.0 * flow(y, h) - flow(y, 2.0 * h) - 3.0 * y) / (2.0 * h);
-}
-
-// The return map's iterations under the rule of picard.hpp. `advance(y, T, residual)` flows
-// once, writes the residual of (y, T) and replaces them with the next iterate.
+// The return map's iterations under the rule of picard.hpp. `advance(y, T, residual, end)`
+// flows once, writes the residual of (y, T) and the flow's end, and, unless the residual is
+// within the tolerance, replaces y and T with the next iterate.
 template <class Advance>
 PicardOutcome iterate(Eigen::VectorXd& y, double& T, double tolerance, Advance advance) {
   PicardOutcome out;
   Eigen::VectorXd best_y = y;
   double best_T = T, best = INFINITY, previous = INFINITY;
   for (int it = 0; it <= kPicardMostIterations; ++it) {
-    Eigen::VectorXd next_y = y;
+    Eigen::VectorXd next_y = y, end;
     double next_T = T, residual = INFINITY;
     try {
-      advance(next_y, next_T, residual);
+      advance(next_y, next_T, residual, end);
     } catch (const OrbitError&) {
       break;  // a failed step: Newton's method starts from the best iterate and reports it
     }
@@ -39,6 +33,7 @@ PicardOutcome iterate(Eigen::VectorXd& y, double& T, double tolerance, Advance a
       best = residual;
       best_y = y;
       best_T = T;
+      out.end = end;
       out.iterations = it;
     }
     if (residual <= tolerance) {
@@ -59,6 +54,12 @@ PicardOutcome iterate(Eigen::VectorXd& y, double& T, double tolerance, Advance a
 
 }  // namespace
 
+// (A first-order difference errs by h f' / 2: at the section the observed coordinate's rate is
+// 0, and that error would move the iterate off it.)
+Eigen::VectorXd vectorField(const Flow& flow, const Eigen::VectorXd& y, double h) {
+  return (4.0 * flow(y, h) - flow(y, 2.0 * h) - 3.0 * y) / (2.0 * h);
+}
+
 PicardOutcome picardAutonomous(const Flow& flow, Eigen::VectorXd& y, double& T, Eigen::Index phase,
                                double step, double tolerance) {
   const double h = std::min(step, 0.01 * T);
@@ -73,35 +74,38 @@ PicardOutcome picardAutonomous(const Flow& flow, Eigen::VectorXd& y, double& T, 
       y -= (y[phase] / f0[phase]) * f0;
   }
   const PicardOutcome out =
-      iterate(y, T, tolerance, [&](Eigen::VectorXd& z, double& period, double& residual) {
-        const Eigen::VectorXd end = flow(z, period);
-        const Eigen::Index n = z.size();
-        Eigen::VectorXd F(n + 1);
-        F.head(n) = end - z;
-        F[n] = z[phase];
-        residual = F.norm() / (1.0 + z.norm());
-        // The vector field at `end`, and the time to the section from there.
-        const Eigen::VectorXd f = vectorField(flow, end, h);
-        const double tau = f[phase] != 0.0 ? -end[phase] / f[phase] : 0.0;
-        // A shift of more than a tenth of the period is no small correction: stop here.
-        if (!(std::abs(tau) <= 0.1 * period)) {
-          z.setConstant(NAN);
-          return;
-        }
-        z = end + tau * f;
-        period += tau;
-      });
+      iterate(y, T, tolerance,
+              [&](Eigen::VectorXd& z, double& period, double& residual, Eigen::VectorXd& end) {
+                end = flow(z, period);
+                const Eigen::Index n = z.size();
+                Eigen::VectorXd F(n + 1);
+                F.head(n) = end - z;
+                F[n] = z[phase];
+                residual = F.norm() / (1.0 + z.norm());
+                if (residual <= tolerance) return;
+                // The vector field at `end`, and the time to the section from there.
+                const Eigen::VectorXd f = vectorField(flow, end, h);
+                const double tau = f[phase] != 0.0 ? -end[phase] / f[phase] : 0.0;
+                // A shift of more than a tenth of the period is no small correction: stop here.
+                if (!(std::abs(tau) <= 0.1 * period)) {
+                  z.setConstant(NAN);
+                  return;
+                }
+                z = end + tau * f;
+                period += tau;
+              });
   if (!std::isfinite(out.residual)) y = start;  // not one flow came back: as it was
   return out;
 }
 
 PicardOutcome picardForced(const Flow& flow, Eigen::VectorXd& y, double T, double tolerance) {
   double period = T;
-  return iterate(y, period, tolerance, [&](Eigen::VectorXd& z, double&, double& residual) {
-    const Eigen::VectorXd end = flow(z, T);
-    residual = (end - z).norm() / (1.0 + z.norm());
-    z = end;
-  });
+  return iterate(y, period, tolerance,
+                 [&](Eigen::VectorXd& z, double&, double& residual, Eigen::VectorXd& end) {
+                   end = flow(z, T);
+                   residual = (end - z).norm() / (1.0 + z.norm());
+                   z = end;
+                 });
 }
 
 }  // namespace tribo::study::shooting

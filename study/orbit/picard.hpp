@@ -36,7 +36,12 @@ struct PicardOutcome {
   int iterations = 0;      // return-map iterations taken (flows of a period)
   double residual = 0;     // of the iterate returned, relative to 1 + |y|
   bool converged = false;  // residual <= tolerance
+  Eigen::VectorXd end;     // phi_T of the iterate returned (empty if no flow came back)
 };
+
+// The vector field at y by a one-sided difference of second order over two steps of h:
+// f = (-3 y + 4 phi_h(y) - phi_2h(y)) / 2h.
+Eigen::VectorXd vectorField(const Flow& flow, const Eigen::VectorXd& y, double h);
 
 // Autonomous orbits: y on (or near) the section y[phase] = 0, T its return time; `step` the
 // time over which the vector field is differenced (the integrator's step). y and T are
