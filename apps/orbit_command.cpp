@@ -223,8 +223,8 @@ int runOrbit(Arguments& a) {
     std::printf("period           %.10g s = %d x the forcing's %.10g s (%s)\n", r.period, r.periods,
                 r.forcing_period, r.forcing.c_str());
   else
-    std::printf("period           %.10g s (%.6g Hz); the settled run gave %.6g s\n", r.period,
-                1.0 / r.period, r.guess_period);
+    std::printf("period           %.10g s (%.6g Hz); the settled run gave %.6g s (after %.4g s)\n",
+                r.period, 1.0 / r.period, r.guess_period, r.guess_seconds);
   std::printf("amplitude        %.10g peak to peak in %s (%.10g to %.10g)\n", r.amplitude_pp,
               r.observed.c_str(), r.x_min, r.x_max);
   std::printf(
@@ -263,8 +263,9 @@ Command addOrbitCommand(CLI::App& tribo) {
   addOutOption(*orbit, a->out_dir, "output folder: DIR/orbit.json and DIR/orbit.csv")->required();
   addSetOption(*orbit, a->overrides);
   addCheckedOption(*orbit, "--settle", "SECONDS",
-                   "the run whose last two maxima give the first guess (default: the\n"
-                   "scene's duration)",
+                   "the run whose last two maxima give the first guess, at most this long\n"
+                   "(default: the scene's duration); it stops once three cycles repeat\n"
+                   "the one before to 1e-6",
                    [a](const std::string& v) { a->spec.settle = positive("--settle", v); });
   addCheckedOption(*orbit, "--tolerance", "X",
                    "Newton's tolerance on |phi_T(y0) - y0| / (1 + |y0|) (1e-9)",

@@ -151,6 +151,7 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
       });
   r.guess_period = T;
   r.guess_amplitude_pp = hi - lo;
+  r.guess_seconds = cycles * T;
   const OrbitCoordinates coords(model, settled);
   const Flow flow(scene.model, coords);
   const Eigen::Index n = coords.size();
@@ -276,6 +277,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
   const shooting::Guess guess = shooting::settledGuess(scene.model, body, axis, settle);
   r.guess_period = guess.period;
   r.guess_amplitude_pp = guess.amplitude_pp;
+  r.guess_seconds = guess.seconds;
   const OrbitCoordinates coords(model, guess.state);
   const Flow flow(scene.model, coords);
   const Eigen::Index n = coords.size();
@@ -471,6 +473,7 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
                  {"periods_to_converge", r.periods_to_converge},
                  {"krylov_products", r.krylov_products}};
   j["guess"] = {{"settle", spec.settle > 0.0 ? spec.settle : scene.model->options.duration},
+                {"settled_after", r.guess_seconds},
                 {"period", r.guess_period},
                 {"amplitude_pp", r.guess_amplitude_pp}};
   j["integrator"] = integratorName(scene.model->options.integrator);

@@ -86,7 +86,8 @@ struct OrbitResult {
   double period = 0;                                // [s]
   double x_max = 0, x_min = 0, amplitude_pp = 0;    // of the observed coordinate on the orbit
   double guess_period = 0, guess_amplitude_pp = 0;  // from the settled run
-  int iterations = 0;                               // Newton's
+  double guess_seconds = 0;   // how long the settling run went on (it stops once cycles repeat)
+  int iterations = 0;         // Newton's
   int picard_iterations = 0;  // return-map iterations before Newton's (study/orbit/picard.hpp)
   double residual = 0;        // |F| at the end, relative to 1 + |y0|
   std::vector<std::complex<double>> multipliers;  // by decreasing modulus

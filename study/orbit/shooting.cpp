@@ -94,10 +94,12 @@ Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
 Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds) {
   Simulator sim(model);
   const auto b = static_cast<std::size_t>(body);
-  std::vector<double> crossings;
+  std::vector<double> crossings, peaks;
   std::optional<State> last_state;
   double prev_v = sim.state().bodies[b].velocity[axis];
+  double prev_x = sim.state().bodies[b].position[axis];
   double lo = 1e300, hi = -1e300, lo_prev = 1e300, hi_prev = -1e300;
+  int repeated = 0;  // successive cycles like the one before
   const double h = model->options.time_step;
   const long steps = static_cast<long>(std::ceil(seconds / h));
   for (long i = 0; i < steps; ++i) {
@@ -109,12 +111,26 @@ Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis
     lo = std::min(lo, now.position[axis]);
     hi = std::max(hi, now.position[axis]);
     if (prev_v > 0.0 && v <= 0.0) {
-      crossings.push_back(t_prev + (sim.state().time - t_prev) * prev_v / (prev_v - v));
+      const double dt = sim.state().time - t_prev;
+      crossings.push_back(t_prev + dt * prev_v / (prev_v - v));
+      // The peak of the parabola whose slope goes linearly from prev_v to v over the step.
+      peaks.push_back(prev_x + 0.5 * prev_v * prev_v * dt / (prev_v - v));
       last_state = sim.state();
       lo_prev = lo, hi_prev = hi;
       lo = 1e300, hi = -1e300;
+      const std::size_t k = crossings.size();
+      if (k >= 3) {
+        const double period = crossings[k - 1] - crossings[k - 2];
+        const double before = crossings[k - 2] - crossings[k - 3];
+        const double amplitude = hi_prev - lo_prev;
+        const bool same = std::abs(peaks[k - 1] - peaks[k - 2]) <= kSettledTolerance * amplitude &&
+                          std::abs(period - before) <= kSettledTolerance * period;
+        repeated = same ? repeated + 1 : 0;
+        if (repeated >= kSettledCycles) break;
+      }
     }
     prev_v = v;
+    prev_x = now.position[axis];
   }
   if (crossings.size() < 3)
     throw OrbitError("the observed coordinate has " + std::to_string(crossings.size()) +
@@ -125,6 +141,7 @@ Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis
   g.state = *last_state;
   g.period = crossings.back() - crossings[crossings.size() - 2];
   g.amplitude_pp = hi_prev - lo_prev;
+  g.seconds = sim.state().time;
   return g;
 }
 

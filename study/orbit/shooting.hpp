@@ -68,11 +68,18 @@ class Flow {
   mutable std::atomic<double> integrated_{0.0};
 };
 
-// The last two maxima of the observed coordinate in a run of `seconds`: the state at the
-// last one and the time between them (linear in the velocity's zero crossing).
+// The last two maxima of the observed coordinate in a run of at most `seconds`: the state at
+// the last one and the time between them (linear in the velocity's zero crossing). The run
+// stops early once the cycle repeats: kSettledCycles successive cycles whose peaks (the
+// parabola through the velocity's last step before its zero crossing) and periods each differ
+// from the one before by at most kSettledTolerance of the cycle's amplitude and period (a
+// stick-slip cycle after three or four cycles; a growing or decaying one never).
+inline constexpr int kSettledCycles = 3;
+inline constexpr double kSettledTolerance = 1e-6;
 struct Guess {
   State state;
   double period = 0, amplitude_pp = 0;
+  double seconds = 0;  // how long the run went on
 };
 Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds);
 

@@ -13,6 +13,7 @@
 
 #include "io/scene_loader.hpp"
 #include "study/orbit/periodic_orbit.hpp"
+#include "study/orbit/shooting.hpp"
 
 namespace tribo {
 namespace {
@@ -86,6 +87,35 @@ TEST(ReturnMapOrbit, HandsASlowlyContractingOrbitToNewton) {
   EXPECT_NEAR(fast.largest_multiplier, slow.largest_multiplier, 1e-6);
   EXPECT_NEAR(fast.largest_multiplier, 0.6, 0.05);  // the branch's value there
   EXPECT_TRUE(fast.stable);
+}
+
+// The settling run stops once its cycles repeat (shooting.hpp: three cycles each within 1e-6
+// of the one before), and not while the oscillation still grows or decays.
+TEST(ReturnMapOrbit, TheSettlingRunStopsOnceItsCyclesRepeatAndNotBefore) {
+  // Stick-slip from rest: settled within a few cycles of its onset (measured 22.4 s of 60);
+  // the orbit is Newton's from the same guess (and the 1-DOF model's within 1e-3:
+  // periodic_orbit_test, which also runs on this early guess).
+  const io::Scene belt = io::loadScene(kBelt);
+  const study::OrbitResult early = study::findPeriodicOrbit(belt);
+  EXPECT_LT(early.guess_seconds, 30.0);
+  EXPECT_GT(early.guess_seconds, 5 * early.period);
+  study::OrbitSpec whole;
+  whole.return_map = false;
+  const study::OrbitResult late = study::findPeriodicOrbit(belt, whole);
+  EXPECT_NEAR(early.period / late.period, 1.0, 1e-9);
+  EXPECT_NEAR(early.amplitude_pp / late.amplitude_pp, 1.0, 1e-8);
+  // At 2.6 m/s the oscillation grows out of steady sliding at 0.035 /s (each cycle's peak 4%
+  // above the one before), and on the damped belt at 0.5 m/s it decays: both runs go on to
+  // their end.
+  for (const std::vector<std::string>& overrides :
+       {std::vector<std::string>{"v_b=2.6"},
+        std::vector<std::string>{"friction=stribeck", "springs[wall_spring].damping=10",
+                                 "v_b=0.5"}}) {
+    const io::Scene scene = io::loadScene(kBelt, overrides);
+    const int box = scene.model->findBody("box")->value;
+    const study::shooting::Guess g = study::shooting::settledGuess(scene.model, box, 0, 30.0);
+    EXPECT_NEAR(g.seconds, 30.0, 1e-9) << overrides.front();
+  }
 }
 
 // At v_b = 0.5 the damped belt slides steadily: its settling run decays to rounding (a
