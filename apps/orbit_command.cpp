@@ -217,7 +217,11 @@ int runOrbit(Arguments& a) {
     std::fprintf(stderr, "tribo orbit: %s\n", e.what());
     return 4;
   }
-  std::printf("orbit            %s, %s%s\n", scene.path.c_str(), r.stable ? "stable" : "unstable",
+  std::printf("orbit            %s, %s%s\n", scene.path.c_str(),
+              r.neutral  ? "neutral (a second multiplier on the unit circle: the orbit is one of "
+                           "a family, its stability undecided)"
+              : r.stable ? "stable"
+                         : "unstable",
               r.forced ? ", forced" : "");
   if (r.forced)
     std::printf("period           %.10g s = %d x the forcing's %.10g s (%s)\n", r.period, r.periods,

@@ -42,6 +42,18 @@ std::string adaptiveHint(const Model& model, double tolerance, double residual) 
 // equilibrium Newton found instead (the same bound continuation uses, orbit_branch.cpp).
 constexpr double kEquilibrium = 1e-6;
 
+// A multiplier other than the trivial one closer to the unit circle than the flow can tell
+// (ten times the trivial one's error, at least 1e-6) leaves the orbit's stability undecided:
+// the orbit lies in a family (a conservative motion, a state the dynamics leave free), and
+// "stable" would be a guess. Such an orbit is reported neutral, not stable.
+void markNeutral(OrbitResult& r) {
+  const double band = std::max(1e-6, 10.0 * r.trivial_error);
+  for (std::size_t i = 0; i < r.multipliers.size(); ++i)
+    if (static_cast<int>(i) != r.trivial && std::abs(std::abs(r.multipliers[i]) - 1.0) <= band)
+      r.neutral = true;
+  if (r.neutral) r.stable = false;
+}
+
 unsigned threadsOf(const OrbitSpec& spec) {
   return std::max(1u, spec.threads ? spec.threads : std::thread::hardware_concurrency());
 }
@@ -245,6 +257,7 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
   r.multipliers = std::move(f.multipliers);
   r.stable = f.stable;
   r.largest_multiplier = f.largest;
+  markNeutral(r);
   r.reference = settled;
   sampleOrbit(flow, coords, y, T, body, axis, r);
   r.flows = flow.count();
@@ -318,89 +331,107 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
   // Return-map iterations first: a stick-slip orbit converges in two or three of them
   // (study/orbit/picard.hpp); Newton's method takes over where they do not shrink the
   // residual fast.
-  if (spec.return_map)
-    r.picard_iterations =
-        shooting::picardAutonomous(flow, y, T, phase, model.options.time_step, spec.tolerance)
-            .iterations;
+  double picard_residual = INFINITY;
+  if (spec.return_map) {
+    const shooting::PicardOutcome o =
+        shooting::picardAutonomous(flow, y, T, phase, model.options.time_step, spec.tolerance);
+    r.picard_iterations = o.iterations;
+    picard_residual = o.residual;
+  }
   bool converged = false;
-  for (int it = 0;; ++it) {
-    const Eigen::VectorXd end = flow(y, T);
-    Eigen::VectorXd F(n + 1);
-    F.head(n) = end - y;
-    F[n] = y[phase];
-    r.residual = F.norm() / (1.0 + y.norm());
-    r.iterations = it;
-    if (r.residual <= spec.tolerance) {
-      r.flows_to_converge = flow.count();
-      r.periods_to_converge = flow.integrated() / T;
-    }
-    if (!krylov) jacobian();  // also the monodromy at the final point
-    if (r.residual <= spec.tolerance) {
-      converged = true;
-      if (!krylov) {
-        // One more step with the Jacobian at hand (the multipliers' anyway), kept if it
-        // lowers the residual: return-map iterations stop at the tolerance.
+  try {
+    for (int it = 0;; ++it) {
+      const Eigen::VectorXd end = flow(y, T);
+      Eigen::VectorXd F(n + 1);
+      F.head(n) = end - y;
+      F[n] = y[phase];
+      r.residual = F.norm() / (1.0 + y.norm());
+      r.iterations = it;
+      if (r.residual <= spec.tolerance) {
+        r.flows_to_converge = flow.count();
+        r.periods_to_converge = flow.integrated() / T;
+      }
+      if (!krylov) jacobian();  // also the monodromy at the final point
+      if (r.residual <= spec.tolerance) {
+        converged = true;
+        if (!krylov) {
+          // One more step with the Jacobian at hand (the multipliers' anyway), kept if it
+          // lowers the residual: return-map iterations stop at the tolerance.
+          Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
+          J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
+          J.topRightCorner(n, 1) = along;
+          J(n, phase) = 1.0;
+          const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(-F);
+          const Eigen::VectorXd y2 = y + dz.head(n);
+          const double T2 = T + dz[n];
+          if (y2.allFinite() && T2 > 0.0) {
+            Eigen::VectorXd F2(n + 1);
+            F2.head(n) = flow(y2, T2) - y2;
+            F2[n] = y2[phase];
+            if (const double res2 = F2.norm() / (1.0 + y2.norm()); res2 < r.residual) {
+              y = y2;
+              T = T2;
+              r.residual = res2;
+            }
+          }
+        }
+        break;
+      }
+      if (it == spec.max_iterations) break;
+      Eigen::VectorXd dz;
+      if (krylov) {
+        // J (v, v_T) = ((phi_{T + eps v_T}(y + eps v) - phi_T(y)) / eps - v, v_phase): one flow
+        // per product.
+        Eigen::VectorXd scale(n + 1);
+        scale << scalesOf(y, floor), T;
+        Eigen::VectorXd row_scale = scale;
+        row_scale[n] = scale[phase];
+        const krylov::Product apply = [&](const Eigen::VectorXd& v) {
+          Eigen::VectorXd out(n + 1);
+          const double size = v.cwiseQuotient(scale).cwiseAbs().maxCoeff();
+          if (size == 0.0) return Eigen::VectorXd(Eigen::VectorXd::Zero(n + 1));
+          const double eps = spec.fd_step / size;
+          out.head(n) = (flow(y + eps * v.head(n), T + eps * v[n]) - end) / eps - v.head(n);
+          out[n] = v[phase];
+          return out;
+        };
+        dz = krylovStep(apply, F, scale, row_scale, r);
+      } else {
         Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
         J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
         J.topRightCorner(n, 1) = along;
         J(n, phase) = 1.0;
-        const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(-F);
-        const Eigen::VectorXd y2 = y + dz.head(n);
-        const double T2 = T + dz[n];
-        if (y2.allFinite() && T2 > 0.0) {
-          Eigen::VectorXd F2(n + 1);
-          F2.head(n) = flow(y2, T2) - y2;
-          F2[n] = y2[phase];
-          if (const double res2 = F2.norm() / (1.0 + y2.norm()); res2 < r.residual) {
-            y = y2;
-            T = T2;
-            r.residual = res2;
-          }
-        }
+        dz = J.colPivHouseholderQr().solve(-F);
       }
-      break;
+      // A damped step: the period changes by at most a quarter of itself.
+      const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
+      y += scale * dz.head(n);
+      T += scale * dz[n];
+      if (!(T > 0.0) || !y.allFinite())
+        throw OrbitError("Newton's iteration left the orbit (period " + std::to_string(T) +
+                         " s): start from a run closer to it (a longer --settle)");
     }
-    if (it == spec.max_iterations) break;
-    Eigen::VectorXd dz;
-    if (krylov) {
-      // J (v, v_T) = ((phi_{T + eps v_T}(y + eps v) - phi_T(y)) / eps - v, v_phase): one flow
-      // per product.
-      Eigen::VectorXd scale(n + 1);
-      scale << scalesOf(y, floor), T;
-      Eigen::VectorXd row_scale = scale;
-      row_scale[n] = scale[phase];
-      const krylov::Product apply = [&](const Eigen::VectorXd& v) {
-        Eigen::VectorXd out(n + 1);
-        const double size = v.cwiseQuotient(scale).cwiseAbs().maxCoeff();
-        if (size == 0.0) return Eigen::VectorXd(Eigen::VectorXd::Zero(n + 1));
-        const double eps = spec.fd_step / size;
-        out.head(n) = (flow(y + eps * v.head(n), T + eps * v[n]) - end) / eps - v.head(n);
-        out[n] = v[phase];
-        return out;
-      };
-      dz = krylovStep(apply, F, scale, row_scale, r);
-    } else {
-      Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
-      J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
-      J.topRightCorner(n, 1) = along;
-      J(n, phase) = 1.0;
-      dz = J.colPivHouseholderQr().solve(-F);
-    }
-    // A damped step: the period changes by at most a quarter of itself.
-    const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
-    y += scale * dz.head(n);
-    T += scale * dz[n];
-    if (!(T > 0.0) || !y.allFinite())
-      throw OrbitError("Newton's iteration left the orbit (period " + std::to_string(T) +
-                       " s): start from a run closer to it (a longer --settle)");
+    if (!converged)
+      throw OrbitError("Newton's iteration did not converge in " +
+                       std::to_string(spec.max_iterations) + " iterations (residual " +
+                       std::to_string(r.residual) +
+                       "): the orbit may not be isolated, or the "
+                       "finite differences are too coarse for it" +
+                       adaptiveHint(model, spec.tolerance, r.residual));
+  } catch (const OrbitError& e) {
+    // Return-map iterations that stalled close to the tolerance and a Newton's method that
+    // then failed: the sign of an orbit in a family (a second multiplier at 1, as of a
+    // conservative motion), where the iterations stop contracting and Newton's system is
+    // singular. Say so, and what accepts the orbit they reached.
+    if (!(picard_residual <= 1e3 * spec.tolerance)) throw;
+    throw OrbitError(std::string(e.what()) + "; the return-map iterations had come within " +
+                     shooting::messageNumber(picard_residual) +
+                     " and stalled: the orbit may be one of a family (a second multiplier at "
+                     "1, as of a conservative motion), which leaves Newton's system singular; "
+                     "--tolerance " +
+                     shooting::messageNumber(2 * picard_residual) +
+                     " accepts the orbit they reached");
   }
-  if (!converged)
-    throw OrbitError("Newton's iteration did not converge in " +
-                     std::to_string(spec.max_iterations) + " iterations (residual " +
-                     std::to_string(r.residual) +
-                     "): the orbit may not be isolated, or the "
-                     "finite differences are too coarse for it" +
-                     adaptiveHint(model, spec.tolerance, r.residual));
 
   r.period = T;
   r.start = y;
@@ -411,6 +442,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
   r.trivial_error = f.trivial_error;
   r.stable = f.stable;
   r.largest_multiplier = f.largest;
+  markNeutral(r);
   r.reference = guess.state;
 
   // One period sampled at the step, from the orbit's start (a maximum of x).
@@ -447,6 +479,7 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
   j["x_max"] = r.x_max;
   j["x_min"] = r.x_min;
   j["stable"] = r.stable;
+  j["neutral"] = r.neutral;
   j["largest_multiplier"] = r.largest_multiplier;
   j["forced"] = r.forced;
   if (r.forced) {

@@ -92,8 +92,12 @@ struct OrbitResult {
   double residual = 0;        // |F| at the end, relative to 1 + |y0|
   std::vector<std::complex<double>> multipliers;  // by decreasing modulus
   int trivial = -1;  // which one is the trivial multiplier (nearest 1); -1 for a forced orbit
-  double trivial_error = 0;        // |mu_trivial - 1|
-  bool stable = false;             // every other multiplier inside the unit circle
+  double trivial_error = 0;  // |mu_trivial - 1|
+  bool stable = false;       // every other multiplier inside the unit circle
+  // A multiplier other than the trivial one on the unit circle within the flow's error (ten
+  // times the trivial one's, at least 1e-6): the orbit is one of a family and its stability is
+  // not decided (stable is then false).
+  bool neutral = false;
   double largest_multiplier = 0;   // the largest modulus of the others
   bool forced = false;             // the scene has inputs that vary in time: the period is theirs
   std::string forcing;             // forced: the first input that varies, and how many more

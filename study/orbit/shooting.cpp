@@ -94,15 +94,28 @@ Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
 Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds) {
   Simulator sim(model);
   const auto b = static_cast<std::size_t>(body);
-  std::vector<double> crossings, peaks;
+  // Per maximum: when (the velocity's zero crossing), its peak, and the coordinate's extremes
+  // over the interval that ended there.
+  std::vector<double> crossings, peaks, lows, highs;
   std::optional<State> last_state;
   double prev_v = sim.state().bodies[b].velocity[axis];
   double prev_x = sim.state().bodies[b].position[axis];
-  double lo = 1e300, hi = -1e300, lo_prev = 1e300, hi_prev = -1e300;
-  int repeated = 0;  // successive cycles like the one before
+  double lo = 1e300, hi = -1e300;
+  // The coordinate may peak more than once a cycle (a pendulum swinging past the horizontal):
+  // the cycle is the smallest lag m of maxima after which peak and time repeat.
+  // repeated[m]: successive cycles of m maxima like the one before.
+  std::vector<int> repeated(kMostPeaksPerCycle + 1, 0);
+  int settled_lag = 0;
+  // The amplitude over the last m intervals.
+  auto amplitudeOver = [&](std::size_t m) {
+    const std::size_t k = crossings.size();
+    double a = 1e300, z = -1e300;
+    for (std::size_t i = k - m; i < k; ++i) a = std::min(a, lows[i]), z = std::max(z, highs[i]);
+    return z - a;
+  };
   const double h = model->options.time_step;
   const long steps = static_cast<long>(std::ceil(seconds / h));
-  for (long i = 0; i < steps; ++i) {
+  for (long i = 0; i < steps && settled_lag == 0; ++i) {
     const double t_prev = sim.state().time;
     const StepStatus s = sim.step();
     if (!s.ok) throw OrbitError("the settling run failed: " + s.message);
@@ -115,18 +128,22 @@ Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis
       crossings.push_back(t_prev + dt * prev_v / (prev_v - v));
       // The peak of the parabola whose slope goes linearly from prev_v to v over the step.
       peaks.push_back(prev_x + 0.5 * prev_v * prev_v * dt / (prev_v - v));
+      lows.push_back(lo);
+      highs.push_back(hi);
       last_state = sim.state();
-      lo_prev = lo, hi_prev = hi;
       lo = 1e300, hi = -1e300;
       const std::size_t k = crossings.size();
-      if (k >= 3) {
-        const double period = crossings[k - 1] - crossings[k - 2];
-        const double before = crossings[k - 2] - crossings[k - 3];
-        const double amplitude = hi_prev - lo_prev;
-        const bool same = std::abs(peaks[k - 1] - peaks[k - 2]) <= kSettledTolerance * amplitude &&
-                          std::abs(period - before) <= kSettledTolerance * period;
-        repeated = same ? repeated + 1 : 0;
-        if (repeated >= kSettledCycles) break;
+      for (std::size_t m = 1; m <= kMostPeaksPerCycle && 2 * m + 1 <= k; ++m) {
+        const double period = crossings[k - 1] - crossings[k - 1 - m];
+        const double before = crossings[k - 1 - m] - crossings[k - 1 - 2 * m];
+        const bool same =
+            std::abs(peaks[k - 1] - peaks[k - 1 - m]) <= kSettledTolerance * amplitudeOver(m) &&
+            std::abs(period - before) <= kSettledTolerance * period;
+        repeated[m] = same ? repeated[m] + 1 : 0;
+        if (repeated[m] >= kSettledCycles) {
+          settled_lag = static_cast<int>(m);
+          break;
+        }
       }
     }
     prev_v = v;
@@ -137,10 +154,18 @@ Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis
                      " maxima in the settling run of " + std::to_string(seconds) +
                      " s, fewer than 3: no oscillation to shoot for (steady sliding is stable "
                      "here, or give a longer --settle)");
+  // Not settled to kSettledTolerance: the smallest lag whose last peak repeats to 1e-3 of the
+  // amplitude, one maximum a cycle if none does.
+  const std::size_t k = crossings.size();
+  std::size_t lag = static_cast<std::size_t>(settled_lag);
+  for (std::size_t m = 1; lag == 0 && m <= kMostPeaksPerCycle && m + 1 <= k; ++m)
+    if (std::abs(peaks[k - 1] - peaks[k - 1 - m]) <= 1e-3 * amplitudeOver(m)) lag = m;
+  if (lag == 0) lag = 1;
   Guess g;
   g.state = *last_state;
-  g.period = crossings.back() - crossings[crossings.size() - 2];
-  g.amplitude_pp = hi_prev - lo_prev;
+  g.period = crossings[k - 1] - crossings[k - 1 - lag];
+  g.amplitude_pp = amplitudeOver(lag);
+  g.peaks_per_cycle = static_cast<int>(lag);
   g.seconds = sim.state().time;
   return g;
 }

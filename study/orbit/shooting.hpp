@@ -68,18 +68,24 @@ class Flow {
   mutable std::atomic<double> integrated_{0.0};
 };
 
-// The last two maxima of the observed coordinate in a run of at most `seconds`: the state at
-// the last one and the time between them (linear in the velocity's zero crossing). The run
-// stops early once the cycle repeats: kSettledCycles successive cycles whose peaks (the
-// parabola through the velocity's last step before its zero crossing) and periods each differ
-// from the one before by at most kSettledTolerance of the cycle's amplitude and period (a
-// stick-slip cycle after three or four cycles; a growing or decaying one never).
+// The guess from a run of at most `seconds`: the state at the observed coordinate's last
+// maximum and the cycle's period, the time back to the maximum m before it (each time linear
+// in the velocity's zero crossing), m the maxima a cycle: 1, or up to kMostPeaksPerCycle where
+// the coordinate peaks more than once a cycle (a pendulum swinging past the horizontal, a
+// doubled period). The run stops early once the cycle repeats: kSettledCycles successive
+// cycles whose last peak (the parabola through the velocity's last step before its zero
+// crossing) and period each differ from the cycle's before by at most kSettledTolerance of the
+// cycle's amplitude and period (a stick-slip cycle after three or four cycles; a growing or
+// decaying one never). A run that ends unsettled takes the smallest m whose peak repeats to
+// 1e-3 of the amplitude, else 1.
 inline constexpr int kSettledCycles = 3;
 inline constexpr double kSettledTolerance = 1e-6;
+inline constexpr std::size_t kMostPeaksPerCycle = 4;
 struct Guess {
   State state;
   double period = 0, amplitude_pp = 0;
-  double seconds = 0;  // how long the run went on
+  int peaks_per_cycle = 1;  // m
+  double seconds = 0;       // how long the run went on
 };
 Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds);
 
