@@ -183,6 +183,12 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
   Eigen::MatrixXd monodromy(krylov ? 0 : n, krylov ? 0 : n);
   if (spec.return_map)
     r.picard_iterations = shooting::picardForced(flow, y, T, spec.tolerance).iterations;
+  // Newton's step, least squares: the joints' constraints make M - I singular in the
+  // directions they remove.
+  auto denseStep = [&](const Eigen::VectorXd& F) {
+    return Eigen::VectorXd(
+        (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F));
+  };
   bool converged = false;
   for (int it = 0;; ++it) {
     const Eigen::VectorXd end = flow(y, T);
@@ -206,8 +212,7 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
       if (!krylov) {
         // One more step with the monodromy at hand, kept if it lowers the residual (as for
         // the autonomous orbit).
-        const Eigen::VectorXd y2 =
-            y + (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F);
+        const Eigen::VectorXd y2 = y + denseStep(F);
         if (y2.allFinite()) {
           if (const double res2 = (flow(y2, T) - y2).norm() / (1.0 + y2.norm());
               res2 < r.residual) {
@@ -230,9 +235,7 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
       };
       y += krylovStep(apply, F, scale, scale, r);
     } else {
-      // Least squares: the joints' constraints make M - I singular in the directions they
-      // remove.
-      y += (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F);
+      y += denseStep(F);
     }
     if (!y.allFinite())
       throw OrbitError(
@@ -338,6 +341,15 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
     r.picard_iterations = o.iterations;
     picard_residual = o.residual;
   }
+  // Newton's step from the dense Jacobian (the monodromy less I, the T column, the phase row),
+  // least squares: the joints' constraints make it singular in the directions they remove.
+  auto denseStep = [&](const Eigen::VectorXd& F) {
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
+    J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
+    J.topRightCorner(n, 1) = along;
+    J(n, phase) = 1.0;
+    return Eigen::VectorXd(J.colPivHouseholderQr().solve(-F));
+  };
   bool converged = false;
   try {
     for (int it = 0;; ++it) {
@@ -357,11 +369,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
         if (!krylov) {
           // One more step with the Jacobian at hand (the multipliers' anyway), kept if it
           // lowers the residual: return-map iterations stop at the tolerance.
-          Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
-          J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
-          J.topRightCorner(n, 1) = along;
-          J(n, phase) = 1.0;
-          const Eigen::VectorXd dz = J.colPivHouseholderQr().solve(-F);
+          const Eigen::VectorXd dz = denseStep(F);
           const Eigen::VectorXd y2 = y + dz.head(n);
           const double T2 = T + dz[n];
           if (y2.allFinite() && T2 > 0.0) {
@@ -397,11 +405,7 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
         };
         dz = krylovStep(apply, F, scale, row_scale, r);
       } else {
-        Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
-        J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
-        J.topRightCorner(n, 1) = along;
-        J(n, phase) = 1.0;
-        dz = J.colPivHouseholderQr().solve(-F);
+        dz = denseStep(F);
       }
       // A damped step: the period changes by at most a quarter of itself.
       const double scale = std::min(1.0, 0.25 * T / std::max(std::abs(dz[n]), 1e-300));
