@@ -28,7 +28,8 @@ struct Arguments {
   std::vector<std::string> overrides;
   study::OrbitSpec spec;
   bool continuation = false;    // --continue given
-  bool branch_options = false;  // --max-points, --step, --arclength, --from-hopf, --hopf-amplitude
+  bool branch_options = false;  // --max-points, --step, --max-step, --arclength, --from-hopf,
+                                // --hopf-amplitude
   bool forced_options = false;  // --period or --periods given
   study::BranchSpec branch;
 };
@@ -185,7 +186,7 @@ int runOrbit(Arguments& a) {
   if (a.continuation) return runBranch(a);
   if (a.branch_options) {
     std::fprintf(stderr,
-                 "tribo orbit: --max-points, --step, --arclength, --from-hopf, "
+                 "tribo orbit: --max-points, --step, --max-step, --arclength, --from-hopf, "
                  "--hopf-amplitude, --switch and --switch-amplitude apply with --continue "
                  "only\n");
     return 1;
@@ -325,6 +326,14 @@ Command addOrbitCommand(CLI::App& tribo) {
                    "(default: |TO - FROM| / 10 with --arclength si, 0.1 scaled)",
                    [a](const std::string& v) {
                      a->branch.step = positive("--step", v);
+                     a->branch_options = true;
+                   });
+  addCheckedOption(*orbit, "--max-step", "S",
+                   "with --continue: the largest arclength step, in the norm's units\n"
+                   "(default: 4 times the first; the step grows by 1.5 after an easy point);\n"
+                   "--step S --max-step S spaces the points evenly",
+                   [a](const std::string& v) {
+                     a->branch.max_step = positive("--max-step", v);
                      a->branch_options = true;
                    });
   addCheckedOption(

@@ -76,20 +76,24 @@ void BM_Orbit(benchmark::State& st, bool return_map) {
     st.counters["over_newton_only"] = each / newtonOnlySeconds();
 }
 
-double& newtonOnlyBranchSeconds() {
-  static double seconds = 0.0;
+// Newton alone's branch time, by step.
+std::map<double, double>& newtonOnlyBranchSeconds() {
+  static std::map<double, double> seconds;
   return seconds;
 }
 
 // The belt's branch from v_b = 1 to 4 in steps of 0.1 (about 30 points); `return_map` false
-// is the arclength corrector at every point (the baseline, measured first).
-void BM_OrbitBranch(benchmark::State& st, bool return_map) {
+// is the arclength corrector at every point (the baseline, measured first). `step` 0.03: the
+// issue's 100 points (`tribo orbit scenes/belt.yaml --continue v_b=1:4 --step 0.03 --max-step
+// 0.03 --max-points 100`); per_point_over_settled_run is then the branch's time over that of the
+// settled sweep of the same 100 values.
+void BM_OrbitBranch(benchmark::State& st, bool return_map, double step) {
   tribo::study::BranchSpec spec;
   spec.parameter = "v_b";
   spec.from = 1.0;
   spec.to = 4.0;
-  spec.step = 0.1;
-  spec.max_step = 0.1;
+  spec.step = step;
+  spec.max_step = step;
   spec.max_points = 100;
   spec.orbit.return_map = return_map;
   std::size_t points = 0, by_return_map = 0;
@@ -105,9 +109,10 @@ void BM_OrbitBranch(benchmark::State& st, bool return_map) {
     st.counters["per_point_over_settled_run"] =
         each / static_cast<double>(points) / settledSeconds();
   if (!return_map)
-    newtonOnlyBranchSeconds() = each;
-  else if (newtonOnlyBranchSeconds() > 0.0)
-    st.counters["over_newton_only"] = each / newtonOnlyBranchSeconds();
+    newtonOnlyBranchSeconds()[step] = each;
+  else if (const auto it = newtonOnlyBranchSeconds().find(step);
+           it != newtonOnlyBranchSeconds().end())
+    st.counters["over_newton_only"] = each / it->second;
 }
 
 std::map<long, double>& denseSeconds() {
@@ -153,7 +158,10 @@ BENCHMARK(BM_Baseline_SettledRun)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Orbit, belt_newton_only, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Orbit, belt, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_OrbitBranch, belt_newton_only, false)
+BENCHMARK_CAPTURE(BM_OrbitBranch, belt_newton_only, false, 0.1)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
-BENCHMARK_CAPTURE(BM_OrbitBranch, belt, true)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK_CAPTURE(BM_OrbitBranch, belt, true, 0.1)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK_CAPTURE(BM_OrbitBranch, belt_100, true, 0.03)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(2);

@@ -74,6 +74,22 @@ class BranchShooter {
   }
   const Eigen::VectorXd& floor() const { return floor_; }
   double fdStep() const { return fd_step_; }
+  unsigned threads() const { return threads_; }
+
+  // The Jacobian's parameter column at z (its first n rows: d phi / d p by central
+  // differences, two flows side by side), for a point whose other columns are known.
+  Eigen::VectorXd parameterColumn(const Eigen::VectorXd& z) const {
+    const Eigen::Index n = coords_.size();
+    const Eigen::VectorXd y = z.head(n);
+    const double T = z[n], p = z[n + 1];
+    const io::Scene up_p = sceneAt(p + dp_), down_p = sceneAt(p - dp_);
+    const shooting::Flow flow_up(up_p.model, coords_), flow_down(down_p.model, coords_);
+    Eigen::VectorXd up, down;
+    shooting::parallelColumns(2, threads_, [&](Eigen::Index j) {
+      (j == 0 ? up : down) = (j == 0 ? flow_up : flow_down)(y, T);
+    });
+    return (up - down) / (2 * dp_);
+  }
 
   // F (n + 1: the orbit closing; the phase, or for a forced orbit T - K P(p)), A = dF/dz
   // ((n + 1) x (n + 2)) and the monodromy matrix. Throws OrbitError (a failed step, no

@@ -181,30 +181,22 @@ BranchResult continueOrbitFromText(
   const double stick_speed = first.output.summary.stick_speed;
   r.stick_speed = stick_speed;
 
-  // A converged point: its multipliers, tangent and the sampled orbit's amplitude.
-  auto makePoint = [&](const BranchShooter& shooter, const Eigen::VectorXd& z, shooting::Floquet f,
-                       const Eigen::VectorXd& tangent, const Eigen::VectorXd& w) {
-    BranchPoint pt;
-    pt.start = z.head(n);
-    pt.period = z[n];
-    pt.parameter = z[n + 1];
-    pt.dp_ds = w[n + 1] * tangent[n + 1];
-    pt.multipliers = std::move(f.multipliers);
-    pt.trivial = f.trivial;
-    pt.trivial_error = f.trivial_error;
-    pt.stable = f.stable;
-    pt.largest = f.largest;
-    const io::Scene at = shooter.sceneAt(pt.parameter);
-    const shooting::Flow flow(at.model, coords);
+  // The orbit from `start` over `period` at the scene `at`, sampled into pt: the observed
+  // coordinate, its extremes and amplitude, the smallest slip speed and the stick fraction.
+  // Reads nothing but its arguments and the branch's constants (it may run on a worker).
+  // Returns the flow's end (`flow` is the scene's: the return map's step gives its own).
+  auto sampleOrbit = [&](const io::Scene& at, const shooting::Flow& flow,
+                         const Eigen::VectorXd& start, double period, BranchPoint& pt) {
     const auto b = static_cast<std::size_t>(body);
     std::vector<double>& x = pt.x;
-    pt.t.push_back(0.0);
-    x.push_back(coords.fromVector(pt.start).bodies[b].position[axis]);
+    pt.t.assign(1, 0.0);
+    x.assign(1, coords.fromVector(start).bodies[b].position[axis]);
     // The slip speed as the run summary takes it: the largest over the body's contact points,
     // counted where the body touches (normal force > 0); each sample weighs its step.
     double t_prev = 0.0, dt = 0.0, stuck = 0.0, touching = 0.0, min_slip = INFINITY;
-    flow(
-        pt.start, pt.period,
+    pt.min_slip = pt.stick_fraction = NAN;
+    Eigen::VectorXd end = flow(
+        start, period,
         [&](double t, const State& s) {
           pt.t.push_back(t);
           x.push_back(s.bodies[b].position[axis]);
@@ -228,12 +220,34 @@ BranchResult continueOrbitFromText(
         });
     if (touching > 0.0) {
       pt.min_slip = min_slip;
-      pt.stick_fraction = stuck / pt.period;
+      pt.stick_fraction = stuck / period;
     }
     // A forced orbit peaks anywhere between samples (an autonomous one starts at its peak).
     pt.x_max = r.forced ? shooting::refinedMaximum(x) : *std::max_element(x.begin(), x.end());
     pt.x_min = shooting::refinedMinimum(x);
     pt.amplitude_pp = pt.x_max - pt.x_min;
+    return end;
+  };
+
+  // A converged point: its multipliers, tangent and the sampled orbit's amplitude (`sampled`:
+  // the orbit at z already sampled by sampleOrbit, beside the return map's products).
+  auto makePoint = [&](const BranchShooter& shooter, const Eigen::VectorXd& z, shooting::Floquet f,
+                       const Eigen::VectorXd& tangent, const Eigen::VectorXd& w,
+                       BranchPoint* sampled = nullptr) {
+    BranchPoint pt;
+    if (sampled != nullptr) pt = std::move(*sampled);
+    pt.start = z.head(n);
+    pt.period = z[n];
+    pt.parameter = z[n + 1];
+    pt.dp_ds = w[n + 1] * tangent[n + 1];
+    pt.multipliers = std::move(f.multipliers);
+    pt.trivial = f.trivial;
+    pt.trivial_error = f.trivial_error;
+    pt.stable = f.stable;
+    pt.largest = f.largest;
+    const io::Scene at = shooter.sceneAt(pt.parameter);
+    if (sampled == nullptr)
+      sampleOrbit(at, shooting::Flow(at.model, coords), pt.start, pt.period, pt);
     // Steady sliding at the same parameter, as `tribo modes` analyses it: the branch beside
     // the orbits (none where the scene has no steady state or the analysis fails, nor for a
     // forced scene, whose inputs keep it from resting in any state).
@@ -273,6 +287,17 @@ BranchResult continueOrbitFromText(
     monodromy = c.monodromy;
     first_iterations = c.iterations;
     along[amplitude_index] = 1.0;
+  } else if (!r.forced && orbit->monodromy.size() > 0) {
+    // The first orbit's own Jacobian (within its tolerance of z) and the parameter's column:
+    // two flows where evaluate() takes 2 (n + 2), and the multipliers `tribo orbit` reports.
+    monodromy = orbit->monodromy;
+    A = Eigen::MatrixXd::Zero(n + 1, n + 2);
+    A.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
+    A.col(n).head(n) = orbit->period_column;
+    A.col(n + 1).head(n) = shooter.parameterColumn(z);
+    A(n, shooter.phase()) = 1.0;
+    first_iterations = orbit->iterations;
+    along[n + 1] = direction;
   } else {
     shooter.evaluate(z, F, A, monodromy);
     first_iterations = orbit->iterations;
@@ -282,7 +307,7 @@ BranchResult continueOrbitFromText(
   {
     BranchPoint pt = makePoint(shooter, z, shooting::floquet(monodromy, !r.forced), tangent, w);
     pt.iterations = first_iterations;
-    pt.residual = F.norm() / (1.0 + z.head(n).norm());
+    pt.residual = F.size() > 0 ? F.norm() / (1.0 + z.head(n).norm()) : orbit->residual;
     r.points.push_back(std::move(pt));
     if (progress) progress(r.points.back(), 0);
   }
@@ -295,7 +320,7 @@ BranchResult continueOrbitFromText(
   auto follow = [&](const BranchShooter& shooter, Eigen::VectorXd z, Eigen::VectorXd tangent,
                     const Eigen::VectorXd& w, bool either_way, BranchSwitch switch_at) {
     Eigen::VectorXd d = tangent;  // the predictor's direction: the tangent, then the secant
-    double ds = step;
+    double ds = std::min(step, max_step);
     while (true) {
       if (spec.stop && spec.stop->load()) {
         r.interrupted = true;
@@ -315,9 +340,12 @@ BranchResult continueOrbitFromText(
       Correction c;
       shooting::Floquet floquet;
       bool by_return_map = false;
+      BranchPoint sampled;
       if (spec.orbit.return_map && r.points.back().largest < kReturnMapBelow) {
-        const branch::ReturnMapStep q =
-            branch::returnMapStep(shooter, z_pred, spec.orbit.tolerance, kReturnMapBelow);
+        const branch::ReturnMapStep q = branch::returnMapStep(
+            shooter, z_pred, spec.orbit.tolerance, kReturnMapBelow,
+            [&](const io::Scene& at, const shooting::Flow& flow, const Eigen::VectorXd& y,
+                double T) { return sampleOrbit(at, flow, y, T, sampled); });
         if (q.ok && (q.z - z_pred).cwiseQuotient(w).norm() <= ds) {
           by_return_map = true;
           c.ok = true;
@@ -337,7 +365,7 @@ BranchResult continueOrbitFromText(
         // A return-map point's tangent is the secant that reached it (no Jacobian there).
         t = by_return_map ? Eigen::VectorXd((c.z - z).cwiseQuotient(w).normalized())
                           : unitTangent(c.A, tangent, w);
-        pt = makePoint(shooter, c.z, floquet, t, w);
+        pt = makePoint(shooter, c.z, floquet, t, w, by_return_map ? &sampled : nullptr);
         pt.by_return_map = by_return_map;
         // An equilibrium closes on itself for any T: a branch whose orbit shrinks to nothing
         // has left the orbits (steady sliding or sticking), not found one. (A forced orbit's

@@ -255,6 +255,7 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
                      adaptiveHint(model, spec.tolerance, r.residual));
   r.period = T;
   r.start = y;
+  if (!krylov) r.monodromy = monodromy;
   shooting::Floquet f = krylov ? leadingFloquet(flow, y, T, scalesOf(y, floor), spec, false, r)
                                : shooting::floquet(monodromy, false);
   r.multipliers = std::move(f.multipliers);
@@ -439,6 +440,10 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
 
   r.period = T;
   r.start = y;
+  if (!krylov) {
+    r.monodromy = monodromy;
+    r.period_column = along;
+  }
   shooting::Floquet f = krylov ? leadingFloquet(flow, y, T, scalesOf(y, floor), spec, true, r)
                                : shooting::floquet(monodromy);
   r.multipliers = std::move(f.multipliers);

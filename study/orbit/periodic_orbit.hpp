@@ -112,7 +112,13 @@ struct OrbitResult {
   long krylov_products = 0;        // Krylov: GMRES and Arnoldi products
   std::vector<std::string> coordinates;  // names of y0's entries
   Eigen::VectorXd start;                 // y0
-  State reference;           // the state y0's coordinates are taken against (its contacts and time)
+  State reference;  // the state y0's coordinates are taken against (its contacts and time)
+  // The dense solver's Jacobian at the last Newton iterate (the polishing step, where kept,
+  // moved y0 from it by less than the tolerance): the monodromy, from which the multipliers
+  // above come, and d phi / d T (autonomous). Empty with the Krylov solver. A branch takes its
+  // first tangent from them (orbit_branch.hpp).
+  Eigen::MatrixXd monodromy;
+  Eigen::VectorXd period_column;
   std::vector<double> t, x;  // the observed coordinate over one period, per step
   double seconds = 0;        // wall time
 };

@@ -228,6 +228,43 @@ TEST_F(OrbitCli, ContinueRefusesToStartFromAnEquilibrium) {
   EXPECT_NE(r.output.find("equilibrium"), std::string::npos) << r.output;
 }
 
+// --step S --max-step S: evenly spaced points (the step would grow by 1.5 after each easy
+// point otherwise), each about S of arclength after the one before; branch.json records the
+// bound.
+TEST_F(OrbitCli, MaxStepKeepsTheStepFromGrowing) {
+  const double step = 0.05;
+  const Result r = runTribo("orbit " + kBelt + " --set duration=30 --out " + dir_.string() +
+                            " --continue v_b=1.4:1.6 --step 0.05 --max-step 0.05 --max-points 8");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
+  EXPECT_EQ(j["settings"]["max_step"].get<double>(), step);
+  std::ifstream csv(dir_ / "branch.csv");
+  std::string line;
+  std::getline(csv, line);
+  const std::size_t arclength_column = [&] {
+    std::istringstream names(line);
+    std::string name;
+    for (std::size_t i = 0; std::getline(names, name, ','); ++i)
+      if (name == "arclength") return i;
+    return std::string::npos;
+  }();
+  ASSERT_NE(arclength_column, std::string::npos) << line;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    std::istringstream fields(line);
+    std::string value;
+    for (std::size_t i = 0; i <= arclength_column; ++i) std::getline(fields, value, ',');
+    // A return-map point lies at the predicted parameter, off the arclength's plane by the
+    // prediction's error in the state (measured 2e-7 of the step); unbounded, the second step
+    // would be 1.5 S.
+    EXPECT_NEAR(std::stod(value), rows * step, 1e-3 * step) << line;
+    ++rows;
+  }
+  // 0.2 m/s of belt speed, the branch nearly straight in v_b (dp/ds about 0.98): 5 or 6 points.
+  EXPECT_GE(rows, 5);
+  EXPECT_LE(rows, 6);
+}
+
 TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
   auto refused = [&](const std::string& spec, const std::string& words) {
     const Result r = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue " + spec);
@@ -250,7 +287,8 @@ TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
   const Result alone = runTribo("orbit " + kBelt + " --out " + dir_.string() + " --step 0.1");
   EXPECT_EQ(alone.status, 1) << alone.output;
   EXPECT_NE(alone.output.find("with --continue"), std::string::npos) << alone.output;
-  for (const std::string hopf : {" --from-hopf", " --hopf-amplitude 1e-3", " --arclength scaled"}) {
+  for (const std::string hopf :
+       {" --from-hopf", " --hopf-amplitude 1e-3", " --arclength scaled", " --max-step 0.1"}) {
     const Result r = runTribo("orbit " + kBelt + " --out " + dir_.string() + hopf);
     EXPECT_EQ(r.status, 1) << hopf << ": " << r.output;
     EXPECT_NE(r.output.find("with --continue"), std::string::npos) << r.output;
@@ -261,6 +299,11 @@ TEST_F(OrbitCli, ContinueRefusesMalformedRangesNamingWhatWasExpected) {
   EXPECT_NE(amplitude.output.find("--hopf-amplitude: expected a number > 0, found '-1'"),
             std::string::npos)
       << amplitude.output;
+  const Result bound =
+      runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue v_b=1:2 --max-step 0");
+  EXPECT_EQ(bound.status, 1) << bound.output;
+  EXPECT_NE(bound.output.find("--max-step: expected a number > 0, found '0'"), std::string::npos)
+      << bound.output;
   const Result norm =
       runTribo("orbit " + kBelt + " --out " + dir_.string() + " --continue v_b=1:2 --arclength l2");
   EXPECT_EQ(norm.status, 1) << norm.output;
