@@ -31,6 +31,7 @@ struct Arguments {
   bool branch_options = false;  // --max-points, --step, --max-step, --arclength, --from-hopf,
                                 // --hopf-amplitude
   bool forced_options = false;  // --period or --periods given
+  bool step_check = true;       // the orbit again at a finer setting (not with --continue)
   study::BranchSpec branch;
 };
 
@@ -206,6 +207,22 @@ int runOrbit(Arguments& a) {
     std::fprintf(stderr, "tribo orbit: no orbit: %s\n", e.what());
     return kExitNoOrbit;
   }
+  // The orbit against a finer setting of the integrator (study/orbit/step_check.hpp).
+  if (a.step_check) {
+    std::string setting;
+    double value = 0;
+    const io::RunSettings finer = study::finerSettings(*scene.model, setting, value);
+    try {
+      r.step_check = study::checkAgainstFinerSetting(
+          io::loadScene(a.scene_path, a.overrides, {}, finer), r, a.spec);
+    } catch (const std::exception& e) {  // a scene that refuses the finer setting
+      study::StepCheck refused;
+      refused.setting = setting;
+      refused.value = value;
+      refused.why = e.what();
+      r.step_check = refused;
+    }
+  }
   const std::filesystem::path out(a.out_dir);
   try {
     std::filesystem::create_directories(out);
@@ -254,6 +271,18 @@ int runOrbit(Arguments& a) {
                 r.multipliers[i].real(), r.multipliers[i].imag());
     ++shown;
   }
+  if (r.step_check) {
+    const study::StepCheck& c = *r.step_check;
+    if (c.converged)
+      std::printf(
+          "step check       at %s %.4g: period %+.3g s (%+.3g of it), amplitude %+.3g "
+          "(%+.3g of it)\n",
+          c.setting.c_str(), c.value, c.period_change, c.relative_period_change, c.amplitude_change,
+          c.relative_amplitude_change);
+    else
+      std::printf("step check       at %s %.4g: not done: %s\n", c.setting.c_str(), c.value,
+                  c.why.c_str());
+  }
   std::printf("results          %s (%.3g s)\n", out.string().c_str(), r.seconds);
   return r.stable ? 0 : kExitUnstable;
 }
@@ -275,6 +304,11 @@ Command addOrbitCommand(CLI::App& tribo) {
   addCheckedOption(*orbit, "--tolerance", "X",
                    "Newton's tolerance on |phi_T(y0) - y0| / (1 + |y0|) (1e-9)",
                    [a](const std::string& v) { a->spec.tolerance = positive("--tolerance", v); });
+  orbit->add_flag_callback(
+      "--no-step-check", [a] { a->step_check = false; },
+      "skip the orbit found again at half the time step (an adaptive integrator:\n"
+      "its tolerances over 100) that says how much period and amplitude\n"
+      "change with the step (orbit.json step_check; one orbit: a branch has none)");
   orbit->add_flag_callback(
       "--newton-only", [a] { a->spec.return_map = false; },
       "skip the return-map iterations that come before Newton's (the orbit is the\n"
@@ -397,6 +431,8 @@ Command addOrbitCommand(CLI::App& tribo) {
       "the orbit where the summary's coordinate peaks, and the period; Newton with the\n"
       "Jacobian by finite differences of the flow (columns on the cores). The multipliers\n"
       "are the monodromy matrix's eigenvalues; one is 1 (reported with its error).\n"
+      "The orbit is then found again at half the step (dopri5, bdf: tolerances over\n"
+      "100) and the change in period and amplitude printed (step check).\n"
       "A scene whose inputs vary in time has forced orbits: their period is the\n"
       "forcing's (or K times it, --periods), the unknowns the state alone, no\n"
       "trivial multiplier. rk4 or semi_implicit_euler (docs/orbits.md).\n"

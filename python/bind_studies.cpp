@@ -114,7 +114,7 @@ py::list runTradeoff(const py::object& scene, const py::object& set,
 }
 
 py::object runOrbit(const SceneHandle& scene, double settle, double tolerance, double period,
-                    int periods, const std::string& solver, bool newton_only) {
+                    int periods, const std::string& solver, bool newton_only, bool step_check) {
   study::OrbitSpec spec;
   spec.return_map = !newton_only;
   if (solver == "dense")
@@ -140,6 +140,20 @@ py::object runOrbit(const SceneHandle& scene, double settle, double tolerance, d
   {
     py::gil_scoped_release release;
     r = study::findPeriodicOrbit(scene.scene, spec);
+    if (step_check) {  // as `tribo orbit` checks it (study/orbit/step_check.hpp)
+      std::string setting;
+      double value = 0;
+      const io::RunSettings finer = study::finerSettings(*scene.scene.model, setting, value);
+      try {
+        r.step_check = study::checkAgainstFinerSetting(scene.withSettings(finer), r, spec);
+      } catch (const std::exception& e) {
+        study::StepCheck refused;
+        refused.setting = setting;
+        refused.value = value;
+        refused.why = e.what();
+        r.step_check = refused;
+      }
+    }
   }
   py::object out = jsonToPython(study::orbitJsonText(scene.scene, spec, r));
   out["t"] = py::array_t<double>(static_cast<py::ssize_t>(r.t.size()), r.t.data());
@@ -259,14 +273,17 @@ void bindStudies(py::module_& m) {
         "actuators' targets). Raises NoSteadyState, ModesError.");
   m.def("orbit", &runOrbit, py::arg("scene"), py::arg("settle") = 0.0, py::arg("tolerance") = 1e-9,
         py::arg("period") = 0.0, py::arg("periods") = 1, py::arg("solver") = "auto",
-        py::arg("newton_only") = false,
+        py::arg("newton_only") = false, py::arg("step_check") = true,
         "orbit(scene, settle=0, tolerance=1e-9, period=0, periods=1, solver='auto', "
-        "newton_only=False) -> dict: the periodic "
+        "newton_only=False, step_check=True) -> dict: the periodic "
         "orbit as `tribo orbit` finds it (orbit.json's document: period, amplitude_pp, stable, "
         "multipliers, newton (with picard_iterations, flows_to_converge, periods_to_converge), "
         "forced, start...) with 't' and 'x', the observed coordinate over "
         "one period as arrays. newton_only=True skips the return-map iterations before "
-        "Newton's (--newton-only). A scene whose inputs vary in time has a forced orbit: period "
+        "Newton's (--newton-only); step_check=False skips 'step_check', the orbit found again "
+        "at half the time step (adaptive integrators: tolerances over 100) and the change in "
+        "period and amplitude (--no-step-check). A scene whose inputs vary in time has a forced "
+        "orbit: period "
         "is the forcing's (0: read from its sines), periods the orbit's length in forcing "
         "periods. solver: 'dense', 'krylov' (GMRES and Arnoldi on flows; the 8 leading "
         "multipliers) or 'auto' (krylov from 40 unknowns). Raises OrbitError (no oscillation, no "

@@ -520,6 +520,24 @@ std::string orbitJsonText(const io::Scene& scene, const OrbitSpec& spec, const O
                 {"amplitude_pp", r.guess_amplitude_pp}};
   j["integrator"] = integratorName(scene.model->options.integrator);
   j["time_step"] = scene.model->options.time_step;
+  if (r.step_check) {
+    const StepCheck& c = *r.step_check;
+    nlohmann::ordered_json check = {{"setting", c.setting},     {"value", c.value},
+                                    {"converged", c.converged}, {"iterations", c.iterations},
+                                    {"residual", c.residual},   {"tolerance", c.tolerance},
+                                    {"flows", c.flows}};
+    if (c.converged) {
+      check["period"] = c.period;
+      check["amplitude_pp"] = c.amplitude_pp;
+      check["period_change"] = c.period_change;
+      check["amplitude_change"] = c.amplitude_change;
+      check["relative_period_change"] = c.relative_period_change;
+      check["relative_amplitude_change"] = c.relative_amplitude_change;
+    } else {
+      check["why"] = c.why;
+    }
+    j["step_check"] = check;
+  }
   nlohmann::ordered_json start = nlohmann::ordered_json::object();
   for (std::size_t i = 0; i < r.coordinates.size(); ++i)
     start[r.coordinates[i]] = r.start[static_cast<Eigen::Index>(i)];

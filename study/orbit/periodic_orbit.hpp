@@ -42,12 +42,14 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/state.hpp"
 #include "io/scene_loader.hpp"
+#include "study/orbit/step_check.hpp"
 
 namespace tribo::study {
 
@@ -116,9 +118,12 @@ struct OrbitResult {
   // The dense solver's Jacobian at the last Newton iterate (the polishing step, where kept,
   // moved y0 from it by less than the tolerance): the monodromy, from which the multipliers
   // above come, and d phi / d T (autonomous). Empty with the Krylov solver. A branch takes its
-  // first tangent from them (orbit_branch.hpp).
+  // first tangent from them (orbit_branch.hpp), the step check its chord steps.
   Eigen::MatrixXd monodromy;
   Eigen::VectorXd period_column;
+  // The orbit against a finer integrator setting, where the caller checked it
+  // (study/orbit/step_check.hpp); orbit.json's "step_check".
+  std::optional<StepCheck> step_check;
   std::vector<double> t, x;  // the observed coordinate over one period, per step
   double seconds = 0;        // wall time
 };

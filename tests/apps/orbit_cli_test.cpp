@@ -51,6 +51,21 @@ TEST_F(OrbitCli, TheBeltsStableOrbitExitsZeroAndWritesBothFiles) {
   EXPECT_NEAR(x, x0, 1e-7);
   EXPECT_NEAR(hi - lo, j["amplitude_pp"].get<double>(), 1e-5);  // the minimum is refined
   EXPECT_FALSE(fs::exists(dir_ / "orbit.json.partial"));
+  // The orbit at half the step (study/orbit/step_check.hpp; its figures are checked in
+  // tests/study/step_check_test.cpp): printed and in orbit.json, its change the step's.
+  const auto& check = j["step_check"];
+  EXPECT_EQ(check["setting"].get<std::string>(), "time_step");
+  EXPECT_EQ(check["value"].get<double>(), 0.0005);
+  EXPECT_TRUE(check["converged"].get<bool>());
+  EXPECT_NEAR(check["period"].get<double>() - period, check["period_change"].get<double>(), 1e-15);
+  EXPECT_GT(std::abs(check["period_change"].get<double>()), 1e-9);
+  EXPECT_NE(r.output.find("step check       at time_step 0.0005: period "), std::string::npos)
+      << r.output;
+  const Result unchecked =
+      runTribo("orbit " + kBelt + " --set duration=30 --no-step-check --out " + dir_.string());
+  EXPECT_EQ(unchecked.status, 0) << unchecked.output;
+  EXPECT_FALSE(nlohmann::json::parse(slurp(dir_ / "orbit.json")).contains("step_check"));
+  EXPECT_EQ(unchecked.output.find("step check"), std::string::npos) << unchecked.output;
 }
 
 TEST_F(OrbitCli, AForcedSceneGivesTheForcingsPeriodAndRefusesContinuation) {

@@ -116,14 +116,18 @@ def test_tradeoff_rows_equal_the_cli(cli, belt, tmp_path):
 
 
 def test_orbit_is_the_cli_orbit_json(cli, belt, tmp_path):
-    """tribo.orbit gives the document `tribo orbit` writes (the same numbers), with the
-    sampled period as arrays that start and end on the orbit's maximum."""
+    """tribo.orbit gives the document `tribo orbit` writes (the same numbers, the orbit at half
+    the step among them; step_check=False leaves it out), with the sampled period as arrays
+    that start and end on the orbit's maximum."""
     subprocess.run([cli, "orbit", belt, "--out", str(tmp_path), "--set", "duration=30"],
                    check=True, capture_output=True)
     theirs = json.loads((tmp_path / "orbit.json").read_text())
     ours = tribo.orbit(tribo.load_scene(belt, set={"duration": 30}))
-    for key in ("period", "amplitude_pp", "stable", "multipliers", "start", "newton"):
+    for key in ("period", "amplitude_pp", "stable", "multipliers", "start", "newton",
+                "step_check"):
         assert ours[key] == theirs[key], key
+    assert "step_check" not in tribo.orbit(tribo.load_scene(belt, set={"duration": 30}),
+                                           step_check=False)
     assert ours["t"][0] == 0 and ours["t"][-1] == pytest.approx(ours["period"], abs=1e-12)
     assert ours["x"][0] == pytest.approx(ours["x"][-1], abs=1e-7)
     with pytest.raises(tribo.OrbitError, match="no oscillation"):
