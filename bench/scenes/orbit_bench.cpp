@@ -6,9 +6,11 @@
 // before Newton's, study/orbit/picard.hpp; counters over_settled_run, flows,
 // periods_to_converge and over_newton_only); BM_OrbitBranch/belt_newton_only and
 // BM_OrbitBranch/belt (the branch from v_b = 1 to 4 in steps of 0.1, `tribo orbit
-// --continue`, without and with the return map's steps, study/orbit/branch_return_map.hpp:
-// counters points, by_return_map, per_point_over_settled_run and over_newton_only). What a branch
-// point costs against a sweep point is the question a user of `--continue` asks.
+// --continue`, without and with the return map's steps, study/orbit/branch_return_map.hpp;
+// BM_OrbitBranch/belt_100 the 100 points in steps of 0.03: counters points,
+// by_return_map, per_point_over_settled_run (wall time), per_point_cpu_over_settled_run
+// (processor time of every thread) and over_newton_only). What a branch point costs against a
+// sweep point is the question a user of `--continue` asks.
 // BM_OrbitLanes/<dense|krylov>/N: the orbit of N belt oscillators side by side
 // (tests/support/belt_lanes.hpp, 12 N unknowns) by dense shooting (2 (12 N + 1) flows a Newton
 // iteration, on the cores) and by matrix-free Krylov shooting (GMRES and Arnoldi, a flow a
@@ -17,6 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <ctime>
 #include <map>
 #include <string>
 
@@ -34,24 +37,39 @@ double& settledSeconds() {
   static double seconds = 0.0;
   return seconds;
 }
+double& settledCpuSeconds() {
+  static double seconds = 0.0;
+  return seconds;
+}
 
+// The process's processor time, every thread's [s].
+double processCpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+// Wall time per iteration; `cpu`, if given, gets the process's processor time per iteration
+// (every thread: the shooting's flows run on both cores).
 template <class Work>
-double timed(benchmark::State& st, Work work) {
-  double total = 0.0;
+double timed(benchmark::State& st, Work work, double* cpu = nullptr) {
+  double total = 0.0, cpu_total = 0.0;
   for (auto _ : st) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = processCpuSeconds();
     work();
+    cpu_total += processCpuSeconds() - cpu_start;
     total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
+  if (cpu != nullptr) *cpu = cpu_total / static_cast<double>(st.iterations());
   return total / static_cast<double>(st.iterations());
 }
 
 void BM_Baseline_SettledRun(benchmark::State& st) {
   const auto scene = tribo::io::loadScene(kBelt);
-  settledSeconds() = timed(st, [&] {
-    const auto r = tribo::study::runScene(scene, tribo::study::RunOptions{});
-    benchmark::DoNotOptimize(r.summary.period);
-  });
+  settledSeconds() = timed(
+      st,
+      [&] {
+        const auto r = tribo::study::runScene(scene, tribo::study::RunOptions{});
+        benchmark::DoNotOptimize(r.summary.period);
+      },
+      &settledCpuSeconds());
 }
 
 double& newtonOnlySeconds() {
@@ -97,17 +115,27 @@ void BM_OrbitBranch(benchmark::State& st, bool return_map, double step) {
   spec.max_points = 100;
   spec.orbit.return_map = return_map;
   std::size_t points = 0, by_return_map = 0;
-  const double each = timed(st, [&] {
-    const auto r = tribo::study::continueOrbit(kBelt, {}, spec);
-    points = r.points.size();
-    by_return_map = 0;
-    for (const auto& p : r.points) by_return_map += p.by_return_map ? 1 : 0;
-  });
+  double cpu = 0.0;
+  const double each = timed(
+      st,
+      [&] {
+        const auto r = tribo::study::continueOrbit(kBelt, {}, spec);
+        points = r.points.size();
+        by_return_map = 0;
+        for (const auto& p : r.points) by_return_map += p.by_return_map ? 1 : 0;
+      },
+      &cpu);
   st.counters["points"] = static_cast<double>(points);
   st.counters["by_return_map"] = static_cast<double>(by_return_map);
-  if (settledSeconds() > 0.0 && points > 0)
+  if (settledSeconds() > 0.0 && points > 0) {
+    // Wall time on the cores against a settled run on one, and processor time against
+    // processor time: a sweep runs its points side by side on the cores (`tribo sweep
+    // --jobs`), so the second is what the branch saves against a sweep on the same machine.
     st.counters["per_point_over_settled_run"] =
         each / static_cast<double>(points) / settledSeconds();
+    st.counters["per_point_cpu_over_settled_run"] =
+        cpu / static_cast<double>(points) / settledCpuSeconds();
+  }
   if (!return_map)
     newtonOnlyBranchSeconds()[step] = each;
   else if (const auto it = newtonOnlyBranchSeconds().find(step);
