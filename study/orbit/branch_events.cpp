@@ -1,6 +1,7 @@
 // The events between a branch's consecutive points (detectBranchEvents, orbit_branch.hpp):
-// folds and Hopf points from the parameter's turns, period doublings, tori and stability
-// changes from the multipliers, grazing from the smallest slip speed.
+// folds and Hopf points from the parameter's turns (dp/ds changing sign where the points'
+// parameters turn too), period doublings, tori and stability changes from the multipliers,
+// grazing from the smallest slip speed.
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -74,26 +75,73 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
   auto complex_outside = [](std::complex<double> mu) { return !isReal(mu) && std::abs(mu) > 1.0; };
   auto complex_any = [](std::complex<double> mu) { return !isReal(mu); };
   auto any = [](std::complex<double>) { return true; };
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+  const std::size_t n = points.size();
+  // Folds and Hopf points: turns of p(s). A turn shows in the points' parameters (they rise
+  // to it and fall after it) and in dp/ds, the unit tangent's parameter component, changing
+  // sign. The tangent comes from the finite-difference Jacobian, which is noisy near a kink
+  // (a joint stop's fold: dp/ds flipped sign six times around one turn), so each turn of the
+  // parameters is one fold, in the interval where the parabola through its three points has
+  // its vertex, located by dp/ds's sign change there (or in the other interval beside the
+  // turn) if there is one and it lies beyond the turning point's parameter, else at that
+  // vertex; a sign change away from any turn is noise. At either end, where the parameters
+  // cannot show a turn, a sign change of dp/ds is a fold.
+  auto step = [&](std::size_t j) { return points[j + 1].parameter - points[j].parameter; };
+  auto flips = [&](std::size_t i) { return points[i].dp_ds * points[i + 1].dp_ds < 0.0; };
+  std::vector<bool> turned(n, false);  // a fold or Hopf point between i and i + 1
+  auto turnAt = [&](std::size_t i, double parameter) {
     const BranchPoint &a = points[i], &b = points[i + 1];
-    if (a.dp_ds * b.dp_ds < 0.0) {
-      // dp/ds linear in s between the points: zero at sigma = a ds / (a - b) past point i,
-      // where p(s), its integral, has its vertex p_i + a sigma / 2.
-      const double ds = b.arclength - a.arclength;
-      const double sigma = a.dp_ds * ds / (a.dp_ds - b.dp_ds);
-      // Through a Hopf point the branch passes the steady state (amplitude zero) and p(s)
-      // turns like at a fold: p - p_H ~ eps^2 for the orbit of amplitude eps, which the phase
-      // condition also meets with -eps (the same orbit from its minimum). Told apart by the
-      // amplitude: falling into the interval, rising after it, small against the branch's.
-      double largest = 0.0;
-      for (const BranchPoint& q : points) largest = std::max(largest, q.amplitude_pp);
-      const bool falls = i > 0 && points[i - 1].amplitude_pp > a.amplitude_pp;
-      const bool rises = i + 2 >= points.size() || points[i + 2].amplitude_pp > b.amplitude_pp;
-      const bool hopf = autonomous && falls && rises &&
-                        std::min(a.amplitude_pp, b.amplitude_pp) < kHopfAmplitude * largest;
-      events.push_back({hopf ? BranchEventKind::kHopf : BranchEventKind::kFold, i, i + 1,
-                        a.parameter + 0.5 * a.dp_ds * sigma});
-    }
+    // Through a Hopf point the branch passes the steady state (amplitude zero) and p(s)
+    // turns like at a fold: p - p_H ~ eps^2 for the orbit of amplitude eps, which the phase
+    // condition also meets with -eps (the same orbit from its minimum). Told apart by the
+    // amplitude: falling into the interval, rising after it, small against the branch's.
+    double largest = 0.0;
+    for (const BranchPoint& q : points) largest = std::max(largest, q.amplitude_pp);
+    const bool falls = i > 0 && points[i - 1].amplitude_pp > a.amplitude_pp;
+    const bool rises = i + 2 >= n || points[i + 2].amplitude_pp > b.amplitude_pp;
+    const bool hopf = autonomous && falls && rises &&
+                      std::min(a.amplitude_pp, b.amplitude_pp) < kHopfAmplitude * largest;
+    events.push_back({hopf ? BranchEventKind::kHopf : BranchEventKind::kFold, i, i + 1, parameter});
+    turned[i] = true;
+  };
+  // dp/ds linear in s between points i and i + 1: zero at sigma = a ds / (a - b) past point i,
+  // where p(s), its integral, has its vertex p_i + a sigma / 2.
+  auto interpolated = [&](std::size_t i) {
+    const BranchPoint &a = points[i], &b = points[i + 1];
+    const double sigma = a.dp_ds * (b.arclength - a.arclength) / (a.dp_ds - b.dp_ds);
+    return a.parameter + 0.5 * a.dp_ds * sigma;
+  };
+  for (std::size_t j = 1; j + 1 < n; ++j) {
+    if (!(step(j - 1) * step(j) < 0.0)) continue;
+    const BranchPoint &l = points[j - 1], &m = points[j], &r = points[j + 1];
+    const double h0 = m.arclength - l.arclength, h1 = r.arclength - m.arclength;
+    const double d0 = step(j - 1) / h0, d1 = step(j) / h1;  // the secants' slopes
+    const double curvature = (d1 - d0) / (h0 + h1);         // p(s) = p_j + b x + c x^2
+    const double slope = d0 + curvature * h0;               // b, x = s - s_j
+    const bool parabola = h0 > 0.0 && h1 > 0.0 && curvature != 0.0;
+    const std::size_t at = parabola && -slope / (2.0 * curvature) < 0.0 ? j - 1 : j;
+    const std::size_t other = at == j ? j - 1 : j;
+    // The turn lies beyond the point where the parameters turn (above it at a maximum of
+    // p, below at a minimum): a location from a noisy dp/ds that is not gives way to the
+    // parabola's vertex.
+    const double vertex = parabola ? m.parameter - slope * slope / (4.0 * curvature) : m.parameter;
+    const double outward = step(j - 1) > 0.0 ? 1.0 : -1.0;
+    auto located = [&](std::size_t i) {
+      const double v = interpolated(i);
+      return (v - m.parameter) * outward >= 0.0 ? v : vertex;
+    };
+    if (flips(at))
+      turnAt(at, located(at));
+    else if (flips(other))
+      turnAt(other, located(other));
+    else
+      turnAt(at, vertex);
+  }
+  if (n >= 2 && !turned[0] && flips(0) && (n == 2 || points[0].dp_ds * step(1) < 0.0))
+    turnAt(0, interpolated(0));
+  if (n >= 3 && !turned[n - 2] && flips(n - 2) && points[n - 1].dp_ds * step(n - 3) < 0.0)
+    turnAt(n - 2, interpolated(n - 2));
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const BranchPoint &a = points[i], &b = points[i + 1];
     bool explained = false;
     if (countOf(a, below_minus_one) != countOf(b, below_minus_one)) {
       events.push_back({BranchEventKind::kPeriodDoubling, i, i + 1,
@@ -113,6 +161,8 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
       events.push_back({BranchEventKind::kGrazing, i, i + 1,
                         crossing(a, b, a.min_slip / stick_speed, b.min_slip / stick_speed)});
   }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const BranchEvent& x, const BranchEvent& y) { return x.before < y.before; });
   return events;
 }
 

@@ -42,8 +42,11 @@
 // multipliers (study/orbit/shooting.hpp), the unit tangent's parameter component dp/ds, and
 // the observed body's smallest slip speed on the orbit and the fraction of the period it
 // spends below the summary's stick speed. Between consecutive points (detectBranchEvents):
-// - fold: dp/ds changes sign; located where the linear interpolation of dp/ds in s
-//   vanishes, the vertex of the parabola p(s) it integrates to;
+// - fold: dp/ds changes sign where the points' parameters turn too (the secants on either
+//   side point opposite ways; a sign change without that is the tangent's noise, as near a
+//   joint stop's kink); located where the linear interpolation of dp/ds in s vanishes, the
+//   vertex of the parabola p(s) it integrates to; a turn of the parameters without a sign
+//   change of dp/ds is a fold at the vertex of the parabola through its three points;
 // - Hopf point: such a turn where the amplitude has a minimum below 0.2 of the branch's
 //   largest (the orbit shrinks onto the steady state, and the phase condition meets it again
 //   from its minimum: p - p_H ~ eps^2 turns there too); the branch stops there;

@@ -239,6 +239,32 @@ TEST(BranchEvents, ASignChangeOfDpDsIsAFoldAtTheVertexOfTheInterpolatedParameter
   EXPECT_EQ(study::branchEventName(events[0].kind), "fold");
 }
 
+// Near a fold at a kink (a joint stop engaging) the finite-difference tangent is noisy:
+// dp/ds flips sign at points where the branch has not turned. p(s) = 4.2 - (s - 5.3)^2 / 100
+// at s = 0..10 turns once, at s = 5.3; dp/ds is the exact slope with noise that flips its
+// sign at s = 2, 4 and 8 (a made-up tangent, the points' parameters exact): one fold, at the
+// interpolated vertex between the points at s = 5 and 6.
+TEST(BranchEvents, ASignChangeOfDpDsWhereTheParametersDoNotTurnIsNoFold) {
+  auto p = [](double s) { return 4.2 - (s - 5.3) * (s - 5.3) / 100.0; };
+  auto slope = [](double s) { return -(s - 5.3) / 50.0; };
+  const double noise[] = {0, 0, -0.1, 0, -0.1, 0, 0, 0, 0.2, 0, 0};
+  std::vector<BranchPoint> points;
+  for (int k = 0; k <= 10; ++k) points.push_back(point(p(k), k, slope(k) + noise[k], {0.5}));
+  const auto events = study::detectBranchEvents(points);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kFold);
+  EXPECT_EQ(events[0].before, 5u);
+  EXPECT_NEAR(events[0].parameter, 4.2, 1e-12);  // linear dp/ds is exact on a parabola
+  // The same turn with the tangent's sign wrong at both points beside it (no sign change
+  // there): the fold at the vertex of the parabola through the three points around the turn.
+  points[5].dp_ds = -0.01;
+  const auto turned = study::detectBranchEvents(points);
+  ASSERT_EQ(turned.size(), 1u);
+  EXPECT_EQ(turned[0].kind, BranchEventKind::kFold);
+  EXPECT_EQ(turned[0].before, 5u);  // the vertex at s = 5.3, between the points at 5 and 6
+  EXPECT_NEAR(turned[0].parameter, 4.2, 1e-12);
+}
+
 TEST(BranchEvents, TheSmallestSlipSpeedThroughTheStickSpeedIsGrazing) {
   std::vector<BranchPoint> points = {point(1.0, 0.0, 1.0, {0.1}), point(2.0, 1.0, 1.0, {0.1}),
                                      point(3.0, 2.0, 1.0, {0.1})};
