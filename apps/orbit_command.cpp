@@ -208,21 +208,11 @@ int runOrbit(Arguments& a) {
     return kExitNoOrbit;
   }
   // The orbit against a finer setting of the integrator (study/orbit/step_check.hpp).
-  if (a.step_check) {
-    std::string setting;
-    double value = 0;
-    const io::RunSettings finer = study::finerSettings(*scene.model, setting, value);
-    try {
-      r.step_check = study::checkAgainstFinerSetting(
-          io::loadScene(a.scene_path, a.overrides, {}, finer), r, a.spec);
-    } catch (const std::exception& e) {  // a scene that refuses the finer setting
-      study::StepCheck refused;
-      refused.setting = setting;
-      refused.value = value;
-      refused.why = e.what();
-      r.step_check = refused;
-    }
-  }
+  if (a.step_check)
+    r.step_check =
+        study::checkOrbitAgainstStep(*scene.model, r, a.spec, [&](const io::RunSettings& finer) {
+          return io::loadScene(a.scene_path, a.overrides, {}, finer);
+        });
   const std::filesystem::path out(a.out_dir);
   try {
     std::filesystem::create_directories(out);

@@ -140,20 +140,10 @@ py::object runOrbit(const SceneHandle& scene, double settle, double tolerance, d
   {
     py::gil_scoped_release release;
     r = study::findPeriodicOrbit(scene.scene, spec);
-    if (step_check) {  // as `tribo orbit` checks it (study/orbit/step_check.hpp)
-      std::string setting;
-      double value = 0;
-      const io::RunSettings finer = study::finerSettings(*scene.scene.model, setting, value);
-      try {
-        r.step_check = study::checkAgainstFinerSetting(scene.withSettings(finer), r, spec);
-      } catch (const std::exception& e) {
-        study::StepCheck refused;
-        refused.setting = setting;
-        refused.value = value;
-        refused.why = e.what();
-        r.step_check = refused;
-      }
-    }
+    if (step_check)  // as `tribo orbit` checks it (study/orbit/step_check.hpp)
+      r.step_check = study::checkOrbitAgainstStep(
+          *scene.scene.model, r, spec,
+          [&](const io::RunSettings& finer) { return scene.withSettings(finer); });
   }
   py::object out = jsonToPython(study::orbitJsonText(scene.scene, spec, r));
   out["t"] = py::array_t<double>(static_cast<py::ssize_t>(r.t.size()), r.t.data());

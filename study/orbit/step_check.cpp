@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <vector>
 
 #include "core/integrator.hpp"
@@ -125,6 +126,22 @@ StepCheck checkAgainstFinerSetting(const io::Scene& finer, const OrbitResult& or
       orbit.amplitude_pp != 0.0 ? c.amplitude_change / orbit.amplitude_pp : 0.0;
   c.flows = flow.count();
   return c;
+}
+
+StepCheck checkOrbitAgainstStep(const Model& model, const OrbitResult& orbit, const OrbitSpec& spec,
+                                const std::function<io::Scene(const io::RunSettings&)>& load) {
+  std::string setting;
+  double value = 0;
+  const io::RunSettings finer = finerSettings(model, setting, value);
+  try {
+    return checkAgainstFinerSetting(load(finer), orbit, spec);
+  } catch (const std::exception& e) {
+    StepCheck refused;
+    refused.setting = setting;
+    refused.value = value;
+    refused.why = e.what();
+    return refused;
+  }
 }
 
 }  // namespace tribo::study

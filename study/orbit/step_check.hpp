@@ -15,10 +15,11 @@
 // The penalty contacts' and friction laws' kinks can keep a method below its order (the
 // belt's amplitude changes 5.5 times less, not 16, from 1 ms to 0.5 ms with RK4), so the
 // change is what is reported, not an extrapolated error.
-// Not here: loading the finer scene (the caller, with io::RunSettings: apps/orbit_command.cpp,
-// python/bind_studies.cpp); a check of a branch's points (one orbit's).
+// Not here: loading the finer scene (the caller's loader, with io::RunSettings:
+// apps/orbit_command.cpp, python/bind_studies.cpp); a check of a branch's points (one orbit's).
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "io/scene_loader.hpp"
@@ -52,5 +53,12 @@ io::RunSettings finerSettings(const Model& model, std::string& setting, double& 
 // state does not match the orbit's coordinates.
 StepCheck checkAgainstFinerSetting(const io::Scene& finer, const OrbitResult& orbit,
                                    const OrbitSpec& spec);
+
+// The whole check for the orbit found on a scene of `model`: its finer settings, the scene
+// `load` gives with them (the scene file again, or a Python scene handle's origin), and the
+// check there. Never throws: a scene that refuses the finer setting, or any other failure,
+// is a check not converged whose `why` says so.
+StepCheck checkOrbitAgainstStep(const Model& model, const OrbitResult& orbit, const OrbitSpec& spec,
+                                const std::function<io::Scene(const io::RunSettings&)>& load);
 
 }  // namespace tribo::study

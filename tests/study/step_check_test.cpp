@@ -112,5 +112,22 @@ TEST(StepCheck, TheBeltsOrbitAtHalfTheStepIsTheOneFoundThereFromItsOwnRun) {
   }
 }
 
+// A scene that refuses the finer setting (the loader throws, as io::loadScene does for a
+// setting a URDF scene does not take): no check, and why not, never an exception.
+TEST(StepCheck, ALoaderThatRefusesTheFinerSettingGivesACheckNotDoneSayingWhy) {
+  const io::Scene scene = io::loadScene(kOscillator);
+  const study::OrbitResult r = study::findPeriodicOrbit(scene);
+  const study::StepCheck c = study::checkOrbitAgainstStep(
+      *scene.model, r, study::OrbitSpec{}, [](const io::RunSettings& finer) -> io::Scene {
+        EXPECT_EQ(finer.time_step.value_or(0.0), 0.0005);  // the scene's 1 ms over 2
+        throw io::SceneError(
+            "robot.urdf: a URDF scene takes duration, time_step and integrator only");
+      });
+  EXPECT_FALSE(c.converged);
+  EXPECT_EQ(c.setting, "time_step");
+  EXPECT_EQ(c.value, 0.0005);
+  EXPECT_NE(c.why.find("robot.urdf: a URDF scene takes"), std::string::npos) << c.why;
+}
+
 }  // namespace
 }  // namespace tribo
