@@ -175,8 +175,8 @@ BranchResult continueOrbitFromText(
   r.norm = spec.norm;
   r.weights = w;
   const double step = spec.step > 0.0 ? spec.step : scaled ? 0.1 : range / 10.0;
-  const double min_step = spec.min_step > 0.0 ? spec.min_step : step / 64.0;
   const double max_step = spec.max_step > 0.0 ? spec.max_step : 4.0 * step;
+  const double min_step = spec.min_step > 0.0 ? spec.min_step : std::min(step, max_step) / 64.0;
   const double direction = spec.to > spec.from ? 1.0 : -1.0;
   const double stick_speed = first.output.summary.stick_speed;
   r.stick_speed = stick_speed;

@@ -120,7 +120,7 @@ struct BranchSpec {
   int max_points = 20;      // points at most, the start included
   ArclengthNorm norm = ArclengthNorm::kSi;
   double step = 0;          // first arclength step; 0: |to - from| / 10 (si), 0.1 (scaled)
-  double min_step = 0;      // the branch stops below this step; 0: step / 64
+  double min_step = 0;      // the branch stops below this step; 0: min(step, max_step) / 64
   double max_step = 0;      // 0: 4 step
   int max_corrector = 6;    // Newton iterations per point at most
   double fd_parameter = 0;  // dp of the p column; 0: orbit.fd_step max(|p|, |to - from|)
