@@ -80,23 +80,28 @@ StepCheck checkAgainstFinerSetting(const io::Scene& finer, const OrbitResult& or
         J(n, phase) = 1.0;
       }
       const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> chord(J);
-      for (int step = 0; step < kMostChordSteps && !c.converged; ++step) {
+      // The best iterate is kept: a chord step that does not shrink the residual ends them.
+      Eigen::VectorXd best_y = y;
+      double best_T = T, best = INFINITY;
+      for (int step = 0; step < kMostChordSteps; ++step) {
         const Eigen::VectorXd end = flow(y, T);
         Eigen::VectorXd F(rows);
         F.head(n) = end - y;
         if (!orbit.forced) F[n] = y[phase];
         const double residual = residualOf(end);
         ++c.iterations;
-        c.residual = residual;
-        if (residual <= tight) {
-          c.converged = true;
-          break;
-        }
+        if (!(residual < best)) break;
+        best = residual, best_y = y, best_T = T;
+        if (residual <= tight) break;
         const Eigen::VectorXd dz = chord.solve(-F);
         if (!dz.allFinite()) break;
         y += dz.head(n);
         if (!orbit.forced) T += dz[n];
       }
+      y = best_y;
+      T = best_T;
+      c.residual = best;
+      c.converged = best <= tight;
     }
   } catch (const OrbitError& e) {
     c.why = std::string("a step failed at the finer setting: ") + e.what();
