@@ -122,15 +122,11 @@ Eigen::VectorXd krylovStep(const krylov::Product& apply, const Eigen::VectorXd& 
 // The observed coordinate over one period from y (r.t, r.x) and its extremes.
 void sampleOrbit(const Flow& flow, const OrbitCoordinates& coords, const Eigen::VectorXd& y,
                  double T, int body, int axis, OrbitResult& r) {
-  const auto b = static_cast<std::size_t>(body);
-  r.t.push_back(0.0);
-  r.x.push_back(coords.fromVector(y).bodies[b].position[axis]);
-  flow(y, T, [&](double t, const State& s) {
-    r.t.push_back(t);
-    r.x.push_back(s.bodies[b].position[axis]);
-  });
-  r.x_max = r.forced ? shooting::refinedMaximum(r.x) : r.x.front();
-  r.x_min = shooting::refinedMinimum(r.x);
+  shooting::SampledPeriod p = shooting::samplePeriod(flow, coords, y, T, body, axis, r.forced);
+  r.t = std::move(p.t);
+  r.x = std::move(p.x);
+  r.x_max = p.x_max;
+  r.x_min = p.x_min;
   r.amplitude_pp = r.x_max - r.x_min;
 }
 
@@ -187,7 +183,7 @@ void forcedOrbit(const io::Scene& scene, const OrbitSpec& spec, int body, int ax
   // directions they remove.
   auto denseStep = [&](const Eigen::VectorXd& F) {
     return Eigen::VectorXd(
-        (monodromy - Eigen::MatrixXd::Identity(n, n)).colPivHouseholderQr().solve(-F));
+        shooting::closingJacobian(monodromy, nullptr, 0).colPivHouseholderQr().solve(-F));
   };
   bool converged = false;
   for (int it = 0;; ++it) {
@@ -345,11 +341,8 @@ OrbitResult findPeriodicOrbit(const io::Scene& scene, const OrbitSpec& given) {
   // Newton's step from the dense Jacobian (the monodromy less I, the T column, the phase row),
   // least squares: the joints' constraints make it singular in the directions they remove.
   auto denseStep = [&](const Eigen::VectorXd& F) {
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 1, n + 1);
-    J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
-    J.topRightCorner(n, 1) = along;
-    J(n, phase) = 1.0;
-    return Eigen::VectorXd(J.colPivHouseholderQr().solve(-F));
+    return Eigen::VectorXd(
+        shooting::closingJacobian(monodromy, &along, phase).colPivHouseholderQr().solve(-F));
   };
   bool converged = false;
   try {

@@ -251,4 +251,31 @@ double refinedMaximum(const std::vector<double>& x) {
   return -refinedMinimum(negated);
 }
 
+SampledPeriod samplePeriod(const Flow& flow, const OrbitCoordinates& coords,
+                           const Eigen::VectorXd& y, double T, int body, int axis, bool forced) {
+  const auto b = static_cast<std::size_t>(body);
+  SampledPeriod p;
+  p.t.push_back(0.0);
+  p.x.push_back(coords.fromVector(y).bodies[b].position[axis]);
+  flow(y, T, [&](double t, const State& s) {
+    p.t.push_back(t);
+    p.x.push_back(s.bodies[b].position[axis]);
+  });
+  p.x_max = forced ? refinedMaximum(p.x) : p.x.front();
+  p.x_min = refinedMinimum(p.x);
+  return p;
+}
+
+Eigen::MatrixXd closingJacobian(const Eigen::MatrixXd& monodromy,
+                                const Eigen::VectorXd* period_column, Eigen::Index phase) {
+  const Eigen::Index n = monodromy.rows(), rows = period_column ? n + 1 : n;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, rows);
+  J.topLeftCorner(n, n) = monodromy - Eigen::MatrixXd::Identity(n, n);
+  if (period_column) {
+    J.topRightCorner(n, 1) = *period_column;
+    J(n, phase) = 1.0;
+  }
+  return J;
+}
+
 }  // namespace tribo::study::shooting

@@ -123,4 +123,21 @@ double refinedMinimum(const std::vector<double>& x);
 // samples).
 double refinedMaximum(const std::vector<double>& x);
 
+// The observed coordinate (body `body`'s position component `axis`) over one period from y:
+// the samples at t = 0 and after each step, and its extremes (the maximum the start's for an
+// autonomous orbit, which starts at its peak; refined between samples for a forced one, and
+// the minimum refined always).
+struct SampledPeriod {
+  std::vector<double> t, x;
+  double x_max = 0, x_min = 0;
+};
+SampledPeriod samplePeriod(const Flow& flow, const OrbitCoordinates& coords,
+                           const Eigen::VectorXd& y, double T, int body, int axis, bool forced);
+
+// Newton's matrix of the closing rows at an orbit: the monodromy less I and, for an
+// autonomous orbit (period_column given), d phi / d T as a last column and the phase row
+// (a 1 at `phase`). Square: n, or n + 1.
+Eigen::MatrixXd closingJacobian(const Eigen::MatrixXd& monodromy,
+                                const Eigen::VectorXd* period_column, Eigen::Index phase);
+
 }  // namespace tribo::study::shooting

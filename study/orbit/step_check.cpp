@@ -73,13 +73,8 @@ StepCheck checkAgainstFinerSetting(const io::Scene& finer, const OrbitResult& or
     // the directions they remove).
     if (!c.converged && orbit.monodromy.size() > 0 && std::isfinite(o.residual)) {
       const Eigen::Index rows = orbit.forced ? n : n + 1;
-      Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, rows);
-      J.topLeftCorner(n, n) = orbit.monodromy - Eigen::MatrixXd::Identity(n, n);
-      if (!orbit.forced) {
-        J.topRightCorner(n, 1) = orbit.period_column;
-        J(n, phase) = 1.0;
-      }
-      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> chord(J);
+      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> chord(shooting::closingJacobian(
+          orbit.monodromy, orbit.forced ? nullptr : &orbit.period_column, phase));
       // The best iterate is kept: a chord step that does not shrink the residual ends them.
       Eigen::VectorXd best_y = y;
       double best_T = T, best = INFINITY;
@@ -117,13 +112,11 @@ StepCheck checkAgainstFinerSetting(const io::Scene& finer, const OrbitResult& or
     c.flows = flow.count();
     return c;
   }
-  // Its amplitude as the orbit's (periodic_orbit.cpp): one period sampled at the step.
-  const auto b = static_cast<std::size_t>(body);
-  std::vector<double> x{coords.fromVector(y).bodies[b].position[axis]};
-  flow(y, T, [&](double, const State& s) { x.push_back(s.bodies[b].position[axis]); });
-  const double x_max = orbit.forced ? shooting::refinedMaximum(x) : x.front();
+  // Its amplitude as the orbit's: one period sampled at the step.
+  const shooting::SampledPeriod sampled =
+      shooting::samplePeriod(flow, coords, y, T, body, axis, orbit.forced);
   c.period = T;
-  c.amplitude_pp = x_max - shooting::refinedMinimum(x);
+  c.amplitude_pp = sampled.x_max - sampled.x_min;
   c.period_change = c.period - orbit.period;
   c.amplitude_change = c.amplitude_pp - orbit.amplitude_pp;
   c.relative_period_change = c.period_change / orbit.period;
