@@ -10,7 +10,9 @@
 //   stable after the second; at a frequency between the folds a plain simulation started at
 //   rest settles on the small stable swing and one started from a large swing on the large
 //   one, each the branch's stable response there (the hysteresis a frequency sweep shows as
-//   a jump).
+//   a jump);
+// - the oscillator's damping followed down to the scene's refusal of c < 0 with a largest step
+//   far below the first: the branch ends within two of its smallest steps of c = 0.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -140,6 +142,33 @@ TEST(ForcedBranch, ThePendulumsFoldsBoundTheRangeWhereSmallAndLargeSwingsAreBoth
       << "f " << small->parameter;
   EXPECT_NEAR(settledAmplitude(large->parameter, 1.3, 200.0) / large->amplitude_pp, 1.0, 2e-4)
       << "f " << large->parameter;
+}
+
+TEST(ForcedBranch, AMaxStepFarBelowTheFirstStepStillHalvesDownToTheScenesBoundary) {
+  // The oscillator's damping c followed down from a few starts, past the scene's refusal of
+  // c < 0, with a first step of 1 and a largest step of 0.1 (so the steps are 0.1 at most).
+  // The smallest step defaults to 1/64 of the smaller of the two, 0.1 / 64: the steps that
+  // cross c = 0 are refused and halved until the branch ends within two of the smallest
+  // steps of the boundary, saying why. (With 1/64 of the first step, 1/64 > 0.1 / 8, the
+  // branch ended 0.006 to 0.018 short of the boundary from these starts.)
+  const double largest = 0.1, smallest = largest / 64.0;
+  for (const double from : {0.53, 0.61, 0.517}) {
+    study::BranchSpec spec;
+    spec.parameter = "c";
+    spec.from = from;
+    spec.to = -1.0;
+    spec.step = 1.0;
+    spec.max_step = largest;
+    spec.max_points = 40;
+    const study::BranchResult r = study::continueOrbit(kOscillator, {}, spec);
+    ASSERT_TRUE(r.lost) << from << ": " << r.stop_reason;
+    EXPECT_NE(r.stop_reason.find("damping must be >= 0"), std::string::npos) << r.stop_reason;
+    const double last = r.points.back().parameter;
+    EXPECT_GE(last, 0.0) << from;
+    EXPECT_LT(last, 2.0 * smallest) << from << ": " << r.stop_reason;
+    for (std::size_t i = 1; i < r.points.size(); ++i)
+      EXPECT_LE(r.points[i].step, largest * (1.0 + 1e-12)) << from << ", point " << i;
+  }
 }
 
 }  // namespace
