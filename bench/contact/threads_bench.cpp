@@ -1,11 +1,12 @@
 // Two threads against one in the same process (SimulationOptions::threads): resting box
-// grids of 20 x 20, 40 x 40 (1600 boxes) and more, generated here like scenes/box_grid20.yaml
-// (0.2 m boxes of 8 kg at a 0.25 m pitch on a half-space at their static depth, Coulomb
-// friction, semi-implicit Euler at 1 ms). Each iteration steps a one-thread simulator and a
-// two-thread one by the same steps, alternately in short runs so a change of the machine's
-// load hits both; counters: the step [us] of each, their ratio (speedup, > 1: two threads
-// faster) and the contact points per step. The trajectories are the same bit for bit
-// (tests/core/threaded_evaluation_test.cpp). Names: BM_Threads/grid<N>.
+// grids of 20 x 20 (on a half-space and on a box ground), 40 x 40 (1600 boxes) and more,
+// generated like scenes/box_grid20.yaml (bench/support/box_grid_scene.hpp: 0.2 m boxes of 8 kg
+// at a 0.25 m pitch at their static depth, Coulomb friction, semi-implicit Euler at 1 ms).
+// Each iteration steps a one-thread simulator and a two-thread one by the same steps,
+// alternately in short runs so a change of the machine's load hits both; counters: the step
+// [us] of each, their ratio (speedup, > 1: two threads faster) and the contact points per
+// step. The trajectories are the same bit for bit (tests/core/threaded_evaluation_test.cpp).
+// Names: BM_Threads/grid<N>[_box_ground].
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -18,15 +19,16 @@
 
 namespace {
 
-std::shared_ptr<const tribo::Model> grid(int n, int threads) {
+std::shared_ptr<const tribo::Model> grid(int n, bool box_ground, int threads) {
   tribo::io::RunSettings settings;
   settings.threads = threads;
-  return tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(n), "grid.yaml", {}, {}, settings)
+  return tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(n, box_ground), "grid.yaml", {},
+                                        {}, settings)
       .model;
 }
 
-void BM_Threads(benchmark::State& st, int n) {
-  tribo::Simulator one(grid(n, 1)), two(grid(n, 2));
+void BM_Threads(benchmark::State& st, int n, bool box_ground) {
+  tribo::Simulator one(grid(n, box_ground, 1)), two(grid(n, box_ground, 2));
   constexpr int kRun = 10;  // steps per turn
   double seconds[2] = {0, 0};
   long steps = 0;
@@ -51,8 +53,15 @@ void BM_Threads(benchmark::State& st, int n) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_Threads, grid20, 20)->Name("BM_Threads/grid20")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Threads, grid40, 40)->Name("BM_Threads/grid40")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Threads, grid20, 20, false)
+    ->Name("BM_Threads/grid20")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Threads, grid20_box_ground, 20, true)
+    ->Name("BM_Threads/grid20_box_ground")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Threads, grid40, 40, false)
+    ->Name("BM_Threads/grid40")
+    ->Unit(benchmark::kMillisecond);
 // 70 x 70 (4900 boxes): set-up needs the pair bookkeeping without its O(n^2) memory first.
 // BENCHMARK_CAPTURE(BM_Threads, grid70,
 // 70)->Name("BM_Threads/grid70")->Unit(benchmark::kMillisecond);
