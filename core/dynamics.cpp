@@ -170,12 +170,15 @@ void Dynamics::updatePoses(const State& state) {
 void Dynamics::detect() {
   detector_.detect(ws_.geometry_poses, ws_.contact_points);
   ws_.contacts.resize(ws_.contact_points.size());
-  // Each point's pair once (with automatic contacts it is derived from the id).
+  // Each point's pair (with automatic contacts it is derived from the id: a division and a
+  // material lookup), once per run of points of one pair: a manifold's points are adjacent.
   const std::size_t n = ws_.contact_points.size();
   ws_.contact_pair.resize(n);
-  parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
-    ws_.contact_pair[i] = model_->contactPair(ws_.contact_points[i].pair);
-  });
+  for (std::size_t i = 0; i < n; ++i) {
+    const int id = ws_.contact_points[i].pair;
+    ws_.contact_pair[i] = i > 0 && id == ws_.contact_points[i - 1].pair ? ws_.contact_pair[i - 1]
+                                                                        : model_->contactPair(id);
+  }
 }
 
 void Dynamics::contactKinematics(const State& state) {
@@ -224,13 +227,12 @@ void Dynamics::assemble(const State& state) {
   point_force_.resize(n);
   point_torque_b_.resize(n);
   point_torque_a_.resize(n);
-  auto bodiesOf = [&](const contact::ContactRecord& rec) {
-    const ContactPair& pair = pairOf(rec);
-    return std::pair{m.geometries[pair.geometry_a].body, m.geometries[pair.geometry_b].body};
-  };
+  point_bodies_.resize(n);
   parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
     const contact::ContactRecord& rec = ws_.contacts[i];
-    const auto [a, b] = bodiesOf(rec);
+    const ContactPair& pair = ws_.contact_pair[i];
+    const BodyIndex a = m.geometries[pair.geometry_a].body, b = m.geometries[pair.geometry_b].body;
+    point_bodies_[i] = {a, b};
     const Vec3 f = rec.force();
     point_force_[i] = f;
     // Plus the rolling and spinning resistance's pure moment (zero without it).
@@ -242,7 +244,7 @@ void Dynamics::assemble(const State& state) {
           (rec.point.position - state.bodies[a.value].position).cross(-f) - rec.moment;
   });
   for (std::size_t i = 0; i < n; ++i) {
-    const auto [a, b] = bodiesOf(ws_.contacts[i]);
+    const auto [a, b] = point_bodies_[i];
     if (!b.isWorld()) {
       ws_.contact_wrench[b.value].force += point_force_[i];
       ws_.contact_wrench[b.value].torque += point_torque_b_[i];

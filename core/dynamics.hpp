@@ -114,10 +114,6 @@ class Dynamics {
   Workspace ws_;
   std::vector<Mat3> inv_inertia_body_;                    // per body, zero for kinematic bodies
   std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
-  // The pair of a record of ws_.contacts (set by detect()).
-  const ContactPair& pairOf(const contact::ContactRecord& rec) const {
-    return ws_.contact_pair[static_cast<std::size_t>(&rec - ws_.contacts.data())];
-  }
   std::vector<char> at_body_origin_;  // per geometry: its local pose is the identity
   // Bodies whose surface velocity is a signal, each with its memo (core/signal_memo.hpp).
   std::vector<std::pair<std::size_t, SignalVectorMemo>> varying_surfaces_;
@@ -126,9 +122,10 @@ class Dynamics {
   StageProfile profile_;
   double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on
   int threads_ = 1;
-  // assemble, per contact point: the force on B and the torques about B's and A's origins,
-  // computed in parallel and summed per body in contact order.
+  // assemble, per contact point: the force on B, the torques about B's and A's origins and
+  // the two bodies (A, B), computed in parallel and summed per body in contact order.
   std::vector<Vec3> point_force_, point_torque_b_, point_torque_a_;
+  std::vector<std::pair<BodyIndex, BodyIndex>> point_bodies_;
 };
 
 }  // namespace tribo

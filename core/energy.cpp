@@ -53,12 +53,15 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
   return t;
 }
 
-// The terms of contact point i (EnergyTerms::Point).
-EnergyTerms::Point pointTerms(const Model& model, const Workspace& ws, std::size_t i) {
+// The terms of contact point i (EnergyTerms::Point); `surfaces`: some body has a surface
+// velocity at this evaluation (else both powers are +0 without looking).
+EnergyTerms::Point pointTerms(const Model& model, const Workspace& ws, std::size_t i,
+                              bool surfaces) {
   EnergyTerms::Point t;
   const contact::ContactRecord& c = ws.contacts[i];
   const ContactPair& pair = ws.contact_pair[i];
   t.elastic = model.materials[pair.material].normal.energy(c.point.depth);
+  if (!surfaces) return t;
   const Vec3 f = c.force();  // on B; A gets -f
   const std::pair<int, double> sides[2] = {{pair.geometry_b, 1.0}, {pair.geometry_a, -1.0}};
   double* power[2] = {&t.power_b, &t.power_a};
@@ -78,6 +81,8 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
                       double* kinetic_rate) {
   const bool rate = kinetic_rate != nullptr;
   const std::size_t nb = model.bodies.size(), np = ws.contacts.size();
+  const bool surfaces = std::any_of(ws.surface_velocity.begin(), ws.surface_velocity.end(),
+                                    [](const Vec3& v) { return v.squaredNorm() != 0.0; });
   const int body_threads = stageThreads(nb, threads), point_threads = stageThreads(np, threads);
   if (body_threads > 1) {
     terms.bodies.resize(nb);
@@ -87,8 +92,9 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
   }
   if (point_threads > 1) {
     terms.points.resize(np);
-    contact::parallelFor(np, point_threads,
-                         [&](std::size_t i) { terms.points[i] = pointTerms(model, ws, i); });
+    contact::parallelFor(np, point_threads, [&](std::size_t i) {
+      terms.points[i] = pointTerms(model, ws, i, surfaces);
+    });
   }
   EnergyAccount a;
   if (body_energy) body_energy->assign(nb, 0.0);
@@ -127,7 +133,8 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
                                     bodyKinematics(state, ws.rotation, spring.body_b)));
   // A side without a surface speed holds +0, and x - (+0) is x bit for bit.
   for (std::size_t i = 0; i < np; ++i) {
-    const EnergyTerms::Point t = point_threads > 1 ? terms.points[i] : pointTerms(model, ws, i);
+    const EnergyTerms::Point t =
+        point_threads > 1 ? terms.points[i] : pointTerms(model, ws, i, surfaces);
     a.elastic += t.elastic;
     a.input_power -= t.power_b;
     a.input_power -= t.power_a;
