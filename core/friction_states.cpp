@@ -7,6 +7,7 @@
 #include "contact/contact_force.hpp"
 #include "contact/dynamic_friction.hpp"
 #include "contact/parallel_range.hpp"
+#include "friction/tangential_batch.hpp"
 
 namespace tribo {
 
@@ -108,6 +109,7 @@ FrictionStates::FrictionStates(const Model& model, const JointForces& joints)
   for (const auto& material : model.materials) {
     stateful_material_.push_back(material.friction->stateful() ? 1 : 0);
     anchored_material_.push_back(material.friction->stateful() || material.resistance.active());
+    batched_material_.push_back(!anchored_material_.back() && !material.anisotropy.active);
     any_stateful_ = any_stateful_ || anchored_material_.back();
     dynamic_law_.push_back(material.friction->dynamic());
     any_dynamic_ = any_dynamic_ || material.friction->dynamic() != nullptr;
@@ -151,8 +153,30 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
     if (material.resistance.active()) resistingMoment(m, state, ws, pair, anchor, rec);
   };
   if (!any_dynamic_ || steady_) {
-    contact::parallelFor(ws.contacts.size(), threads,
-                         [&](std::size_t i) { independent(ws.contacts[i]); });
+    // Each run of points of one plain material through its law as a batch; the others one by
+    // one. The batches are the point-by-point arithmetic: the same bits for any split.
+    constexpr std::size_t kBatch = friction::TangentialBatch::kCapacity;
+    const std::size_t n = ws.contacts.size();
+    contact::parallelFor((n + kBatch - 1) / kBatch, threads, [&](std::size_t chunk) {
+      friction::TangentialBatch batch;
+      const std::size_t end = std::min(n, (chunk + 1) * kBatch);
+      for (std::size_t i = chunk * kBatch; i < end;) {
+        const int material = ws.contact_pair[i].material;
+        if (!batched_material_[material]) {
+          independent(ws.contacts[i++]);
+          continue;
+        }
+        const std::size_t first = i;
+        const friction::FrictionLaw& law = *m.materials[material].friction;
+        for (batch.clear(); i < end && ws.contact_pair[i].material == material; ++i)
+          batch.add(ws.contacts[i].slip);
+        batch.evaluate(law);
+        for (std::size_t k = 0; k < batch.size; ++k) {
+          contact::ContactRecord& rec = ws.contacts[first + k];
+          rec.friction_force = batch.force(k, rec.slip, rec.normal_force, &rec.mu);
+        }
+      }
+    });
     return;
   }
   // Dynamic laws: the first point using a record drives it, so in contact order.

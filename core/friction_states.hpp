@@ -17,7 +17,8 @@
 //               ended contacts forgotten); stored tangent vectors are turned to the current
 //               normal (and, anisotropic, the current axis: they turn with the grain) once
 //               either has turned by more than kRebaseAngle;
-//   evaluate    the friction stage: each point's friction force; for dynamic laws also dz/dt
+//   evaluate    the friction stage: each point's friction force (the points of a plain
+//               material in batches, friction/tangential_batch.hpp); for dynamic laws also dz/dt
 //               into Workspace::friction_state_rate. When two points continue one record,
 //               the first in contact order drives it (its rate is the record's);
 //   the integrator advances z with the bodies: semi-implicit Euler through stepStable (the
@@ -84,6 +85,10 @@ class FrictionStates {
   int joint_values_ = 0;
   std::vector<char> stateful_material_;  // per material
   std::vector<char> anchored_material_;  // per material: stateful, or rolling resistance
+  // Per material: a law without anchors, isotropic, without rolling resistance, whose points
+  // go through the law in batches (friction/tangential_batch.hpp) while no dynamic law is in
+  // play (or all act through their steady curve).
+  std::vector<char> batched_material_;
   std::vector<const friction::DynamicFrictionLaw*> dynamic_law_;  // per material, or nullptr
   bool any_stateful_ = false;
   bool any_dynamic_ = false;

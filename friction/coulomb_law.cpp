@@ -46,6 +46,10 @@ double CoulombLaw::coefficient(double v) const {
   return 0.0;
 }
 
+void CoulombLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double CoulombLaw::slope(double v) const {
   if (std::isnan(v)) return v;
   const double mu = params_.mu;

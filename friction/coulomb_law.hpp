@@ -44,6 +44,7 @@ class CoulombLaw final : public FrictionLaw {
   explicit CoulombLaw(const CoulombParams& params);
 
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   // "none": 0 everywhere (the jump at v = 0 has no derivative; 0 is returned there too).
   // "linear": mu / v_eps for |v| < v_eps, else 0 (the right-hand value at the kink).
   double slope(double v) const override;

@@ -20,6 +20,10 @@ double DahlLaw::coefficient(double v) const {
   return v > 0.0 ? params_.mu_c : v < 0.0 ? -params_.mu_c : 0.0;
 }
 
+void DahlLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double DahlLaw::slope(double v) const { return std::isnan(v) ? v : 0.0; }
 
 double DahlLaw::maxCoefficient(double) const { return params_.mu_c; }

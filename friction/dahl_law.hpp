@@ -51,6 +51,7 @@ class DahlLaw final : public BristleLaw {
 
   // Steady-state curve: mu_c sgn(v); slope 0 (one-sided at 0).
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   double slope(double v) const override;
   // mu_c: |sigma0 z| <= mu_c for every state reached from |z| <= mu_c / sigma0.
   double maxCoefficient(double v_max) const override;

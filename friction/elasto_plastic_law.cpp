@@ -25,6 +25,10 @@ double ElastoPlasticLaw::coefficient(double v) const {
   return v > 0.0 ? steady : v < 0.0 ? -steady : 0.0;
 }
 
+void ElastoPlasticLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double ElastoPlasticLaw::slope(double v) const {
   return g_.derivative(std::abs(v)) + params_.sigma2;  // even; NaN stays NaN
 }

@@ -51,6 +51,7 @@ class ElastoPlasticLaw final : public BristleLaw {
 
   // Steady-state curve: sgn(v) g(|v|) + sigma2 v.
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   double slope(double v) const override;
   // mu_s + sigma1 (1 + mu_s / mu_c) v_max + sigma2 v_max: |z| <= mu_s / sigma0 and |dz/dt| <=
   // |s| (1 + mu_s / mu_c) for states reached from |z| <= mu_s / sigma0.

@@ -338,6 +338,10 @@ Eigen::Vector3d FrictionLaw::stickForce(const Eigen::Vector3d& slip, double fn, 
   return tangentialForce(*this, slip, fn, mu_out);
 }
 
+void FrictionLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  for (std::size_t i = 0; i < v.size(); ++i) mu[i] = v[i] != 0.0 ? coefficient(v[i]) : 0.0;
+}
+
 StickUpdate FrictionLaw::advance(const Eigen::Vector3d&, double, const StickView&) const {
   return {};
 }
@@ -378,14 +382,10 @@ const std::vector<std::string>& knownDynamicFrictionLaws() {
 
 Eigen::Vector3d tangentialForce(const FrictionLaw& law, const Eigen::Vector3d& slip, double fn,
                                 double* mu_out) {
-  const double speed = slip.norm();
-  if (speed == 0.0) {  // a NaN slip is not caught here: it propagates into the force
-    if (mu_out != nullptr) *mu_out = 0.0;
-    return Eigen::Vector3d::Zero();
-  }
-  const double mu = law.coefficient(speed);
+  const double speed = slipSpeed(slip);
+  const double mu = speed == 0.0 ? 0.0 : law.coefficient(speed);  // a NaN slip propagates
   if (mu_out != nullptr) *mu_out = mu;
-  return (-mu * fn / speed) * slip;
+  return tangentialForceAt(slip, speed, fn, mu);
 }
 
 }  // namespace tribo::friction

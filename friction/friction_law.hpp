@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -58,6 +59,11 @@ class FrictionLaw {
 
   // Coefficient at signed slip speed v [m/s]. Odd: coefficient(-v) == -coefficient(v).
   virtual double coefficient(double v) const = 0;
+  // Coefficients at many speeds at once (friction/tangential_batch.hpp): mu[i] =
+  // coefficient(v[i]), the same bits, except 0 where v[i] == 0 (no slip: no force, and the
+  // law is not asked there). The laws of this folder loop over their own coefficient() (no
+  // virtual call per speed: coefficientsOf below); the default calls the virtual one.
+  virtual void coefficientsAt(std::span<const double> v, std::span<double> mu) const;
   // d mu / dv at v [s/m] (one-sided where the law has a kink, e.g. coulomb without
   // regularization at 0).
   virtual double slope(double v) const = 0;
@@ -100,9 +106,26 @@ const std::vector<std::string>& knownStatefulFrictionLaws();
 // accepted by makeFrictionLaw, in a stable order.
 const std::vector<std::string>& knownDynamicFrictionLaws();
 
+// FrictionLaw::coefficientsAt for a law class `Law` whose coefficient() the compiler sees (a
+// final class, called from the .cpp that defines coefficient()): one loop, no virtual call.
+template <class Law>
+void coefficientsOf(const Law& law, std::span<const double> v, std::span<double> mu) {
+  for (std::size_t i = 0; i < v.size(); ++i) mu[i] = v[i] != 0.0 ? law.Law::coefficient(v[i]) : 0.0;
+}
+
 // Tangential force on body B (slip s = velocity of B's material point relative to A's, in
 // the tangent plane) for normal force fn >= 0. Zero at zero slip. Optionally returns mu.
 Eigen::Vector3d tangentialForce(const FrictionLaw& law, const Eigen::Vector3d& slip, double fn,
                                 double* mu_out = nullptr);
+
+// The two pieces of tangentialForce around the law's call, shared with the batch
+// (friction/tangential_batch.hpp) so both give the same bits: the slip speed |s|, and the
+// force -(mu fn / |s|) s from it and mu = mu(|s|) (zero at |s| = 0; a NaN slip propagates).
+inline double slipSpeed(const Eigen::Vector3d& slip) { return slip.norm(); }
+inline Eigen::Vector3d tangentialForceAt(const Eigen::Vector3d& slip, double speed, double fn,
+                                         double mu) {
+  if (speed == 0.0) return Eigen::Vector3d::Zero();
+  return (-mu * fn / speed) * slip;
+}
 
 }  // namespace tribo::friction

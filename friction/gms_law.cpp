@@ -66,6 +66,10 @@ double GmsLaw::coefficient(double v) const {
   return v > 0.0 ? steady : v < 0.0 ? -steady : 0.0;
 }
 
+void GmsLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double GmsLaw::slope(double v) const { return s_.derivative(std::abs(v)) + params_.sigma2; }
 
 double GmsLaw::maxCoefficient(double v_max) const {

@@ -66,6 +66,7 @@ class GmsLaw final : public DynamicFrictionLaw {
 
   // Steady-state curve: sgn(v) S(|v|) + sigma2 v.
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   double slope(double v) const override;
   // mu_s + sigma1 (v_max + C (1 + mu_s / mu_c) / K) + sigma2 v_max: |k_i z_i| <= alpha_i mu_s
   // for states reached from there.

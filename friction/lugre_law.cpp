@@ -22,6 +22,10 @@ double LuGreLaw::coefficient(double v) const {
   return v > 0.0 ? steady : v < 0.0 ? -steady : 0.0;
 }
 
+void LuGreLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double LuGreLaw::slope(double v) const {
   const double r = std::abs(v) / params_.v_s;
   const double dg = -(params_.mu_s - params_.mu_c) * 2.0 * r / params_.v_s * std::exp(-r * r);

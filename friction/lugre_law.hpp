@@ -47,6 +47,7 @@ class LuGreLaw final : public BristleLaw {
 
   // Steady-state curve: sgn(v) g(|v|) + sigma2 v.
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   double slope(double v) const override;
   // Bounds the transient too: mu_s + (2 sigma1 + sigma2) v_max (|dz/dt| <= 2 |s| while
   // |z| <= mu_s / sigma0).

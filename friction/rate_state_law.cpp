@@ -60,6 +60,10 @@ double RateStateLaw::coefficient(double v) const {
   return v < 0.0 ? -m : m;
 }
 
+void RateStateLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double RateStateLaw::slope(double v) const {
   const double speed = std::abs(v);
   const double a = params_.a;

@@ -64,6 +64,7 @@ class RateStateLaw final : public DynamicFrictionLaw {
 
   // Steady-state curve mu_ss(v) above, odd.
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   // (a - b) / (v sqrt(1 + exp(-2 L))), L the log of the arcsinh's argument; at 0 the limit
   // from v > 0.
   double slope(double v) const override;

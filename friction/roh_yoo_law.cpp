@@ -43,6 +43,10 @@ double RohYooLaw::coefficient(double v) const {
   return std::copysign(mu, v);
 }
 
+void RohYooLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double RohYooLaw::slope(double v) const {
   const double u = std::abs(v);
   if (u <= params_.v_s) return rise_slope_ * std::pow(u * inv_v_s_, params_.beta - 1.0);

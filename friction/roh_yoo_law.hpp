@@ -37,6 +37,7 @@ class RohYooLaw final : public FrictionLaw {
   explicit RohYooLaw(const RohYooParams& params);
 
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   // Left-hand slope mu_s beta / v_s at |v| = v_s (the law has a kink there); +infinity at
   // v = 0 for beta < 1, mu_s / v_s for beta = 1, 0 for beta > 1.
   double slope(double v) const override;

@@ -49,6 +49,10 @@ double StribeckLaw::coefficient(double v) const {
   return std::tanh(v * inv_v_eps_) * decay(std::abs(v)) + params_.viscous * v;
 }
 
+void StribeckLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double StribeckLaw::slope(double v) const {
   // d/dv [tanh(v/v_eps) g(|v|)] = g / v_eps (1 - tanh^2) + tanh(|v|/v_eps) g'(|v|), with
   // g'(u) = -(mu_s - mu_k) e^{-p} delta p / u, p = (u/v_st)^delta. tanh(u/v_eps)/u -> 1/v_eps

@@ -34,6 +34,7 @@ class StribeckLaw final : public FrictionLaw {
   explicit StribeckLaw(const StribeckParams& params);
 
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   double slope(double v) const override;
   // No closed form: a rigorous upper bound, found by interval bisection, within 1e-6 relative
   // of the true maximum (mu_s-ish near the peak, or mu_k + viscous * v_max at large v_max).

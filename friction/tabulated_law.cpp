@@ -95,6 +95,10 @@ double TabulatedLaw::coefficient(double v) const {
   return v < 0.0 ? -mu : mu;
 }
 
+void TabulatedLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
+  coefficientsOf(*this, v, mu);
+}
+
 double TabulatedLaw::slope(double v) const {
   double mu = 0.0, dmu = 0.0;
   evaluate(std::abs(v), mu, dmu);

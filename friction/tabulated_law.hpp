@@ -41,6 +41,7 @@ class TabulatedLaw final : public FrictionLaw {
   TabulatedLaw(std::vector<double> speeds, std::vector<double> coefficients);
 
   double coefficient(double v) const override;
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override;
   double slope(double v) const override;
   double maxCoefficient(double v_max) const override;
   double stickSpeed() const override { return stick_speed_; }

@@ -55,6 +55,9 @@ class TwoStepLaw final : public FrictionLaw {
     }
     return std::copysign(mu, v);
   }
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override {
+    coefficientsOf(*this, v, mu);
+  }
   double slope(double v) const override {
     const double u = std::abs(v);
     if (u >= params_.v_d) return 0.0;

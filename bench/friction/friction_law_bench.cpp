@@ -9,17 +9,29 @@
 //                                                         slip (its state reused), the memoryless
 //                                                         baseline being BM_TangentialForce/roh_yoo
 //
+//   BM_TangentialBatch/<law>                              the same slips through the batch
+//                                                         (friction/tangential_batch.hpp, 256 a
+//                                                         batch, as the engine's friction stage
+//                                                         runs it) and
+//                                                         point by point, alternately in one
+//                                                         iteration: ns a point of each and
+//                                                         batch_over_point_by_point (< 1: the
+//                                                         batch is faster)
+//
 // items_per_second counts coefficient (or force) evaluations. The dynamic laws' cost ratio is
 // time(BM_DynamicForce/<law>) / time(BM_TangentialForce/roh_yoo).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "friction/dynamic_law.hpp"
 #include "friction/friction_law.hpp"
+#include "friction/tangential_batch.hpp"
 #include "support/table1_laws.hpp"
 
 namespace tribo::friction {
@@ -85,6 +97,40 @@ void BM_TangentialForce(benchmark::State& state, const std::string& name) {
   state.SetItemsProcessed(state.iterations() * kSpeeds);
 }
 
+void BM_TangentialBatch(benchmark::State& state, const std::string& name) {
+  const auto law = makeFrictionLaw(table1(name));
+  const auto slips = turningSlips();
+  const double fn = 98.1;
+  std::vector<Eigen::Vector3d> forces(slips.size());
+  std::vector<double> mus(slips.size());
+  TangentialBatch batch;
+  double point_s = 0.0, batch_s = 0.0;
+  using Clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    auto t0 = Clock::now();
+    for (std::size_t i = 0; i < slips.size(); ++i)
+      forces[i] = tangentialForce(*law, slips[i], fn, &mus[i]);
+    benchmark::DoNotOptimize(forces.data());
+    auto t1 = Clock::now();
+    for (std::size_t first = 0; first < slips.size(); first += TangentialBatch::kCapacity) {
+      const std::size_t end = std::min(slips.size(), first + TangentialBatch::kCapacity);
+      batch.clear();
+      for (std::size_t i = first; i < end; ++i) batch.add(slips[i]);
+      batch.evaluate(*law);
+      for (std::size_t i = first; i < end; ++i)
+        forces[i] = batch.force(i - first, slips[i], fn, &mus[i]);
+    }
+    benchmark::DoNotOptimize(forces.data());
+    auto t2 = Clock::now();
+    point_s += std::chrono::duration<double>(t1 - t0).count();
+    batch_s += std::chrono::duration<double>(t2 - t1).count();
+  }
+  const double points = static_cast<double>(state.iterations()) * kSpeeds;
+  state.counters["ns_point_by_point"] = 1e9 * point_s / points;
+  state.counters["ns_batch"] = 1e9 * batch_s / points;
+  state.counters["batch_over_point_by_point"] = batch_s / point_s;
+}
+
 // One evaluation as the engine does it per contact and stage: dz/dt at (z, s), then the force
 // from z and dz/dt. The states are a settled one per slip (computed once, outside the timing).
 void BM_DynamicForce(benchmark::State& state, const std::string& name) {
@@ -119,6 +165,9 @@ const bool registered = [] {
   }
   benchmark::RegisterBenchmark("BM_TangentialForce/roh_yoo", BM_TangentialForce,
                                std::string("roh_yoo"));
+  for (const std::string& name : knownFrictionLaws()) {
+    benchmark::RegisterBenchmark(("BM_TangentialBatch/" + name).c_str(), BM_TangentialBatch, name);
+  }
   for (const std::string& name : knownDynamicFrictionLaws()) {
     benchmark::RegisterBenchmark(("BM_DynamicForce/" + name).c_str(), BM_DynamicForce, name);
   }
