@@ -36,10 +36,10 @@ struct TangentialBatch {
                        std::span<double>(mu.data(), size));
   }
   // Point k's force on B for its slip and load fn >= 0 [N], after evaluate; optionally its
-  // coefficient (0 without slip).
+  // coefficient (0 without slip: coefficientsAt gives 0 at speed 0).
   Eigen::Vector3d force(std::size_t k, const Eigen::Vector3d& slip, double fn,
                         double* mu_out) const {
-    if (mu_out != nullptr) *mu_out = speed[k] == 0.0 ? 0.0 : mu[k];
+    if (mu_out != nullptr) *mu_out = mu[k];
     return tangentialForceAt(slip, speed[k], fn, mu[k]);
   }
 };

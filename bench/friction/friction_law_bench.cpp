@@ -12,8 +12,8 @@
 //   BM_TangentialBatch/<law>                              the same slips through the batch
 //                                                         (friction/tangential_batch.hpp, 256 a
 //                                                         batch, as the engine's friction stage
-//                                                         runs it) and
-//                                                         point by point, alternately in one
+//                                                         runs it) and point by point,
+//                                                         alternately in one
 //                                                         iteration: ns a point of each and
 //                                                         batch_over_point_by_point (< 1: the
 //                                                         batch is faster)
