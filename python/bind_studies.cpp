@@ -159,6 +159,7 @@ py::array_t<double> arrayOf(const std::vector<double>& v) {
 py::dict branchColumns(const std::vector<study::BranchPoint>& points) {
   std::vector<double> p, period, amplitude, largest, stick, slip, steady;
   py::array_t<bool> stable(static_cast<py::ssize_t>(points.size()));
+  py::array_t<bool> undecided(static_cast<py::ssize_t>(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const study::BranchPoint& pt = points[i];
     p.push_back(pt.parameter);
@@ -169,6 +170,7 @@ py::dict branchColumns(const std::vector<study::BranchPoint>& points) {
     slip.push_back(pt.min_slip);
     steady.push_back(pt.steady_growth);
     stable.mutable_at(static_cast<py::ssize_t>(i)) = pt.stable;
+    undecided.mutable_at(static_cast<py::ssize_t>(i)) = pt.undecided;
   }
   py::dict columns;
   columns["parameter"] = arrayOf(p);
@@ -176,6 +178,7 @@ py::dict branchColumns(const std::vector<study::BranchPoint>& points) {
   columns["amplitude_pp"] = arrayOf(amplitude);
   columns["largest_multiplier"] = arrayOf(largest);
   columns["stable"] = stable;
+  columns["undecided"] = undecided;
   columns["stick_fraction"] = arrayOf(stick);
   columns["min_slip"] = arrayOf(slip);
   columns["steady_growth_rate"] = arrayOf(steady);
@@ -300,7 +303,8 @@ void bindStudies(py::module_& m) {
         "'switch' says where, 'primary_columns' the first branch's columns) "
         "(branch.json's document: status, stop_reason, events, "
         "'branch' per point), with 'columns' (parameter, period, amplitude_pp, "
-        "largest_multiplier, stable, stick_fraction, min_slip, steady_growth_rate as arrays) and "
+        "largest_multiplier, stable, undecided, stick_fraction, min_slip, steady_growth_rate as "
+        "arrays) and "
         "'orbits' (each "
         "point's 't' and 'x' over one period). Raises OrbitError (no orbit at start, no Hopf "
         "point in the range), "

@@ -24,7 +24,7 @@
     var i = kv.indexOf("=");
     if (kv) hash[decodeURIComponent(i < 0 ? kv : kv.slice(0, i))] = i < 0 ? "" : decodeURIComponent(kv.slice(i + 1));
   });
-  var colours = { stable: "#5b9bd5", unstable: "#e15759", primary: "#8c8c8c", steadyStable: "#59a14f",
+  var colours = { stable: "#5b9bd5", unstable: "#e15759", undecided: "#9e9e9e", primary: "#8c8c8c", steadyStable: "#59a14f",
                   steadyUnstable: "#f28e2b", event: "#edc948", chosen: "#ffffff", text: "#ddd" };
   var DASH = [7, 5];
 
@@ -267,12 +267,13 @@
                          x: +x.toFixed(2), y: +y.toFixed(2) });
     });
 
-    // The points: filled when stable, rings when not; the chosen one circled in white.
+    // The points: filled when stable, rings when not (grey when the stability is undecided);
+    // the chosen one circled in white.
     drawn = [];
     points.forEach(function (pt, k) {
       if (!isFinite(pt.parameter) || !isFinite(pt.amplitude_pp)) return;
       var x = X(pt.parameter), y = Y(pt.amplitude_pp);
-      g.fillStyle = g.strokeStyle = pt.stable ? colours.stable : colours.unstable;
+      g.fillStyle = g.strokeStyle = pt.undecided ? colours.undecided : pt.stable ? colours.stable : colours.unstable;
       g.lineWidth = 2;
       g.beginPath(); g.arc(x, y, 4, 0, 2 * Math.PI);
       if (pt.stable) g.fill(); else g.stroke();
@@ -382,7 +383,8 @@
     var p = points[k];
     var parts = ["point " + k + " of " + points.length, meta.parameter + " = " + shown(p.parameter, 10),
                  "period " + shown(p.period, 10) + " s", "amplitude " + shown(p.amplitude_pp, 10) + " (peak to peak of " + meta.observed + ")",
-                 "largest multiplier " + shown(p.largest_multiplier, 4), p.stable ? "stable" : "unstable"];
+                 "largest multiplier " + shown(p.largest_multiplier, 4),
+                 p.undecided ? "stability undecided (a multiplier on the unit circle within the flow's accuracy)" : p.stable ? "stable" : "unstable"];
     if (isFinite(value(p.stick_fraction))) parts.push("stick fraction " + shown(100 * p.stick_fraction, 3) + " %");
     if (isFinite(value(p.steady_growth_rate)))
       parts.push("steady sliding " + (p.steady_growth_rate < 0 ? "stable" : "unstable") + " (growth rate " +

@@ -140,22 +140,31 @@ std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& poin
     turnAt(0, interpolated(0));
   if (n >= 3 && !turned[n - 2] && flips(n - 2) && points[n - 1].dp_ds * step(n - 3) < 0.0)
     turnAt(n - 2, interpolated(n - 2));
+  // Multipliers crossing the unit circle (period doubling, torus, any change of stability)
+  // between consecutive decided points: a point whose stability is undecided has a multiplier
+  // on the circle within the flow's accuracy, and on which side it lies is rounding.
+  std::size_t decided = n;  // the last decided point before i + 1
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const BranchPoint &a = points[i], &b = points[i + 1];
-    bool explained = false;
-    if (countOf(a, below_minus_one) != countOf(b, below_minus_one)) {
-      events.push_back({BranchEventKind::kPeriodDoubling, i, i + 1,
-                        crossing(a, b, largestOf(a, real_negative), largestOf(b, real_negative))});
-      explained = true;
+    if (!a.undecided) decided = i;
+    if (decided < n && !b.undecided) {
+      const BranchPoint& d = points[decided];
+      bool explained = false;
+      if (countOf(d, below_minus_one) != countOf(b, below_minus_one)) {
+        events.push_back(
+            {BranchEventKind::kPeriodDoubling, decided, i + 1,
+             crossing(d, b, largestOf(d, real_negative), largestOf(b, real_negative))});
+        explained = true;
+      }
+      if (countOf(d, complex_outside) != countOf(b, complex_outside)) {
+        events.push_back({BranchEventKind::kTorus, decided, i + 1,
+                          crossing(d, b, largestOf(d, complex_any), largestOf(b, complex_any))});
+        explained = true;
+      }
+      if (d.stable != b.stable && !explained)
+        events.push_back({BranchEventKind::kStabilityChange, decided, i + 1,
+                          crossing(d, b, largestOf(d, any), largestOf(b, any))});
     }
-    if (countOf(a, complex_outside) != countOf(b, complex_outside)) {
-      events.push_back({BranchEventKind::kTorus, i, i + 1,
-                        crossing(a, b, largestOf(a, complex_any), largestOf(b, complex_any))});
-      explained = true;
-    }
-    if (a.stable != b.stable && !explained)
-      events.push_back({BranchEventKind::kStabilityChange, i, i + 1,
-                        crossing(a, b, largestOf(a, any), largestOf(b, any))});
     if (stick_speed > 0.0 && std::isfinite(a.min_slip) && std::isfinite(b.min_slip) &&
         (a.min_slip < stick_speed) != (b.min_slip < stick_speed))
       events.push_back({BranchEventKind::kGrazing, i, i + 1,

@@ -15,12 +15,16 @@ namespace tribo::study {
 
 namespace {
 
+std::string stabilityWord(const BranchPoint& p) {
+  return p.undecided ? "undecided" : p.stable ? "stable" : "unstable";
+}
+
 std::string pointsCsvText(const std::vector<BranchPoint>& points,
                           const std::vector<BranchEvent>& branch_events) {
   std::string csv =
       "index,parameter,period,amplitude_pp,largest_multiplier,stable,stick_fraction,min_slip,"
       "x_min,x_max,dp_ds,arclength,iterations,residual,trivial_error,steady_growth_rate,"
-      "event\n";
+      "stability,event\n";
   for (std::size_t i = 0; i < points.size(); ++i) {
     const BranchPoint& p = points[i];
     std::string events;
@@ -35,8 +39,8 @@ std::string pointsCsvText(const std::vector<BranchPoint>& points,
            csvNumber(p.min_slip, 6) + "," + csvNumber(p.x_min, 17) + "," + csvNumber(p.x_max, 17) +
            "," + csvNumber(p.dp_ds, 17) + "," + csvNumber(p.arclength, 17) + "," +
            std::to_string(p.iterations) + "," + csvNumber(p.residual, 6) + "," +
-           csvNumber(p.trivial_error, 6) + "," + csvNumber(p.steady_growth, 17) + "," + events +
-           "\n";
+           csvNumber(p.trivial_error, 6) + "," + csvNumber(p.steady_growth, 17) + "," +
+           stabilityWord(p) + "," + events + "\n";
   }
   return csv;
 }
@@ -128,6 +132,7 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                    {"period", p.period},
                    {"amplitude_pp", p.amplitude_pp},
                    {"stable", p.stable},
+                   {"stability", stabilityWord(p)},
                    {"stick_fraction", std::isfinite(p.stick_fraction)
                                           ? nlohmann::ordered_json(p.stick_fraction)
                                           : nlohmann::ordered_json()},

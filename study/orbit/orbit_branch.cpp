@@ -245,6 +245,10 @@ BranchResult continueOrbitFromText(
     pt.trivial_error = f.trivial_error;
     pt.stable = f.stable;
     pt.largest = f.largest;
+    // As `tribo orbit`'s neutral orbits (periodic_orbit.cpp): a multiplier the flow cannot
+    // tell from the unit circle leaves the stability undecided.
+    pt.undecided = shooting::undecidedStability(pt.multipliers, pt.trivial, pt.trivial_error);
+    if (pt.undecided) pt.stable = false;
     const io::Scene at = shooter.sceneAt(pt.parameter);
     if (sampled == nullptr)
       sampleOrbit(at, shooting::Flow(at.model, coords), pt.start, pt.period, pt);

@@ -54,8 +54,10 @@
 // - torus (Neimark-Sacker): the number of complex multipliers outside the unit circle changes;
 // - stability change otherwise (a real multiplier through +1, as at a fold);
 // - grazing: the smallest slip speed crosses the stick speed (sticking begins or ends).
-// Period doubling, torus and stability change are located by linear interpolation in p of the
-// crossing multipliers' modulus to 1, grazing of the smallest slip speed to the stick speed.
+// Period doubling, torus and stability change are looked for between consecutive decided
+// points (points whose stability is undecided, BranchPoint::undecided, are passed over) and
+// located by linear interpolation in p of the crossing multipliers' modulus to 1, grazing of
+// the smallest slip speed to the stick speed.
 // Located values are interpolations between two points, not solved for.
 // Beside each point, steady sliding at the same parameter as `tribo modes` analyses it (its
 // leading growth rate): where the two branches coexist, both stable, is hysteresis.
@@ -108,6 +110,9 @@ enum class BranchSwitch { kNone, kPeriodDoubling, kBranchPoint };
 // "none", "period_doubling", "branch_point".
 std::string branchSwitchName(BranchSwitch kind);
 inline constexpr double kDefaultSwitchAmplitude = 1e-3;
+// A point's stability verdict that differs from the last decided point's is checked by a
+// monodromy differenced with this many times the finite-difference step (BranchPoint).
+inline constexpr double kRecheckFdStep = 30000;
 
 // The arclength's norm (above): the unknowns in SI units, or each over its own scale.
 enum class ArclengthNorm { kSi, kScaled };
@@ -150,6 +155,11 @@ struct BranchPoint {
   double trivial_error = 0;
   double largest = 0;  // modulus of the largest non-trivial multiplier
   bool stable = false;
+  // Stability not decided (and `stable` false): a non-trivial multiplier within what the flow
+  // can tell of the unit circle, ten times the trivial one's error and at least 1e-6 (the
+  // rule by which `tribo orbit` reports an orbit `neutral`). Stability changes are located
+  // between decided points only.
+  bool undecided = false;
   // The observed body's slip speed over the orbit where it touches (the largest over its
   // contact points, as the run summary takes it): its minimum, and the fraction of the period
   // spent below the summary's stick speed; NaN when it never touches.
@@ -238,8 +248,10 @@ BranchResult continueOrbitFromText(
     const std::function<void(const BranchPoint&, std::size_t)>& progress = {});
 
 // The events between consecutive points (points need parameter, arclength, dp_ds,
-// multipliers, trivial, stable and, for grazing, min_slip; stick_speed 0: no grazing). A
-// branch of forced orbits (`autonomous` false) has no Hopf point: every turn is a fold.
+// multipliers, trivial, stable, undecided and, for grazing, min_slip; stick_speed 0: no
+// grazing). A stability change lies between two decided points with undecided ones between
+// them, if any. A branch of forced orbits (`autonomous` false) has no Hopf point: every turn
+// is a fold.
 std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& points,
                                             double stick_speed = 0, bool autonomous = true);
 

@@ -47,10 +47,7 @@ constexpr double kEquilibrium = 1e-6;
 // the orbit lies in a family (a conservative motion, a state the dynamics leave free), and
 // "stable" would be a guess. Such an orbit is reported neutral, not stable.
 void markNeutral(OrbitResult& r) {
-  const double band = std::max(1e-6, 10.0 * r.trivial_error);
-  for (std::size_t i = 0; i < r.multipliers.size(); ++i)
-    if (static_cast<int>(i) != r.trivial && std::abs(std::abs(r.multipliers[i]) - 1.0) <= band)
-      r.neutral = true;
+  r.neutral = shooting::undecidedStability(r.multipliers, r.trivial, r.trivial_error);
   if (r.neutral) r.stable = false;
 }
 

@@ -230,6 +230,15 @@ Floquet classify(std::vector<std::complex<double>> multipliers, bool autonomous)
   return f;
 }
 
+bool undecidedStability(const std::vector<std::complex<double>>& multipliers, int trivial,
+                        double trivial_error) {
+  const double band = std::max(1e-6, 10.0 * trivial_error);
+  for (std::size_t i = 0; i < multipliers.size(); ++i)
+    if (static_cast<int>(i) != trivial && std::abs(std::abs(multipliers[i]) - 1.0) <= band)
+      return true;
+  return false;
+}
+
 std::string messageNumber(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);

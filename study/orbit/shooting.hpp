@@ -114,6 +114,12 @@ Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous = true);
 // one and stability are decided among those given).
 Floquet classify(std::vector<std::complex<double>> multipliers, bool autonomous);
 
+// Whether a multiplier other than the trivial one lies closer to the unit circle than the
+// flow can tell (ten times the trivial one's error, at least 1e-6): the orbit's stability is
+// then not decided (`tribo orbit` reports it neutral; a branch point, undecided).
+bool undecidedStability(const std::vector<std::complex<double>>& multipliers, int trivial,
+                        double trivial_error);
+
 // v to 6 significant digits (printf's %.6g), for messages.
 std::string messageNumber(double v);
 

@@ -136,6 +136,9 @@ BranchTable readBranchTable(const std::filesystem::path& file) {
     if (field("stable") != "0" && field("stable") != "1")
       throw std::runtime_error(where + ": stable '" + field("stable") + "' is not 0 or 1");
     point["stable"] = field("stable") == "1";
+    // `stability` (stable, unstable or undecided) came with the undecided points; older
+    // files have none.
+    point["undecided"] = column.count("stability") > 0 && field("stability") == "undecided";
     for (const std::string& name : optional) {
       point[name] = nullptr;
       if (!column.count(name) || field(name).empty()) continue;

@@ -12,7 +12,12 @@
 //   one, each the branch's stable response there (the hysteresis a frequency sweep shows as
 //   a jump);
 // - the oscillator's damping followed down to the scene's refusal of c < 0 with a largest step
-//   far below the first: the branch ends within two of its smallest steps of c = 0.
+//   far below the first: the branch ends within two of its smallest steps of c = 0;
+// - the undamped oscillator (c = 0) from 0.55 to 0.9 of its resonance frequency, at three
+//   masses: its response is the closed form 2 F0 / |k - m w^2| and both multipliers
+//   exp(+-i w_n T) lie on the unit circle, so no point is stable or unstable (every one
+//   undecided, no event); with a damper of 1e-3 N s/m per kg (|mu| = 1 - 5e-4 T) every point
+//   is decided stable.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -170,6 +175,59 @@ TEST(ForcedBranch, AMaxStepFarBelowTheFirstStepStillHalvesDownToTheScenesBoundar
       EXPECT_LE(r.points[i].step, largest * (1.0 + 1e-12)) << from << ", point " << i;
   }
 }
+
+struct Undamped {
+  double m, k, c;
+};
+
+class UndampedOscillator : public ::testing::TestWithParam<Undamped> {};
+
+TEST_P(UndampedOscillator, ItsForcedResponseIsNeitherStableNorUnstableAndADamperDecidesIt) {
+  const Undamped u = GetParam();
+  const double F0 = 10.0 * u.m;  // the same 2F0 / |k - m w^2| at every mass
+  const double fn = std::sqrt(u.k / u.m) / (2.0 * std::numbers::pi);  // 1.59 Hz
+  const std::vector<std::string> overrides = {
+      "m=" + study::csvNumber(u.m, 17), "k=" + study::csvNumber(u.k, 17),
+      "c=" + study::csvNumber(u.c, 17), "F0=" + study::csvNumber(F0, 17)};
+  // From 0.55 to 0.9 of the resonance: T w_n = 2 pi fn / f stays off whole turns (at f = fn / 2
+  // every orbit of period T is one: a family, no single response).
+  const study::BranchResult r =
+      study::continueOrbit(kOscillator, overrides, frequencySpec(0.55 * fn, 0.9 * fn, 40, 0.3));
+  ASSERT_TRUE(r.reached_end) << r.stop_reason;
+  ASSERT_GE(r.points.size(), 3u);
+  for (const BranchPoint& p : r.points) {
+    const double w = 2.0 * std::numbers::pi * p.parameter;
+    const double closed = 2.0 * F0 / std::abs(u.k - u.m * w * w);
+    EXPECT_NEAR(p.amplitude_pp / closed, 1.0, 1e-4) << "f " << p.parameter;
+    ASSERT_GE(p.multipliers.size(), 2u);
+    const double modulus = std::exp(-u.c * p.period / (2.0 * u.m));
+    // The two leading ones (the others, the joint's constrained directions, vanish): the
+    // finite-difference monodromy's moduli measured within 2.3e-7 of it.
+    for (int i = 0; i < 2; ++i)
+      EXPECT_NEAR(std::abs(p.multipliers[i]), modulus, 5e-7) << "f " << p.parameter;
+    if (u.c == 0.0) {
+      EXPECT_TRUE(p.undecided) << "f " << p.parameter << " |mu| " << p.largest;
+      EXPECT_FALSE(p.stable) << "f " << p.parameter;
+    } else {
+      EXPECT_FALSE(p.undecided) << "f " << p.parameter << " |mu| " << p.largest;
+      EXPECT_TRUE(p.stable) << "f " << p.parameter;
+    }
+  }
+  for (const study::BranchEvent& e : r.events)
+    ADD_FAILURE() << study::branchEventName(e.kind) << " at f " << e.parameter;
+}
+
+INSTANTIATE_TEST_SUITE_P(Masses, UndampedOscillator,
+                         ::testing::Values(Undamped{1.0, 100.0, 0.0}, Undamped{0.01, 1.0, 0.0},
+                                           Undamped{100.0, 1e4, 0.0}, Undamped{1.0, 100.0, 1e-3},
+                                           Undamped{0.01, 1.0, 1e-5}),
+                         [](const ::testing::TestParamInfo<Undamped>& info) {
+                           const Undamped& u = info.param;
+                           std::string name = u.m == 1.0  ? "one_kg"
+                                              : u.m < 1.0 ? "ten_grams"
+                                                          : "hundred_kg";
+                           return name + (u.c == 0.0 ? "_undamped" : "_lightly_damped");
+                         });
 
 }  // namespace
 }  // namespace tribo

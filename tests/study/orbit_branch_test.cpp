@@ -317,5 +317,41 @@ TEST(BranchEvents, NoEventWhereNothingCrosses) {
   EXPECT_EQ(events[0].kind, BranchEventKind::kStabilityChange);
 }
 
+TEST(BranchEvents, AStabilityChangeLiesBetweenTheDecidedPointsAroundUndecidedOnes) {
+  // Undecided: a multiplier on the unit circle within the flow's accuracy (stable false).
+  auto undecided = [](BranchPoint pt) {
+    pt.undecided = true;
+    pt.stable = false;
+    return pt;
+  };
+  // Stable (|mu| 0.5), undecided, unstable (1.5): one change between the first and the last,
+  // where |mu| interpolated between them crosses 1 (half way: p = 2).
+  auto events = study::detectBranchEvents({point(1.0, 0.0, 1.0, {0.5}),
+                                           undecided(point(2.0, 1.0, 1.0, {1.0 + 1e-9})),
+                                           point(3.0, 2.0, 1.0, {1.5})});
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kStabilityChange);
+  EXPECT_EQ(events[0].before, 0u);
+  EXPECT_EQ(events[0].after, 2u);
+  EXPECT_NEAR(events[0].parameter, 2.0, 1e-12);
+  // Stable on both sides of two undecided points: no change, whatever `stable` says between.
+  EXPECT_TRUE(study::detectBranchEvents(
+                  {point(1.0, 0.0, 1.0, {0.5}), undecided(point(2.0, 1.0, 1.0, {1.0 - 1e-9})),
+                   undecided(point(3.0, 2.0, 1.0, {1.0 + 1e-9})), point(4.0, 3.0, 1.0, {0.6})})
+                  .empty());
+  // A period doubling between the decided points explains their change: no second event.
+  events = study::detectBranchEvents({point(1.0, 0.0, 1.0, {-0.5}),
+                                      undecided(point(2.0, 1.0, 1.0, {-1.0 - 1e-9})),
+                                      point(3.0, 2.0, 1.0, {-1.5})});
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, BranchEventKind::kPeriodDoubling);
+  EXPECT_EQ(events[0].before, 0u);
+  EXPECT_EQ(events[0].after, 2u);
+  // Only undecided points: nothing to compare.
+  EXPECT_TRUE(study::detectBranchEvents(
+                  {undecided(point(1.0, 0.0, 1.0, {1.0})), undecided(point(2.0, 1.0, 1.0, {1.0}))})
+                  .empty());
+}
+
 }  // namespace
 }  // namespace tribo
