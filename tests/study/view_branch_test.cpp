@@ -132,6 +132,7 @@ TEST(ViewBranch, PageHoldsThePointsEventsAndOrbits) {
   EXPECT_DOUBLE_EQ(last["amplitude_pp"].get<double>(), 0.45);
   EXPECT_DOUBLE_EQ(last["largest_multiplier"].get<double>(), 1.2);
   EXPECT_EQ(last["stable"], false);
+  EXPECT_EQ(last["undecided"], false);                // no stability column: decided
   EXPECT_TRUE(last["stick_fraction"].is_null());      // empty in branch.csv
   EXPECT_TRUE(last["steady_growth_rate"].is_null());  // no steady state there
   EXPECT_EQ(last["event"], "fold;stability_change");
@@ -144,6 +145,21 @@ TEST(ViewBranch, PageHoldsThePointsEventsAndOrbits) {
   EXPECT_EQ(data["orbits"][1]["t"].size(), 10u);
   EXPECT_NEAR(lowest(data["orbits"][1]["x"]), -0.2, 1e-12);
   EXPECT_NEAR(highest(data["orbits"][1]["x"]), 0.3, 1e-12);
+}
+
+TEST(ViewBranch, TheStabilityColumnMarksUndecidedPoints) {
+  const fs::path dir = branchDir("undecided");
+  writeText(dir / "branch.csv",
+            "index,parameter,period,amplitude_pp,largest_multiplier,stable,stability,event\n"
+            "0,1,1.15,0.4,0.5,1,stable,\n"
+            "1,1.5,1.14,0.5,1.0000001,0,undecided,\n"
+            "2,1.4,1.13,0.45,1.2,0,unstable,stability_change\n");
+  const nlohmann::json data = pageData(writeBranchView(dir).file);
+  ASSERT_EQ(data["points"].size(), 3u);
+  EXPECT_EQ(data["points"][0]["undecided"], false);
+  EXPECT_EQ(data["points"][1]["undecided"], true);
+  EXPECT_EQ(data["points"][1]["stable"], false);
+  EXPECT_EQ(data["points"][2]["undecided"], false);
 }
 
 TEST(ViewBranch, LongOrbitsDecimatedKeepingEndsAndExtremes) {
