@@ -39,6 +39,9 @@ constexpr double kLocated = 1e-9;
 // A step by the return map (branch_return_map.hpp) is tried after a point whose non-trivial
 // multipliers are all below this, and kept when its own estimates are.
 constexpr double kReturnMapBelow = 0.05;
+// A branch lost where its last orbit's smallest slip speed is within this fraction below the
+// stick speed says it was lost at grazing.
+constexpr double kNearGrazing = 0.05;
 
 using branch::assignment;
 using branch::BranchShooter;
@@ -389,6 +392,16 @@ BranchResult continueOrbitFromText(
                           shooting::messageNumber(z[n + 1]) +
                           ": the corrector failed with the step at its " + "smallest (" +
                           shooting::messageNumber(2 * ds) + "): " + c.why;
+          const BranchPoint& last = r.points.back();
+          if (stick_speed > 0.0 && last.min_slip < stick_speed &&
+              last.min_slip >= (1.0 - kNearGrazing) * stick_speed)
+            r.stop_reason += "; the last orbit's smallest slip speed (" +
+                             shooting::messageNumber(last.min_slip) + " m/s) is within " +
+                             shooting::messageNumber(100.0 * kNearGrazing) +
+                             "% of the stick speed (" + shooting::messageNumber(stick_speed) +
+                             " m/s): sticking is about to end there (grazing), where a law "
+                             "with a kink at the stick speed gives Newton's iteration no "
+                             "derivative";
           break;
         }
         continue;

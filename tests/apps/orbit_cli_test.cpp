@@ -189,6 +189,9 @@ TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
   EXPECT_NE(r.output.find("lost"), std::string::npos) << r.output;
   const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
   EXPECT_EQ(j["status"].get<std::string>(), "lost");
+  EXPECT_NE(j["stop_reason"].get<std::string>().find("about to end there (grazing)"),
+            std::string::npos)
+      << j["stop_reason"];
   ASSERT_GE(j["branch"].size(), 2u);
   const auto& last = j["branch"].back();
   EXPECT_LT(last["parameter"].get<double>(), 2.0);

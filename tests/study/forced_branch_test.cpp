@@ -168,6 +168,8 @@ TEST(ForcedBranch, AMaxStepFarBelowTheFirstStepStillHalvesDownToTheScenesBoundar
     const study::BranchResult r = study::continueOrbit(kOscillator, {}, spec);
     ASSERT_TRUE(r.lost) << from << ": " << r.stop_reason;
     EXPECT_NE(r.stop_reason.find("damping must be >= 0"), std::string::npos) << r.stop_reason;
+    // No contact, no stick speed to graze: the reason says nothing of grazing.
+    EXPECT_EQ(r.stop_reason.find("grazing"), std::string::npos) << r.stop_reason;
     const double last = r.points.back().parameter;
     EXPECT_GE(last, 0.0) << from;
     EXPECT_LT(last, 2.0 * smallest) << from << ": " << r.stop_reason;
