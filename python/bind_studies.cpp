@@ -304,8 +304,7 @@ void bindStudies(py::module_& m) {
         "(branch.json's document: status, stop_reason, events, "
         "'branch' per point), with 'columns' (parameter, period, amplitude_pp, "
         "largest_multiplier, stable, undecided, stick_fraction, min_slip, steady_growth_rate as "
-        "arrays) and "
-        "'orbits' (each "
+        "arrays) and 'orbits' (each "
         "point's 't' and 'x' over one period). Raises OrbitError (no orbit at start, no Hopf "
         "point in the range), "
         "SceneError (unknown or non-numeric parameter).");

@@ -110,9 +110,6 @@ enum class BranchSwitch { kNone, kPeriodDoubling, kBranchPoint };
 // "none", "period_doubling", "branch_point".
 std::string branchSwitchName(BranchSwitch kind);
 inline constexpr double kDefaultSwitchAmplitude = 1e-3;
-// A point's stability verdict that differs from the last decided point's is checked by a
-// monodromy differenced with this many times the finite-difference step (BranchPoint).
-inline constexpr double kRecheckFdStep = 30000;
 
 // The arclength's norm (above): the unknowns in SI units, or each over its own scale.
 enum class ArclengthNorm { kSi, kScaled };
@@ -157,8 +154,8 @@ struct BranchPoint {
   bool stable = false;
   // Stability not decided (and `stable` false): a non-trivial multiplier within what the flow
   // can tell of the unit circle, ten times the trivial one's error and at least 1e-6 (the
-  // rule by which `tribo orbit` reports an orbit `neutral`). Stability changes are located
-  // between decided points only.
+  // rule by which `tribo orbit` reports an orbit `neutral`). Period doublings, tori and
+  // stability changes are looked for between decided points only.
   bool undecided = false;
   // The observed body's slip speed over the orbit where it touches (the largest over its
   // contact points, as the run summary takes it): its minimum, and the fraction of the period
@@ -249,9 +246,9 @@ BranchResult continueOrbitFromText(
 
 // The events between consecutive points (points need parameter, arclength, dp_ds,
 // multipliers, trivial, stable, undecided and, for grazing, min_slip; stick_speed 0: no
-// grazing). A stability change lies between two decided points with undecided ones between
-// them, if any. A branch of forced orbits (`autonomous` false) has no Hopf point: every turn
-// is a fold.
+// grazing). A period doubling, torus or stability change lies between two decided points,
+// with undecided ones between them, if any. A branch of forced orbits (`autonomous` false)
+// has no Hopf point: every turn is a fold.
 std::vector<BranchEvent> detectBranchEvents(const std::vector<BranchPoint>& points,
                                             double stick_speed = 0, bool autonomous = true);
 
