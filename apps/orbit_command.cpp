@@ -158,9 +158,14 @@ int runBranch(Arguments& a) {
   std::printf("branch           %s in %s: %zu points, %s\n", a.scene_path.c_str(),
               b.parameter.c_str(), r.points.size(), r.stop_reason.c_str());
   for (const study::BranchEvent& e : r.events)
-    std::printf("event            %s at %s ~ %.6g (between points %zu and %zu, interpolated)\n",
-                study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter, e.before,
-                e.after);
+    if (e.before == e.after)
+      std::printf("event            %s at %s ~ %.8g (past point %zu, bracketed)\n",
+                  study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter,
+                  e.after);
+    else
+      std::printf("event            %s at %s ~ %.6g (between points %zu and %zu, interpolated)\n",
+                  study::branchEventName(e.kind).c_str(), b.parameter.c_str(), e.parameter,
+                  e.before, e.after);
   if (b.from_hopf)
     std::printf(
         "start            Hopf point at %s ~ %.8g, period %.8g s there (%d modes analyses)\n",

@@ -117,10 +117,13 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
   j["points"] = r.points.size();
   nlohmann::ordered_json events = nlohmann::ordered_json::array();
   for (const BranchEvent& e : r.events)
-    events.push_back({{"kind", branchEventName(e.kind)},
-                      {"parameter", e.parameter},
-                      {"between", {e.before, e.after}},
-                      {"located", "interpolated between the two points"}});
+    events.push_back(
+        {{"kind", branchEventName(e.kind)},
+         {"parameter", e.parameter},
+         {"between", {e.before, e.after}},
+         {"located", e.before == e.after ? "bracketed past the last point by orbits at fixed "
+                                           "parameters"
+                                         : "interpolated between the two points"}});
   j["events"] = events;
   nlohmann::ordered_json pts = nlohmann::ordered_json::array();
   for (const BranchPoint& p : r.points) {
@@ -140,8 +143,12 @@ std::string branchJsonText(const std::string& scene_path, const BranchSpec& spec
                                                           : nlohmann::ordered_json()},
                    {"trivial_multiplier_error", p.trivial_error},
                    // "return_map": the multipliers are the leading two, estimated
-                   // (branch_return_map.hpp); "newton": all, from the monodromy matrix.
-                   {"method", p.by_return_map ? "return_map" : "newton"},
+                   // (branch_return_map.hpp); "newton": all, from the monodromy matrix;
+                   // "fixed_parameter": the same, at a grazing point's bracket's end
+                   // (branch_grazing.hpp).
+                   {"method", p.by_return_map     ? "return_map"
+                              : p.fixed_parameter ? "fixed_parameter"
+                                                  : "newton"},
                    {"steady_growth_rate", std::isfinite(p.steady_growth)
                                               ? nlohmann::ordered_json(p.steady_growth)
                                               : nlohmann::ordered_json()},

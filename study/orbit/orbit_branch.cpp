@@ -16,6 +16,7 @@
 #include "io/scene_parameters.hpp"
 #include "study/csv_text.hpp"
 #include "study/modes/modes.hpp"
+#include "study/orbit/branch_grazing.hpp"
 #include "study/orbit/branch_return_map.hpp"
 #include "study/orbit/branch_shooter.hpp"
 #include "study/orbit/branch_switch.hpp"
@@ -39,9 +40,20 @@ constexpr double kLocated = 1e-9;
 // A step by the return map (branch_return_map.hpp) is tried after a point whose non-trivial
 // multipliers are all below this, and kept when its own estimates are.
 constexpr double kReturnMapBelow = 0.05;
-// A branch lost where its last orbit's smallest slip speed is within this fraction below the
-// stick speed says it was lost at grazing.
+// A corrector that fails where the last orbit's smallest slip speed is within this fraction of
+// the stick speed has met grazing: the orbits on either side of it are bracketed at fixed
+// parameters (branch_grazing.hpp), the bracket a thousandth of the last step wide, in at
+// most these probes (the first ones stepping out 1/4, 1/2, ... of the last step).
 constexpr double kNearGrazing = 0.05;
+constexpr double kGrazingWidth = 1e-3;
+constexpr int kGrazingExpansions = 4;
+constexpr int kGrazingProbes = 24;
+// Past the bracket, the branch goes on from the far orbit with a step this many times the
+// bracket's length.
+constexpr double kGrazingRestart = 100.0;
+// A stable sticking orbit past which none is found ends the branch at grazing when its
+// smallest slip speed is within this fraction below the stick speed.
+constexpr double kGrazingEnd = 1e-3;
 
 using branch::assignment;
 using branch::BranchShooter;
@@ -320,14 +332,96 @@ BranchResult continueOrbitFromText(
   }
   const double low = std::min(spec.from, spec.to), high = std::max(spec.from, spec.to);
 
+  // A point found off the arclength corrector (a grazing bracket's end): appended after
+  // `from`, the branch's last z, with its corrector's iterations and residual (arclength in
+  // the norm of w).
+  auto push = [&](BranchPoint pt, const Correction& c, const Eigen::VectorXd& from,
+                  const Eigen::VectorXd& w) {
+    pt.iterations = c.iterations;
+    pt.residual = c.residual;
+    pt.fixed_parameter = true;
+    pt.arclength = r.points.back().arclength + (c.z - from).cwiseQuotient(w).norm();
+    r.points.push_back(std::move(pt));
+    if (progress) progress(r.points.back(), r.points.size() - 1);
+  };
+  // The orbits on either side of a grazing point the corrector could not pass, from the last
+  // point z in the direction d (branch_grazing.hpp). Each probe solves the orbit at its
+  // parameter by Newton from the secant's prediction through the two nearest orbits on the
+  // near side, no farther from it than the prediction lies from the nearest: near the kink
+  // the differences' Jacobian can send Newton's iteration onto another cycle (the unstable
+  // one beside the stable), which lies farther.
+  struct GrazingOrbit {
+    Correction c;
+    Eigen::VectorXd tangent;
+    BranchPoint point;
+  };
+  struct GrazingPass {
+    branch::GrazingBracket bracket;
+    std::optional<GrazingOrbit> inside, outside;
+  };
+  auto passGrazing = [&](const BranchShooter& shooter, const Eigen::VectorXd& z,
+                         const Eigen::VectorXd& w, const Eigen::VectorXd& d,
+                         const Eigen::VectorXd& tangent) {
+    GrazingPass g;
+    const bool sticking = r.points.back().min_slip < stick_speed;
+    const double p_last = z[n + 1];
+    const double p_before = r.points.size() >= 2 ? r.points[r.points.size() - 2].parameter : p_last;
+    const double last_step = std::max(std::abs(p_last - p_before), min_step * w[n + 1]);
+    Eigen::VectorXd p_row = Eigen::VectorXd::Zero(n + 2);
+    p_row[n + 1] = 1.0;
+    // The two nearest orbits on the near side, for the secant's prediction.
+    Eigen::VectorXd near = z, before(n + 2);
+    before << r.points[r.points.size() >= 2 ? r.points.size() - 2 : 0].start,
+        r.points[r.points.size() >= 2 ? r.points.size() - 2 : 0].period, p_before;
+    auto probe = [&](double p) {
+      // Newton from the secant's prediction at p, no farther from it than the prediction is
+      // from the nearest orbit (near the kink the differences' Jacobian can send Newton's
+      // iteration onto the unstable cycle beside the stable one).
+      Eigen::VectorXd guess = near;
+      if (before[n + 1] != near[n + 1])
+        guess += (p - near[n + 1]) / (near[n + 1] - before[n + 1]) * (near - before);
+      guess[n + 1] = p;
+      const double reach = std::max((guess - near).cwiseQuotient(w).norm(), 1e-12);
+      GrazingOrbit o;
+      o.c = newtonWithRow(shooter, guess, p_row, p, reach, w,
+                          std::max(spec.max_corrector, spec.orbit.max_iterations),
+                          spec.orbit.tolerance);
+      if (!o.c.ok) return branch::GrazingSide::kNone;
+      o.tangent = unitTangent(o.c.A, tangent, w);
+      o.point =
+          makePoint(shooter, o.c.z, shooting::floquet(o.c.monodromy, !r.forced), o.tangent, w);
+      if (!(o.point.amplitude_pp > kCollapsed * r.points.front().amplitude_pp) ||
+          !std::isfinite(o.point.min_slip))
+        return branch::GrazingSide::kNone;
+      if ((o.point.min_slip < stick_speed) == sticking) {
+        before = near;
+        near = o.c.z;
+        g.inside = std::move(o);
+        return branch::GrazingSide::kSame;
+      }
+      g.outside = std::move(o);
+      return branch::GrazingSide::kCrossed;
+    };
+    g.bracket = branch::bracketGrazing(p_last, d[n + 1] > 0.0 ? 1.0 : -1.0, last_step / 4,
+                                       kGrazingWidth * last_step, kGrazingExpansions,
+                                       kGrazingProbes, probe);
+    // A crossed orbit from before a probe that found none nearer is not the bracket's end.
+    if (g.bracket.outside_side != branch::GrazingSide::kCrossed) g.outside.reset();
+    return g;
+  };
+
   // Follows a branch from its first point (in r.points, at z with `tangent`) on `shooter`,
   // in the norm of w: towards `to` (or, `either_way`, until p leaves [from, to]); with
   // `switch_at`, until the first such bifurcation between the last two points.
   std::unique_ptr<BranchShooter> secondary;  // a switch's: orbits twice as long, or the same
+  std::optional<BranchEvent> end_event;      // a grazing point past the last point
   auto follow = [&](const BranchShooter& shooter, Eigen::VectorXd z, Eigen::VectorXd tangent,
                     const Eigen::VectorXd& w, bool either_way, BranchSwitch switch_at) {
     Eigen::VectorXd d = tangent;  // the predictor's direction: the tangent, then the secant
     double ds = std::min(step, max_step);
+    double smallest = min_step;  // lowered past a grazing point
+    int grazing_probes = 0;      // the last grazing pass's
+    double crossed_at = NAN;     // the grazing point it crossed, if one
     while (true) {
       if (spec.stop && spec.stop->load()) {
         r.interrupted = true;
@@ -386,22 +480,83 @@ BranchResult continueOrbitFromText(
       }
       if (!c.ok) {
         ds /= 2;
-        if (ds < min_step) {
+        if (ds < smallest) {
+          const double slip = r.points.back().min_slip;
+          if (stick_speed > 0.0 && std::isfinite(slip) &&
+              std::abs(slip - stick_speed) <= kNearGrazing * stick_speed &&
+              !r.points.back().fixed_parameter && d[n + 1] != 0.0) {
+            // Grazing of a law with a kink: the orbits on either side at fixed parameters,
+            // and on from the far one, or the branch's end located when there is none.
+            const GrazingPass g = passGrazing(shooter, z, w, d, tangent);
+            grazing_probes = g.bracket.evaluations;
+            if (g.inside) {
+              push(std::move(g.inside->point), g.inside->c, z, w);
+              z = g.inside->c.z;
+              if (!g.bracket.bracketed) {  // no grazing within reach: on from the last orbit
+                tangent = g.inside->tangent;
+                d = tangent;
+                ds = std::min(step, max_step);
+                continue;
+              }
+            }
+            if (g.outside) {
+              // On from the far orbit with a step a hundred times the bracket's (a fold of
+              // the cycles may lie just past a grazing point), the smallest step lowered
+              // with it.
+              const Eigen::VectorXd z_in = z;
+              crossed_at = 0.5 * (g.bracket.inside + g.bracket.outside);
+              push(std::move(g.outside->point), g.outside->c, z, w);
+              z = g.outside->c.z;
+              tangent = g.outside->tangent;
+              d = tangent;
+              ds = std::min(kGrazingRestart * (z - z_in).cwiseQuotient(w).norm(), max_step);
+              smallest = std::min(smallest, ds / 64.0);
+              continue;
+            }
+            const BranchPoint& end = r.points.back();
+            if (g.bracket.bracketed && end.fixed_parameter && end.stable &&
+                end.min_slip < stick_speed && end.min_slip >= (1.0 - kGrazingEnd) * stick_speed) {
+              // The stable sticking orbits end at grazing: no orbit on either side past it.
+              r.lost = true;
+              end_event =
+                  BranchEvent{BranchEventKind::kGrazing, r.points.size() - 1, r.points.size() - 1,
+                              0.5 * (g.bracket.inside + g.bracket.outside)};
+              r.stop_reason =
+                  "the stable orbits stop sticking (grazing) at " + spec.parameter + " ~ " +
+                  shooting::messageNumber(end_event->parameter) + ": the last, at " +
+                  shooting::messageNumber(end.parameter) + ", slips no slower than " +
+                  shooting::messageNumber(end.min_slip) + " m/s (stick speed " +
+                  shooting::messageNumber(stick_speed) + " m/s); no orbit was found at " +
+                  shooting::messageNumber(g.bracket.outside) + " (" +
+                  std::to_string(g.bracket.evaluations) + " orbits solved at fixed parameters)";
+              break;
+            }
+          }
           r.lost = true;
           r.stop_reason = "the branch was lost after " + spec.parameter + " = " +
                           shooting::messageNumber(z[n + 1]) +
                           ": the corrector failed with the step at its " + "smallest (" +
                           shooting::messageNumber(2 * ds) + "): " + c.why;
           const BranchPoint& last = r.points.back();
-          if (stick_speed > 0.0 && last.min_slip < stick_speed &&
-              last.min_slip >= (1.0 - kNearGrazing) * stick_speed)
+          if (std::isfinite(crossed_at)) {
+            r.stop_reason += "; it had crossed grazing at " + spec.parameter + " ~ " +
+                             shooting::messageNumber(crossed_at) +
+                             " (orbits at fixed parameters on either side) and followed the "
+                             "orbits past it to here";
+          } else if (stick_speed > 0.0 &&
+                     std::abs(last.min_slip - stick_speed) <= kNearGrazing * stick_speed) {
             r.stop_reason += "; the last orbit's smallest slip speed (" +
                              shooting::messageNumber(last.min_slip) + " m/s) is within " +
                              shooting::messageNumber(100.0 * kNearGrazing) +
                              "% of the stick speed (" + shooting::messageNumber(stick_speed) +
-                             " m/s): sticking is about to end there (grazing), where a law "
-                             "with a kink at the stick speed gives Newton's iteration no "
-                             "derivative";
+                             " m/s): sticking is about to " +
+                             (last.min_slip < stick_speed ? "end" : "begin") +
+                             " there (grazing), where a law with a kink at the stick speed "
+                             "gives Newton's iteration no derivative";
+            if (grazing_probes > 0)
+              r.stop_reason += ", and " + std::to_string(grazing_probes) +
+                               " orbits solved at fixed parameters found none across it";
+          }
           break;
         }
         continue;
@@ -590,6 +745,7 @@ BranchResult continueOrbitFromText(
     }
   }
   r.events = detectBranchEvents(r.points, r.stick_speed, !r.forced);
+  if (end_event) r.events.push_back(*end_event);
   // The secondary's first orbit is a off the bifurcation, where its critical multiplier is
   // still 1 or -1 to O(a^2) and dp/ds 0 to O(a): a fold or stability change between it and
   // the next point is that bifurcation, reported as the switch, not a second one.

@@ -171,6 +171,9 @@ struct BranchPoint {
   // Reached by the return map at the predicted parameter (branch_return_map.hpp): its
   // multipliers are then the trivial one and the two leading others, estimated.
   bool by_return_map = false;
+  // Solved at a fixed parameter, one of the two orbits that bracket a grazing point the
+  // arclength corrector could not pass (branch_grazing.hpp); its multipliers are every one.
+  bool fixed_parameter = false;
   double residual = 0;       // |F| / (1 + |y0|) of the closing and phase rows
   double step = 0;           // the step ds that reached this point (0 for the first)
   Eigen::VectorXd start;     // y0
@@ -204,6 +207,9 @@ struct BranchResult {
   std::vector<std::string> coordinates;  // the names of each point's `start` entries
   // The branch; with a switch, the secondary one (the primary's in `primary`).
   std::vector<BranchPoint> points;
+  // The events between the points (detectBranchEvents), and last a grazing point located
+  // past the last point (before = after = its index): where the stable orbits stop sticking
+  // and no orbit was found beyond at fixed parameters (orbit_branch.cpp).
   std::vector<BranchEvent> events;
   // With BranchSpec::switch_at: the primary branch up to the bifurcation, its events and where
   // the secondary left it (switched.found false: the primary ended without one; `points` then

@@ -179,28 +179,38 @@ TEST_F(OrbitCli, ContinueWritesTheBranchsCsvAndEventsAndReportsEachPoint) {
 TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
   // A viscous damper beside the wall spring (1.5 N s/m): stick-slip ends as the belt speeds
   // up, when the orbit's smallest slip speed reaches the stick speed (0.01 m/s) and the
-  // sticking phase vanishes (grazing); at the law's kink there Newton's iteration stops
-  // converging (measured: lost after v_b = 0.7303, smallest slip 0.0099 m/s), and the branch
-  // ends there, before TO, with what it found.
+  // sticking phase vanishes (grazing). At the law's kink there Newton's iteration stops
+  // converging (measured: after v_b = 0.7303, smallest slip 0.0099 m/s); orbits solved at
+  // fixed parameters past it bracket where the stable orbits stop sticking (measured 0.732042;
+  // tests/study/orbit_grazing_test.cpp holds it to the one-dof model), and the branch goes
+  // on from the orbit just past it, if Newton finds one there, until it is lost within
+  // 1e-5 m/s of belt speed, where the orbits that just slip fold back: it ends before TO, with
+  // what it found.
   const Result r =
       runTribo("orbit " + kBelt + " --set 'springs[wall_spring].damping=1.5'" + " --out " +
                dir_.string() + " --continue v_b=0.5:2 --step 0.1 --max-points 25");
   EXPECT_EQ(r.status, 12) << r.output;
-  EXPECT_NE(r.output.find("lost"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("event            grazing"), std::string::npos) << r.output;
   const auto j = nlohmann::json::parse(slurp(dir_ / "branch.json"));
   EXPECT_EQ(j["status"].get<std::string>(), "lost");
-  EXPECT_NE(j["stop_reason"].get<std::string>().find("about to end there (grazing)"),
-            std::string::npos)
+  EXPECT_NE(j["stop_reason"].get<std::string>().find("grazing"), std::string::npos)
       << j["stop_reason"];
   ASSERT_GE(j["branch"].size(), 2u);
-  const auto& last = j["branch"].back();
-  EXPECT_LT(last["parameter"].get<double>(), 2.0);
-  // Sticking is about to end: the smallest slip speed just under the stick speed, the stick
-  // fraction far below the first point's.
-  EXPECT_GT(last["min_slip"].get<double>(), 0.009);
-  EXPECT_LT(last["min_slip"].get<double>(), 0.01);
-  EXPECT_LT(last["stick_fraction"].get<double>(),
+  EXPECT_LT(j["branch"].back()["parameter"].get<double>(), 2.0);
+  // The grazing event; the point before it still sticks, just (its smallest slip speed
+  // under the stick speed, its stick fraction far below the first point's), and was solved
+  // at a fixed parameter.
+  ASSERT_EQ(j["events"].size(), 1u) << j["events"];
+  const auto& e = j["events"][0];
+  EXPECT_EQ(e["kind"].get<std::string>(), "grazing");
+  const auto& before = j["branch"][e["between"][0].get<std::size_t>()];
+  EXPECT_EQ(before["method"].get<std::string>(), "fixed_parameter");
+  EXPECT_GT(before["min_slip"].get<double>(), 0.01 * (1 - 1e-3));
+  EXPECT_LT(before["min_slip"].get<double>(), 0.01);
+  EXPECT_LT(before["stick_fraction"].get<double>(),
             0.5 * j["branch"][0]["stick_fraction"].get<double>());
+  EXPECT_GE(e["parameter"].get<double>(), before["parameter"].get<double>());
+  EXPECT_LT(e["parameter"].get<double>(), before["parameter"].get<double>() + 1e-4);
   EXPECT_TRUE(fs::exists(dir_ / "branch.csv"));
 }
 
