@@ -347,9 +347,10 @@ BranchResult continueOrbitFromText(
   // The orbits on either side of a grazing point the corrector could not pass, from the last
   // point z in the direction d (branch_grazing.hpp). Each probe solves the orbit at its
   // parameter by Newton from the secant's prediction through the two nearest orbits on the
-  // near side, no farther from it than the prediction lies from the nearest: near the kink
-  // the differences' Jacobian can send Newton's iteration onto another cycle (the unstable
-  // one beside the stable), which lies farther.
+  // near side, no farther from it than the prediction lies from the nearest (near the kink
+  // the differences' Jacobian can send Newton's iteration onto another cycle, the unstable
+  // one beside the stable, which lies farther), in at most the corrector's iterations: the
+  // 24 probes cost at most about four times the halved steps that failed before them.
   struct GrazingOrbit {
     Correction c;
     Eigen::VectorXd tangent;
@@ -383,8 +384,7 @@ BranchResult continueOrbitFromText(
       guess[n + 1] = p;
       const double reach = std::max((guess - near).cwiseQuotient(w).norm(), 1e-12);
       GrazingOrbit o;
-      o.c = newtonWithRow(shooter, guess, p_row, p, reach, w,
-                          std::max(spec.max_corrector, spec.orbit.max_iterations),
+      o.c = newtonWithRow(shooter, guess, p_row, p, reach, w, spec.max_corrector,
                           spec.orbit.tolerance);
       if (!o.c.ok) return branch::GrazingSide::kNone;
       o.tangent = unitTangent(o.c.A, tangent, w);
