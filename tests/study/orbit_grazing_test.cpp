@@ -1,8 +1,8 @@
 // Grazing of a law with a kink (study/orbit/branch_grazing.hpp, orbit_branch.cpp): where the
 // damped belt's stable stick-slip cycle stops sticking as the belt speeds up, located by the
 // continuation past its last regular point, against the belt speed where the paper's
-// one-degree-of-freedom model, with the wall damper c, integrated in the test (RK4 at the
-// scene's 1 ms, sharing nothing with the engine but the friction law), stops sticking:
+// one-degree-of-freedom model with the wall damper c (tests/support/one_dof_belt.hpp: RK4 at
+// the scene's 1 ms, sharing nothing with the engine but the friction law) stops sticking:
 //   m x'' = -k x - c x' + mu(v_b - x') m g,
 // started stuck at the break-away point (x = (mu_s m g - c v_b) / k, x' = v_b), a point of
 // the stick-slip cycle; it sticks at v_b when its slip speed still falls below the law's stick
@@ -21,6 +21,7 @@
 #include "friction/friction_law.hpp"
 #include "study/orbit/branch_grazing.hpp"
 #include "study/orbit/orbit_branch.hpp"
+#include "support/one_dof_belt.hpp"
 
 namespace tribo {
 namespace {
@@ -82,23 +83,13 @@ double oneDofGrazingSpeed(double m, double c, double lo, double hi) {
        {}});
   const double k = 300.0, g = 9.81, h = 1e-3, v_s = 0.01;
   auto sticks = [&](double v_b) {
-    auto a = [&](double x, double v) {
-      return (-k * x - c * v + law->coefficient(v_b - v) * m * g) / m;
-    };
+    const test::OneDofBelt belt{m, k, v_b, g, law.get(), c};
     double x = (0.35 * m * g - c * v_b) / k, v = v_b, slowest = INFINITY;
     const long steps = 300000, tail = 20000;
-    for (long i = 0; i < steps; ++i) {
-      const double a1 = a(x, v);
-      const double x2 = x + 0.5 * h * v, v2 = v + 0.5 * h * a1;
-      const double a2 = a(x2, v2);
-      const double x3 = x + 0.5 * h * v2, v3 = v + 0.5 * h * a2;
-      const double a3 = a(x3, v3);
-      const double x4 = x + h * v3, v4 = v + h * a3;
-      const double a4 = a(x4, v4);
-      x += h / 6.0 * (v + 2 * v2 + 2 * v3 + v4);
-      v += h / 6.0 * (a1 + 2 * a2 + 2 * a3 + a4);
-      if (i >= steps - tail) slowest = std::min(slowest, std::abs(v_b - v));
-    }
+    long i = 0;
+    belt.run(x, v, h, steps, [&](double, double, double vs) {
+      if (++i > steps - tail) slowest = std::min(slowest, std::abs(v_b - vs));
+    });
     return slowest < v_s;
   };
   EXPECT_TRUE(sticks(lo)) << lo;

@@ -1,8 +1,9 @@
 // The belt scene reduced by hand to one degree of freedom, as the paper states it:
 //   m x'' = -k x + mu(v_b - x') m g        (box on a belt at v_b, spring to a wall)
-// integrated with classical RK4. It shares nothing with the engine but the friction law,
-// so it is an independent reference for the scene tests and the baseline of the benches
-// (the cheapest possible simulation of this scene). Not an engine feature.
+// with, optionally, a wall damper c beside the spring (- c x'; none by default: the paper's
+// model exactly), integrated with classical RK4. It shares nothing with the engine but the
+// friction law, so it is an independent reference for the scene tests and the baseline of
+// the benches (the cheapest possible simulation of this scene). Not an engine feature.
 #pragma once
 
 #include <vector>
@@ -14,9 +15,10 @@ namespace tribo::test {
 struct OneDofBelt {
   double m = 10.0, k = 300.0, v_b = 1.5, g = 9.81;
   const friction::FrictionLaw* law = nullptr;
+  double c = 0.0;  // the wall damper [N s/m]
 
   double acceleration(double x, double v) const {
-    return (-k * x + law->coefficient(v_b - v) * m * g) / m;
+    return (-k * x - c * v + law->coefficient(v_b - v) * m * g) / m;
   }
 
   // Advances (x, v) by n RK4 steps of h; calls sample(t, x, v) after each step if given.
