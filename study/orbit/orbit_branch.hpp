@@ -121,8 +121,10 @@ struct BranchSpec {
   double from = 0, to = 0;  // the branch starts at `from` and runs towards `to`
   int max_points = 20;      // points at most, the start included
   ArclengthNorm norm = ArclengthNorm::kSi;
-  double step = 0;          // first arclength step; 0: |to - from| / 10 (si), 0.1 (scaled)
-  double min_step = 0;      // the branch stops below this step; 0: min(step, max_step) / 64
+  double step = 0;  // first arclength step; 0: |to - from| / 10 (si), 0.1 (scaled)
+  // The branch stops below this step (lowered past a grazing point it crossed, to 1/64 of
+  // the step it goes on with there); 0: min(step, max_step) / 64.
+  double min_step = 0;
   double max_step = 0;      // 0: 4 step
   int max_corrector = 6;    // Newton iterations per point at most
   double fd_parameter = 0;  // dp of the p column; 0: orbit.fd_step max(|p|, |to - from|)
@@ -174,8 +176,8 @@ struct BranchPoint {
   // Solved at a fixed parameter, one of the two orbits that bracket a grazing point the
   // arclength corrector could not pass (branch_grazing.hpp); its multipliers are every one.
   bool fixed_parameter = false;
-  double residual = 0;       // |F| / (1 + |y0|) of the closing and phase rows
-  double step = 0;           // the step ds that reached this point (0 for the first)
+  double residual = 0;  // |F| / (1 + |y0|) of the closing and phase rows
+  double step = 0;  // the step ds that reached this point (0 for the first, and fixed_parameter)
   Eigen::VectorXd start;     // y0
   std::vector<double> t, x;  // the observed coordinate over one period, per step, from y0
 };

@@ -184,8 +184,7 @@ TEST_F(OrbitCli, ALostBranchExitsTwelveWithThePointsFoundSoFar) {
   // fixed parameters past it bracket where the stable orbits stop sticking (measured 0.732042;
   // tests/study/orbit_grazing_test.cpp holds it to the one-dof model), and the branch goes
   // on from the orbit just past it, if Newton finds one there, until it is lost within
-  // 1e-5 m/s of belt speed, where the orbits that just slip fold back: it ends before TO, with
-  // what it found.
+  // 1e-5 m/s of belt speed past it (docs/orbits.md): it ends before TO, with what it found.
   const Result r =
       runTribo("orbit " + kBelt + " --set 'springs[wall_spring].damping=1.5'" + " --out " +
                dir_.string() + " --continue v_b=0.5:2 --step 0.1 --max-points 25");
