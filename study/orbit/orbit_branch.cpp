@@ -366,14 +366,14 @@ BranchResult continueOrbitFromText(
     GrazingPass g;
     const bool sticking = r.points.back().min_slip < stick_speed;
     const double p_last = z[n + 1];
-    const double p_before = r.points.size() >= 2 ? r.points[r.points.size() - 2].parameter : p_last;
-    const double last_step = std::max(std::abs(p_last - p_before), min_step * w[n + 1]);
+    // The point before the last (the last itself on a branch of one point).
+    const BranchPoint& previous = r.points[r.points.size() >= 2 ? r.points.size() - 2 : 0];
+    const double last_step = std::max(std::abs(p_last - previous.parameter), min_step * w[n + 1]);
     Eigen::VectorXd p_row = Eigen::VectorXd::Zero(n + 2);
     p_row[n + 1] = 1.0;
     // The two nearest orbits on the near side, for the secant's prediction.
     Eigen::VectorXd near = z, before(n + 2);
-    before << r.points[r.points.size() >= 2 ? r.points.size() - 2 : 0].start,
-        r.points[r.points.size() >= 2 ? r.points.size() - 2 : 0].period, p_before;
+    before << previous.start, previous.period, previous.parameter;
     auto probe = [&](double p) {
       // Newton from the secant's prediction at p, no farther from it than the prediction is
       // from the nearest orbit (near the kink the differences' Jacobian can send Newton's

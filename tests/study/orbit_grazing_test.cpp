@@ -16,7 +16,6 @@
 #include <cstdio>
 #include <ostream>
 #include <string>
-#include <vector>
 
 #include "friction/friction_law.hpp"
 #include "study/orbit/branch_grazing.hpp"
@@ -106,7 +105,7 @@ struct GrazingCase {
   double from, to;  // the continuation's range in v_b
   double lo, hi;    // the reference's bracket
   const char* name;
-  const char* id;  // the case's name in the test's
+  const char* id;  // the case's suffix in the test's name
 };
 
 void PrintTo(const GrazingCase& k, std::ostream* os) { *os << k.id; }
