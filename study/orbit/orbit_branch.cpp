@@ -51,6 +51,12 @@ constexpr int kGrazingProbes = 24;
 // Past the bracket, the branch goes on from the far orbit with a step this many times the
 // bracket's length.
 constexpr double kGrazingRestart = 100.0;
+// A corrected point whose tangent turns from the last one's by more than this angle (its
+// cosine) was reached by jumping to another branch at the same parameter (a step too long for
+// where the branch bends, as near a grazing fold): the step is halved and tried again.
+constexpr double kMaxTurnCos = 0.7;  // 45.6 degrees
+// How much lower the smallest step goes where slipping cycles approach grazing.
+constexpr double kApproachSteps = 64.0;
 // A stable sticking orbit past which none is found ends the branch at grazing when its
 // smallest slip speed is within this fraction below the stick speed.
 constexpr double kGrazingEnd = 1e-3;
@@ -410,6 +416,65 @@ BranchResult continueOrbitFromText(
     return g;
   };
 
+  // The sticking cycles beside slipping ones at grazing, where the corrector and the orbits at
+  // fixed parameters (passGrazing) found none past the last orbit, which slips within
+  // kNearGrazing of the stick speed, as the one before it does (a branch that has just come
+  // across from the sticking cycles does not go back to them). The law's kink gives Newton's
+  // iteration no derivative to pass on where two shapes of branch meet: a corner, the unstable
+  // slipping cycles of a subcritical Hopf point meeting the stable sticking ones at a fold at
+  // grazing (the largest multiplier jumps through 1; the sticking cycles lie back in p), or a
+  // stable slipping cycle just past the corner's smooth fold, the sticking cycles ahead. The
+  // sticking cycle is the attractor there: the orbit a settling run finds (as the branch's
+  // first), back in p by the last step's change, then ahead by as much, then both 4 and 16
+  // times as far, each kept only if it is stable and sticks (the other cycle, not the last
+  // one again) and lies within twice the last step's arclength (times how far it is in p) of
+  // the last orbit: the two branches meet there, it is not another attractor farther off. The
+  // branch goes on from it, away from the last orbit in p.
+  auto stickingBeside = [&](const BranchShooter& shooter, const Eigen::VectorXd& z,
+                            const Eigen::VectorXd& w,
+                            const Eigen::VectorXd& d) -> std::optional<GrazingOrbit> {
+    if (r.forced || !(stick_speed > 0.0) || r.points.size() < 2 || d[n + 1] == 0.0)
+      return std::nullopt;
+    const BranchPoint& last = r.points.back();
+    const BranchPoint& previous = r.points[r.points.size() - 2];
+    if (!(last.min_slip >= stick_speed) || last.min_slip > (1.0 + kNearGrazing) * stick_speed ||
+        !(previous.min_slip >= stick_speed))
+      return std::nullopt;  // not slipping near grazing, or come from the sticking cycles
+    const double p_last = z[n + 1];
+    const double back = std::abs(p_last - previous.parameter);
+    const double last_arc = last.arclength - previous.arclength;
+    if (!(back > 0.0)) return std::nullopt;
+    const double sign = d[n + 1] > 0.0 ? 1.0 : -1.0;
+    Eigen::VectorXd p_row = Eigen::VectorXd::Zero(n + 2);
+    p_row[n + 1] = 1.0;
+    for (const double times : {1.0, 4.0, 16.0}) {
+      for (const double towards : {-sign, sign}) {
+        const double p = p_last + towards * times * back;
+        if (p < low || p > high) continue;
+        try {
+          const io::Scene at = sceneAt(p);
+          const OrbitResult settled = findPeriodicOrbit(at, spec.orbit);
+          const State start =
+              OrbitCoordinates(*at.model, settled.reference).fromVector(settled.start);
+          Eigen::VectorXd guess(n + 2);
+          guess << coords.toVector(start), settled.period, p;
+          GrazingOrbit o;
+          o.c = newtonWithRow(shooter, guess, p_row, p, INFINITY, w, spec.max_corrector,
+                              spec.orbit.tolerance);
+          if (!o.c.ok || (o.c.z - z).cwiseQuotient(w).norm() > 2.0 * times * last_arc) continue;
+          Eigen::VectorXd away = Eigen::VectorXd::Zero(n + 2);
+          away[n + 1] = towards;
+          o.tangent = unitTangent(o.c.A, away, w);
+          o.point =
+              makePoint(shooter, o.c.z, shooting::floquet(o.c.monodromy, !r.forced), o.tangent, w);
+          if (o.point.stable && o.point.min_slip < stick_speed) return o;
+        } catch (const std::exception&) {  // no orbit there (OrbitError) or not in y's terms
+        }
+      }
+    }
+    return std::nullopt;
+  };
+
   // Follows a branch from its first point (in r.points, at z with `tangent`) on `shooter`,
   // in the norm of w: towards `to` (or, `either_way`, until p leaves [from, to]); with
   // `switch_at`, until the first such bifurcation between the last two points.
@@ -422,6 +487,8 @@ BranchResult continueOrbitFromText(
     double smallest = min_step;  // lowered past a grazing point
     int grazing_probes = 0;      // the last grazing pass's
     double crossed_at = NAN;     // the grazing point it crossed, if one
+    bool beside = false;         // onto the sticking cycles beside the last (once)
+    bool approached = false;     // the smallest step lowered towards a grazing corner
     while (true) {
       if (spec.stop && spec.stop->load()) {
         r.interrupted = true;
@@ -477,9 +544,28 @@ BranchResult continueOrbitFromText(
                   shooting::messageNumber(pt.parameter) + " (amplitude " +
                   shooting::messageNumber(pt.amplitude_pp) + ")";
         }
+        const double turn = t.dot(tangent);
+        if (c.ok && !(turn >= kMaxTurnCos)) {
+          c.ok = false;
+          c.why = "the orbit found at " + spec.parameter + " = " +
+                  shooting::messageNumber(pt.parameter) + " turns the branch's tangent by " +
+                  shooting::messageNumber(std::acos(std::clamp(turn, -1.0, 1.0)) * 180.0 /
+                                          std::numbers::pi) +
+                  " degrees from the last point's: another branch reached, not this one";
+        }
       }
       if (!c.ok) {
         ds /= 2;
+        if (ds < smallest && !approached && stick_speed > 0.0 && r.points.size() >= 2) {
+          // Slipping cycles whose smallest slip speed falls towards the stick speed approach a
+          // grazing corner (stickingBeside), where the branch bends within a small fraction of
+          // the step: the smallest step is lowered once, by kApproachSteps.
+          const BranchPoint &last = r.points.back(), &previous = r.points[r.points.size() - 2];
+          if (last.min_slip > stick_speed && previous.min_slip > last.min_slip) {
+            approached = true;
+            smallest /= kApproachSteps;
+          }
+        }
         if (ds < smallest) {
           const double slip = r.points.back().min_slip;
           if (stick_speed > 0.0 && std::isfinite(slip) &&
@@ -530,6 +616,17 @@ BranchResult continueOrbitFromText(
                   shooting::messageNumber(g.bracket.outside) + " (" +
                   std::to_string(g.bracket.evaluations) + " orbits solved at fixed parameters)";
               break;
+            }
+          }
+          if (!beside) {
+            if (std::optional<GrazingOrbit> o = stickingBeside(shooter, z, w, d)) {
+              beside = true;
+              push(std::move(o->point), o->c, z, w);
+              z = o->c.z;
+              tangent = o->tangent;
+              d = tangent;
+              ds = std::min(step, max_step);
+              continue;
             }
           }
           r.lost = true;

@@ -8,6 +8,8 @@
 // the stick-slip cycle; it sticks at v_b when its slip speed still falls below the law's stick
 // speed over the last 20 s of 300 (the cycle's multipliers there are at most 0.95: 260
 // periods bring any start onto it). The speed is bisected to 1e-9 m/s.
+// The same grazing point as a corner of the branch from the Hopf point, against the same
+// model and the Hopf speed's closed form (OrbitGrazingCorner, below).
 // And the bracketing itself on made-up sides whose boundary is known.
 #include <gtest/gtest.h>
 
@@ -172,6 +174,117 @@ INSTANTIATE_TEST_SUITE_P(
                                   "m40_c5_from1"},
                       GrazingCase{10.0, 1.8, 0.25, 0.27, 0.2, 0.3, "10 kg, 1.8 N s/m", "m10_c1p8"}),
     [](const ::testing::TestParamInfo<GrazingCase>& info) { return std::string(info.param.id); });
+
+// From the Hopf point of the damped belt (subcritical: steady sliding is stable above it, c =
+// -m g mu'(v_H)), the unstable cycles that never stick grow with v_b up to the speed where the
+// one-dof model stops sticking, and meet the stable sticking cycles there: the branch turns
+// at that corner (a fold, the change of stability and grazing within the sampling bound of
+// the model's speed, and nowhere else) and goes back down the sticking cycles to the range's
+// end, where the last orbit's amplitude is the one-dof model's settled cycle's.
+struct CornerCase {
+  double m, c;      // the box's mass [kg], the wall damper [N s/m]
+  double from, to;  // the continuation's range in v_b
+  double lo, hi;    // the grazing reference's bracket
+  const char* id;
+};
+
+void PrintTo(const CornerCase& k, std::ostream* os) { *os << k.id; }
+
+class OrbitGrazingCorner : public ::testing::TestWithParam<CornerCase> {};
+
+TEST_P(OrbitGrazingCorner, TheHopfPointsUnstableCyclesTurnOntoTheStickingOnesAtGrazing) {
+  const CornerCase& k = GetParam();
+  const auto law = friction::makeFrictionLaw(
+      {"roh_yoo",
+       {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}},
+       {}});
+  // The Hopf speed, where c + m g mu'(v_b) changes sign (mu' by central differences).
+  auto net_damping = [&](double v) {
+    const double h = 1e-6;
+    return k.c + k.m * 9.81 * (law->coefficient(v + h) - law->coefficient(v - h)) / (2 * h);
+  };
+  double h_lo = k.from, h_hi = k.to;
+  ASSERT_LT(net_damping(h_lo) * net_damping(h_hi), 0.0);
+  while (h_hi - h_lo > 1e-12) {
+    const double mid = 0.5 * (h_lo + h_hi);
+    (net_damping(mid) * net_damping(h_lo) > 0.0 ? h_lo : h_hi) = mid;
+  }
+  const double hopf = 0.5 * (h_lo + h_hi);
+  const double grazing = oneDofGrazingSpeed(k.m, k.c, k.lo, k.hi);
+
+  study::BranchSpec spec;
+  spec.parameter = "v_b";
+  spec.from = k.from;
+  spec.to = k.to;
+  spec.from_hopf = true;
+  spec.max_points = 40;
+  spec.orbit.settle = 30.0;
+  char m[64], c[64];
+  std::snprintf(m, sizeof m, "m=%.17g", k.m);
+  std::snprintf(c, sizeof c, "springs[wall_spring].damping=%.17g", k.c);
+  const study::BranchResult r = study::continueOrbit(kBelt, {m, c}, spec);
+  std::printf("%s: Hopf %.9f (closed form %.9f), grazing reference %.9f, %zu points, %.1f s: %s\n",
+              k.id, r.hopf_parameter, hopf, grazing, r.points.size(), r.seconds,
+              r.stop_reason.c_str());
+  EXPECT_NEAR(r.hopf_parameter, hopf, 1e-6);
+  ASSERT_TRUE(r.reached_end) << r.stop_reason;
+
+  // Unstable and slipping up to the corner; stable and sticking past it.
+  const auto first_sticking =
+      std::find_if(r.points.begin(), r.points.end(),
+                   [](const study::BranchPoint& p) { return p.min_slip < 0.01; });
+  ASSERT_NE(first_sticking, r.points.end());
+  for (auto p = r.points.begin(); p != r.points.end(); ++p) {
+    SCOPED_TRACE(p->parameter);
+    if (p >= first_sticking) {
+      EXPECT_LT(p->min_slip, 0.01);
+      EXPECT_TRUE(p->stable);
+    } else if (p->parameter < grazing - kSampledBound) {
+      EXPECT_FALSE(p->stable);
+    }
+  }
+  // The turn's three events, once each, at the model's grazing speed.
+  for (const study::BranchEventKind kind :
+       {study::BranchEventKind::kFold, study::BranchEventKind::kStabilityChange,
+        study::BranchEventKind::kGrazing}) {
+    SCOPED_TRACE(study::branchEventName(kind));
+    EXPECT_EQ(std::count_if(r.events.begin(), r.events.end(),
+                            [&](const study::BranchEvent& e) { return e.kind == kind; }),
+              1);
+  }
+  for (const study::BranchEvent& e : r.events) {
+    std::printf("  %s at %.9f (%+.2e)\n", study::branchEventName(e.kind).c_str(), e.parameter,
+                e.parameter - grazing);
+    EXPECT_NEAR(e.parameter, grazing, kSampledBound) << study::branchEventName(e.kind);
+  }
+
+  // The last orbit, far down the sticking cycles, against the model's cycle there: settled over
+  // 300 s from the break-away point, its peak to peak over the last 20 s.
+  const study::BranchPoint& last = r.points.back();
+  const test::OneDofBelt belt{k.m, 300.0, last.parameter, 9.81, law.get(), k.c};
+  double x = (0.35 * k.m * 9.81 - k.c * last.parameter) / 300.0, v = last.parameter;
+  double x_min = INFINITY, x_max = -INFINITY;
+  belt.run(x, v, 1e-3, 300000, [&](double t, double x_t, double) {
+    if (t > 280.0) {
+      x_min = std::min(x_min, x_t);
+      x_max = std::max(x_max, x_t);
+    }
+  });
+  std::printf("  last at v_b = %.6f: amplitude %.9f (model %.9f)\n", last.parameter,
+              last.amplitude_pp, x_max - x_min);
+  EXPECT_NEAR(last.amplitude_pp, x_max - x_min, 1e-3 * (x_max - x_min));
+}
+
+// The scene's box with a light damper, a box four times as heavy with a heavier one, and a
+// damper that moves both points to a third of the speed (the one the sanitized build runs,
+// tests/release_only.txt).
+INSTANTIATE_TEST_SUITE_P(DampedBelts, OrbitGrazingCorner,
+                         ::testing::Values(CornerCase{10.0, 1.5, 0.5, 2.0, 0.6, 0.9, "m10_c1p5"},
+                                           CornerCase{40.0, 5.0, 1.0, 2.0, 1.0, 1.5, "m40_c5"},
+                                           CornerCase{10.0, 1.8, 0.2, 0.5, 0.2, 0.3, "m10_c1p8"}),
+                         [](const ::testing::TestParamInfo<CornerCase>& info) {
+                           return std::string(info.param.id);
+                         });
 
 }  // namespace
 }  // namespace tribo
