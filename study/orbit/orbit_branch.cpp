@@ -475,6 +475,17 @@ BranchResult continueOrbitFromText(
     return std::nullopt;
   };
 
+  // Where a branch from the sticking side ends at grazing with steady sliding stable there
+  // too, what goes round the corner (stickingBeside comes to it from the slipping side).
+  auto fromHopfHint = [&](const BranchPoint& end) -> std::string {
+    if (spec.from_hopf || !(end.steady_growth < 0.0)) return "";
+    return "; steady sliding is stable there too (its leading growth rate " +
+           shooting::messageNumber(end.steady_growth) +
+           " 1/s): an unstable cycle separates the two, and where it is born at a Hopf point "
+           "of steady sliding in the range, --from-hopf follows it round this corner onto the "
+           "sticking cycles";
+  };
+
   // Follows a branch from its first point (in r.points, at z with `tangent`) on `shooter`,
   // in the norm of w: towards `to` (or, `either_way`, until p leaves [from, to]); with
   // `switch_at`, until the first such bifurcation between the last two points.
@@ -615,6 +626,7 @@ BranchResult continueOrbitFromText(
                   shooting::messageNumber(stick_speed) + " m/s); no orbit was found at " +
                   shooting::messageNumber(g.bracket.outside) + " (" +
                   std::to_string(g.bracket.evaluations) + " orbits solved at fixed parameters)";
+              r.stop_reason += fromHopfHint(end);
               break;
             }
           }
@@ -639,7 +651,8 @@ BranchResult continueOrbitFromText(
             r.stop_reason += "; it had crossed grazing at " + spec.parameter + " ~ " +
                              shooting::messageNumber(crossed_at) +
                              " (orbits at fixed parameters on either side) and followed the "
-                             "orbits past it to here";
+                             "orbits past it to here" +
+                             fromHopfHint(last);
           } else if (stick_speed > 0.0 &&
                      std::abs(last.min_slip - stick_speed) <= kNearGrazing * stick_speed) {
             r.stop_reason += "; the last orbit's smallest slip speed (" +

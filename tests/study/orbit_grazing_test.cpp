@@ -153,6 +153,8 @@ TEST_P(OrbitGrazing, TheStableStickSlipEndsWhereTheOneDofModelStopsSticking) {
     EXPECT_EQ(e->before, r.points.size() - 1);
     EXPECT_TRUE(r.lost);
     EXPECT_NE(r.stop_reason.find("stop sticking (grazing)"), std::string::npos) << r.stop_reason;
+    // Steady sliding is stable past the Hopf point: the reason says how to go round.
+    EXPECT_NE(r.stop_reason.find("--from-hopf"), std::string::npos) << r.stop_reason;
   } else {  // passed: the orbit after it slips, just
     const study::BranchPoint& after = r.points[e->after];
     EXPECT_TRUE(after.fixed_parameter);
