@@ -55,6 +55,13 @@ constexpr double kGrazingRestart = 100.0;
 // cosine) was reached by jumping to another branch at the same parameter (a step too long for
 // where the branch bends, as near a grazing fold): the step is halved and tried again.
 constexpr double kMaxTurnCos = 0.7;  // 45.6 degrees
+// The sticking cycles beside slipping ones are looked for where the last orbit slips within
+// this fraction of the stick speed (the corrector can fail that far from the kink: its
+// curvature shrinks Newton's reach as the orbit's slowest slip nears it).
+constexpr double kBesideSlip = 0.25;
+// The settling runs for the sticking cycle beside start this fraction of the last orbit's
+// amplitude outside it.
+constexpr double kBesidePush = 0.1;
 // How much lower the smallest step goes where slipping cycles approach grazing.
 constexpr double kApproachSteps = 64.0;
 // A stable sticking orbit past which none is found ends the branch at grazing when its
@@ -418,7 +425,7 @@ BranchResult continueOrbitFromText(
 
   // The sticking cycles beside slipping ones at grazing, where the corrector and the orbits at
   // fixed parameters (passGrazing) found none past the last orbit, which slips within
-  // kNearGrazing of the stick speed, as the one before it does (a branch that has just come
+  // kBesideSlip of the stick speed, as the one before it does (a branch that has just come
   // across from the sticking cycles does not go back to them). The law's kink gives Newton's
   // iteration no derivative to pass on where two shapes of branch meet: a corner, the unstable
   // slipping cycles of a subcritical Hopf point meeting the stable sticking ones at a fold at
@@ -437,7 +444,7 @@ BranchResult continueOrbitFromText(
       return std::nullopt;
     const BranchPoint& last = r.points.back();
     const BranchPoint& previous = r.points[r.points.size() - 2];
-    if (!(last.min_slip >= stick_speed) || last.min_slip > (1.0 + kNearGrazing) * stick_speed ||
+    if (!(last.min_slip >= stick_speed) || last.min_slip > (1.0 + kBesideSlip) * stick_speed ||
         !(previous.min_slip >= stick_speed))
       return std::nullopt;  // not slipping near grazing, or come from the sticking cycles
     const double p_last = z[n + 1];
@@ -447,17 +454,24 @@ BranchResult continueOrbitFromText(
     const double sign = d[n + 1] > 0.0 ? 1.0 : -1.0;
     Eigen::VectorXd p_row = Eigen::VectorXd::Zero(n + 2);
     p_row[n + 1] = 1.0;
+    // The settling runs start outside the last orbit: its start (the observed coordinate's
+    // peak) pushed out by kBesidePush of its amplitude, beyond the unstable cycle (whose inside
+    // leads to steady sliding) and the sticking cycle beside it.
+    Eigen::VectorXd y_out = z.head(n);
+    y_out[amplitude_index] += kBesidePush * last.amplitude_pp;
+    const State pushed = coords.fromVector(y_out);
+    const double settle_beside =
+        spec.orbit.settle > 0.0 ? spec.orbit.settle : first.model->options.duration;
     for (const double times : {1.0, 4.0, 16.0}) {
       for (const double towards : {-sign, sign}) {
         const double p = p_last + towards * times * back;
         if (p < low || p > high) continue;
         try {
           const io::Scene at = sceneAt(p);
-          const OrbitResult settled = findPeriodicOrbit(at, spec.orbit);
-          const State start =
-              OrbitCoordinates(*at.model, settled.reference).fromVector(settled.start);
+          const shooting::Guess settled =
+              shooting::settledGuess(at.model, body, axis, settle_beside, &pushed);
           Eigen::VectorXd guess(n + 2);
-          guess << coords.toVector(start), settled.period, p;
+          guess << coords.toVector(settled.state), settled.period, p;
           GrazingOrbit o;
           o.c = newtonWithRow(shooter, guess, p_row, p, INFINITY, w, spec.max_corrector,
                               spec.orbit.tolerance);
@@ -563,6 +577,27 @@ BranchResult continueOrbitFromText(
                   shooting::messageNumber(std::acos(std::clamp(turn, -1.0, 1.0)) * 180.0 /
                                           std::numbers::pi) +
                   " degrees from the last point's: another branch reached, not this one";
+        }
+        // Slipping cycles and sticking ones of the other stability meet only where the
+        // parameter turns (a fold at a grazing corner, stickingBeside): a step across grazing
+        // that changes the stability with neither the parameter nor dp/ds turning has jumped
+        // from one to the other (the tangent need not turn much: 38 degrees on the damped
+        // belt continued in the mass).
+        const BranchPoint& last = r.points.back();
+        const bool across_grazing = stick_speed > 0.0 && std::isfinite(last.min_slip) &&
+                                    std::isfinite(pt.min_slip) &&
+                                    (last.min_slip < stick_speed) != (pt.min_slip < stick_speed);
+        const bool flips = !last.undecided && !pt.undecided && last.stable != pt.stable;
+        const bool no_turn =
+            (pt.parameter - last.parameter) * d[n + 1] > 0.0 && pt.dp_ds * last.dp_ds > 0.0;
+        if (c.ok && across_grazing && flips && no_turn) {
+          c.ok = false;
+          c.why = "the orbit found at " + spec.parameter + " = " +
+                  shooting::messageNumber(pt.parameter) + " is " +
+                  (pt.stable ? "stable" : "unstable") + " and " +
+                  (pt.min_slip < stick_speed ? "sticks" : "slips") + " where the last " +
+                  (last.min_slip < stick_speed ? "sticks" : "slips") +
+                  ", with no turn of the parameter between: another branch reached";
         }
       }
       if (!c.ok) {

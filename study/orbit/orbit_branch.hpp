@@ -22,14 +22,15 @@
 // iterations (or in 3 that moved the prediction by at most 0.02 ds: a nearly straight stretch),
 // halves after one that failed (no convergence, a failed step, a correction longer than ds, an
 // orbit collapsed onto an equilibrium: amplitude below 1e-6 of the first point's, which closes on
-// itself for any T, or a tangent turned by more than 45.6 degrees from the last point's: an
-// orbit of another branch at the same parameter, reached by a step too long for the bend);
-// the branch stops below the smallest step, naming why. Where the law has a kink at the stick
+// itself for any T, a tangent turned by more than 45.6 degrees from the last point's, or a
+// step across grazing that changes the stability with neither p nor dp/ds turning: an orbit
+// of another branch at the same parameter, reached by a step too long for the bend); the
+// branch stops below the smallest step, naming why. Where the law has a kink at the stick
 // speed, grazing is passed by orbits at fixed parameters (study/orbit/branch_grazing.hpp), the
 // smallest step is lowered once (by 64) where slipping cycles approach the stick speed, and
 // where none of that passes, the sticking cycle beside the last slipping one is the attractor
-// a settling run finds a little back or ahead in p, near the last orbit (a grazing corner:
-// docs/orbits.md, "Grazing corners").
+// a settling run finds (started outside the last orbit) a little back or ahead in p, near
+// the last orbit (a grazing corner: docs/orbits.md, "Grazing corners").
 // The arclength's norm (BranchSpec::norm): `si`, the unknowns in their own SI units
 // (|dz|^2 = |dy0|^2 + dT^2 + dp^2, a parameter in N/m weighs a million times one in MN/m), or
 // `scaled`, each unknown over its own scale (|dz|^2 = sum (dz_i / w_i)^2): a state entry over

@@ -91,8 +91,10 @@ Eigen::VectorXd Flow::operator()(const Eigen::VectorXd& y, double T,
   return coords_.toVector(advance(model_, coords_.fromVector(y), T, sample, contacts));
 }
 
-Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds) {
+Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds,
+                   const State* start) {
   Simulator sim(model);
+  if (start != nullptr) sim.setState(*start);
   const auto b = static_cast<std::size_t>(body);
   // Per maximum: when (the velocity's zero crossing), its peak, and the coordinate's extremes
   // over the interval that ended there.

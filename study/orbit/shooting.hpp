@@ -77,7 +77,8 @@ class Flow {
 // crossing) and period each differ from the cycle's before by at most kSettledTolerance of the
 // cycle's amplitude and period (a stick-slip cycle after three or four cycles; a growing or
 // decaying one never). A run that ends unsettled takes the smallest m whose peak repeats to
-// 1e-3 of the amplitude, else 1.
+// 1e-3 of the amplitude, else 1. The run starts at the model's initial state, or at `start`
+// where given (a state of the model's bodies and contacts).
 inline constexpr int kSettledCycles = 3;
 inline constexpr double kSettledTolerance = 1e-6;
 inline constexpr std::size_t kMostPeaksPerCycle = 4;
@@ -87,7 +88,8 @@ struct Guess {
   int peaks_per_cycle = 1;  // m
   double seconds = 0;       // how long the run went on
 };
-Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds);
+Guess settledGuess(const std::shared_ptr<const Model>& model, int body, int axis, double seconds,
+                   const State* start = nullptr);
 
 // The floor of each unknown's finite-difference scale: 1 cm, 1 cm/s and 10 mrad for bodies;
 // the largest friction state (of y) for the `friction_count` last entries.
