@@ -431,12 +431,13 @@ BranchResult continueOrbitFromText(
   // slipping cycles of a subcritical Hopf point meeting the stable sticking ones at a fold at
   // grazing (the largest multiplier jumps through 1; the sticking cycles lie back in p), or a
   // stable slipping cycle just past the corner's smooth fold, the sticking cycles ahead. The
-  // sticking cycle is the attractor there: the orbit a settling run finds (as the branch's
-  // first), back in p by the last step's change, then ahead by as much, then both 4 and 16
-  // times as far, each kept only if it is stable and sticks (the other cycle, not the last
-  // one again) and lies within twice the last step's arclength (times how far it is in p) of
-  // the last orbit: the two branches meet there, it is not another attractor farther off. The
-  // branch goes on from it, away from the last orbit in p.
+  // sticking cycle is the attractor there: the orbit Newton's iteration at a fixed p finds
+  // from a settling run started outside the last orbit, at p back by the last step's change,
+  // then ahead by as much, then both 4 and 16 times as far, each kept only if it is stable
+  // and sticks (the other cycle, not the last one again) and lies within twice the last
+  // step's arclength (times how far it is in p) of the last orbit: the two branches meet
+  // there, it is not another attractor farther off. The branch goes on from it, away from
+  // the last orbit in p.
   auto stickingBeside = [&](const BranchShooter& shooter, const Eigen::VectorXd& z,
                             const Eigen::VectorXd& w,
                             const Eigen::VectorXd& d) -> std::optional<GrazingOrbit> {
