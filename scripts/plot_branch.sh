@@ -12,6 +12,11 @@
 #     --set 'springs[wall_spring].damping=10' --settle 30 --out out/branch_stribeck \
 #     --continue v_b=0.15:0.5 --step 0.02 --max-points 30
 #   scripts/plot_branch.sh out/branch_stribeck docs/figures/branch_stribeck.png
+# and docs/figures/branch_grazing_corner.png (the paper's law: a corner at grazing) from
+#   build/apps/tribo orbit scenes/belt.yaml --set 'springs[wall_spring].damping=1.5' \
+#     --settle 30 --out out/branch_corner --from-hopf --continue v_b=0.5:2 --max-step 0.05 \
+#     --max-points 60
+#   scripts/plot_branch.sh out/branch_corner docs/figures/branch_grazing_corner.png
 set -euo pipefail
 dir=${1:?usage: plot_branch.sh BRANCH_DIR [OUT.png]}
 out=${2:-$dir/branch.png}
