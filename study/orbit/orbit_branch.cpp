@@ -425,8 +425,9 @@ BranchResult continueOrbitFromText(
 
   // The sticking cycles beside slipping ones at grazing, where the corrector and the orbits at
   // fixed parameters (passGrazing) found none past the last orbit, which slips within
-  // kBesideSlip of the stick speed, as the one before it does (a branch that has just come
-  // across from the sticking cycles does not go back to them). The law's kink gives Newton's
+  // kBesideSlip of the stick speed, on a branch none of whose orbits sticks (one that came
+  // from the sticking cycles, across grazing and round the slipping cycles' smooth fold, would
+  // find the same sticking cycles again and retrace itself). The law's kink gives Newton's
   // iteration no derivative to pass on where two shapes of branch meet: a corner, the unstable
   // slipping cycles of a subcritical Hopf point meeting the stable sticking ones at a fold at
   // grazing (the largest multiplier jumps through 1; the sticking cycles lie back in p), or a
@@ -445,9 +446,11 @@ BranchResult continueOrbitFromText(
       return std::nullopt;
     const BranchPoint& last = r.points.back();
     const BranchPoint& previous = r.points[r.points.size() - 2];
-    if (!(last.min_slip >= stick_speed) || last.min_slip > (1.0 + kBesideSlip) * stick_speed ||
-        !(previous.min_slip >= stick_speed))
-      return std::nullopt;  // not slipping near grazing, or come from the sticking cycles
+    if (!(last.min_slip >= stick_speed) || last.min_slip > (1.0 + kBesideSlip) * stick_speed)
+      return std::nullopt;  // not slipping near grazing
+    if (std::any_of(r.points.begin(), r.points.end(),
+                    [&](const BranchPoint& q) { return !(q.min_slip >= stick_speed); }))
+      return std::nullopt;  // come from the sticking cycles: those beside are the same ones
     const double p_last = z[n + 1];
     const double back = std::abs(p_last - previous.parameter);
     const double last_arc = last.arclength - previous.arclength;
