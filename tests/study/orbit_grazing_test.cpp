@@ -196,7 +196,7 @@ INSTANTIATE_TEST_SUITE_P(
 // check of a jump across grazing the branch jumped from an unstable cycle at 9.99 kg to a
 // sticking one at 9.96 kg and reported both events there).
 struct CornerCase {
-  double m, c;      // the box's mass [kg] (at the Hopf point, continued in m), the damper
+  double m, c;      // the box's mass [kg] (unused when continued in m), the damper [N s/m]
   double v_b;       // the belt speed, continued in m; 0: continued in v_b
   double from, to;  // the continuation's range
   double lo, hi;    // the grazing reference's bracket (lo sticks)
