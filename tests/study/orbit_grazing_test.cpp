@@ -16,10 +16,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
+#include "core/simulator.hpp"
 #include "friction/friction_law.hpp"
+#include "io/scene_loader.hpp"
 #include "study/orbit/branch_grazing.hpp"
 #include "study/orbit/orbit_branch.hpp"
 #include "support/one_dof_belt.hpp"
@@ -314,6 +318,70 @@ INSTANTIATE_TEST_SUITE_P(
                       CornerCase{10.0, 1.5, 0.72, 5.0, 20.0, 10.5, 9.0, 2e-3,
                                  "vb0p72_c1p5_in_mass"}),
     [](const ::testing::TestParamInfo<CornerCase>& info) { return std::string(info.param.id); });
+
+// Between the Hopf point and the corner, stick-slip and steady sliding are both stable: a run
+// started at rest (the scene's start, the spring unstretched: outside the unstable cycle
+// there) lands on stick-slip, and one started on steady sliding (the box where the spring
+// balances mu(v_b) m g) stays there, at the same belt speed. The stick-slip against the
+// one-dof model's cycle at that speed (peak to peak, 1e-3; settled from the break-away
+// point), steady sliding against no oscillation at all. 10 kg with 1.5 N s/m at 0.71 m/s
+// (Hopf point 0.70567, corner 0.73204; from rest the motion spirals out to the cycle over
+// about 300 s), and 40 kg with 5 N s/m at 1.16 m/s (1.15533 and 1.23044).
+TEST(OrbitGrazingHysteresis, FromRestItSticksAndSlipsFromSteadySlidingItSlidesOnAtTheSameSpeed) {
+  struct Case {
+    double m, c, v_b, settle;
+  };
+  for (const Case k : {Case{10.0, 1.5, 0.71, 350.0}, Case{40.0, 5.0, 1.16, 120.0}}) {
+    SCOPED_TRACE(k.m);
+    const double spring = 300.0, g = 9.81;
+    const auto law = friction::makeFrictionLaw(
+        {"roh_yoo",
+         {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}},
+         {}});
+    const test::OneDofBelt belt{k.m, spring, k.v_b, g, law.get(), k.c};
+    double x = (0.35 * k.m * g - k.c * k.v_b) / spring, v = k.v_b;
+    double lo = INFINITY, hi = -INFINITY;
+    belt.run(x, v, 1e-3, 300000, [&](double t, double x_t, double) {
+      if (t > 280.0) lo = std::min(lo, x_t), hi = std::max(hi, x_t);
+    });
+    const double cycle = hi - lo;
+    // The engine's box from x0 for `seconds`: its peak to peak over the last 10 s.
+    auto engine_pp = [&](double x0, double seconds) -> double {
+      char m[64], c[64], vb[64], x0s[64];
+      std::snprintf(m, sizeof m, "m=%.17g", k.m);
+      std::snprintf(c, sizeof c, "springs[wall_spring].damping=%.17g", k.c);
+      std::snprintf(vb, sizeof vb, "v_b=%.17g", k.v_b);
+      std::snprintf(x0s, sizeof x0s, "x0=%.17g", x0);
+      const io::Scene scene = io::loadScene(kBelt, {m, c, vb, x0s});
+      std::size_t box = 0;
+      while (scene.model->bodies[box].name != "box") ++box;
+      Simulator sim(scene.model);
+      const double h = scene.model->options.time_step;
+      const long steps = std::lround(seconds / h), tail = std::lround(10.0 / h);
+      double x_lo = INFINITY, x_hi = -INFINITY;
+      for (long i = 0; i < steps; ++i) {
+        const StepStatus status = sim.step();
+        if (!status.ok) {
+          ADD_FAILURE() << status.message;
+          return NAN;
+        }
+        if (i >= steps - tail) {
+          x_lo = std::min(x_lo, sim.state().bodies[box].position.x());
+          x_hi = std::max(x_hi, sim.state().bodies[box].position.x());
+        }
+      }
+      return x_hi - x_lo;
+    };
+    const double from_rest = engine_pp(0.0, k.settle);
+    const double from_sliding = engine_pp(law->coefficient(k.v_b) * k.m * g / spring, 60.0);
+    std::printf(
+        "%g kg, %g N s/m at %g m/s: from rest %.9f m peak to peak (one-dof model's "
+        "cycle %.9f), from steady sliding %.3g m\n",
+        k.m, k.c, k.v_b, from_rest, cycle, from_sliding);
+    EXPECT_NEAR(from_rest, cycle, 1e-3 * cycle);
+    EXPECT_LT(from_sliding, 1e-9 * cycle);
+  }
+}
 
 }  // namespace
 }  // namespace tribo
