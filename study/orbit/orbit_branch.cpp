@@ -516,7 +516,6 @@ BranchResult continueOrbitFromText(
     double smallest = min_step;  // lowered past a grazing point
     int grazing_probes = 0;      // the last grazing pass's
     double crossed_at = NAN;     // the grazing point it crossed, if one
-    bool beside = false;         // onto the sticking cycles beside the last (once)
     bool approached = false;     // the smallest step lowered towards a grazing corner
     while (true) {
       if (spec.stop && spec.stop->load()) {
@@ -669,16 +668,14 @@ BranchResult continueOrbitFromText(
               break;
             }
           }
-          if (!beside) {
-            if (std::optional<GrazingOrbit> o = stickingBeside(shooter, z, w, d)) {
-              beside = true;
-              push(std::move(o->point), o->c, z, w);
-              z = o->c.z;
-              tangent = o->tangent;
-              d = tangent;
-              ds = std::min(step, max_step);
-              continue;
-            }
+          // (Once: the sticking orbit it pushes keeps stickingBeside from looking again.)
+          if (std::optional<GrazingOrbit> o = stickingBeside(shooter, z, w, d)) {
+            push(std::move(o->point), o->c, z, w);
+            z = o->c.z;
+            tangent = o->tangent;
+            d = tangent;
+            ds = std::min(step, max_step);
+            continue;
           }
           r.lost = true;
           r.stop_reason = "the branch was lost after " + spec.parameter + " = " +

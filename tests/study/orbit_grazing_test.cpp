@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -80,12 +81,29 @@ TEST(BracketGrazing, ItSearchesDownwardsAndStopsAtItsBudget) {
             0);
 }
 
-// Whether the damped one-degree-of-freedom model sticks at belt speed v_b (above).
-bool oneDofSticks(double m, double c, double v_b) {
-  const auto law = friction::makeFrictionLaw(
+// The scene's law, roh_yoo with its parameters in scenes/belt.yaml.
+std::unique_ptr<const friction::FrictionLaw> beltLaw() {
+  return friction::makeFrictionLaw(
       {"roh_yoo",
        {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}},
        {}});
+}
+
+// The damped one-degree-of-freedom model's stick-slip cycle at (m, c, v_b), settled over
+// 300 s from the break-away point: the peak to peak of x over the last 20 s.
+double oneDofCyclePp(const friction::FrictionLaw& law, double m, double c, double v_b) {
+  const double k = 300.0, g = 9.81;
+  const test::OneDofBelt belt{m, k, v_b, g, &law, c};
+  double x = (0.35 * m * g - c * v_b) / k, v = v_b, lo = INFINITY, hi = -INFINITY;
+  belt.run(x, v, 1e-3, 300000, [&](double t, double x_t, double) {
+    if (t > 280.0) lo = std::min(lo, x_t), hi = std::max(hi, x_t);
+  });
+  return hi - lo;
+}
+
+// Whether the damped one-degree-of-freedom model sticks at belt speed v_b (above).
+bool oneDofSticks(double m, double c, double v_b) {
+  const auto law = beltLaw();
   const double k = 300.0, g = 9.81, h = 1e-3, v_s = 0.01;
   const test::OneDofBelt belt{m, k, v_b, g, law.get(), c};
   double x = (0.35 * m * g - c * v_b) / k, v = v_b, slowest = INFINITY;
@@ -215,10 +233,7 @@ class OrbitGrazingCorner : public ::testing::TestWithParam<CornerCase> {};
 TEST_P(OrbitGrazingCorner, TheHopfPointsUnstableCyclesTurnOntoTheStickingOnesAtGrazing) {
   const CornerCase& k = GetParam();
   const bool in_mass = k.v_b > 0.0;
-  const auto law = friction::makeFrictionLaw(
-      {"roh_yoo",
-       {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}},
-       {}});
+  const auto law = beltLaw();
   auto slope = [&](double v) {  // mu' by central differences
     const double h = 1e-6;
     return (law->coefficient(v + h) - law->coefficient(v - h)) / (2 * h);
@@ -292,19 +307,11 @@ TEST_P(OrbitGrazingCorner, TheHopfPointsUnstableCyclesTurnOntoTheStickingOnesAtG
   // The last orbit, far along the sticking cycles, against the model's cycle there: settled
   // over 300 s from the break-away point, its peak to peak over the last 20 s.
   const study::BranchPoint& last = r.points.back();
-  const double m_last = in_mass ? last.parameter : k.m, v_last = in_mass ? k.v_b : last.parameter;
-  const test::OneDofBelt belt{m_last, 300.0, v_last, 9.81, law.get(), k.c};
-  double x = (0.35 * m_last * 9.81 - k.c * v_last) / 300.0, x_dot = v_last;
-  double x_min = INFINITY, x_max = -INFINITY;
-  belt.run(x, x_dot, 1e-3, 300000, [&](double t, double x_t, double) {
-    if (t > 280.0) {
-      x_min = std::min(x_min, x_t);
-      x_max = std::max(x_max, x_t);
-    }
-  });
+  const double model = in_mass ? oneDofCyclePp(*law, last.parameter, k.c, k.v_b)
+                               : oneDofCyclePp(*law, k.m, k.c, last.parameter);
   std::printf("  last at %s = %.6f: amplitude %.9f (model %.9f)\n", spec.parameter.c_str(),
-              last.parameter, last.amplitude_pp, x_max - x_min);
-  EXPECT_NEAR(last.amplitude_pp, x_max - x_min, 1e-3 * (x_max - x_min));
+              last.parameter, last.amplitude_pp, model);
+  EXPECT_NEAR(last.amplitude_pp, model, 1e-3 * model);
 }
 
 // The scene's box with a light damper, a box four times as heavy with a heavier one, a damper
@@ -334,17 +341,8 @@ TEST(OrbitGrazingHysteresis, FromRestItSticksAndSlipsFromSteadySlidingItSlidesOn
   for (const Case k : {Case{10.0, 1.5, 0.71, 350.0}, Case{40.0, 5.0, 1.16, 120.0}}) {
     SCOPED_TRACE(k.m);
     const double spring = 300.0, g = 9.81;
-    const auto law = friction::makeFrictionLaw(
-        {"roh_yoo",
-         {{"mu_s", 0.35}, {"mu_k", 0.3}, {"v_s", 0.01}, {"a", 1.5}, {"beta", 1.0 / 3.0}},
-         {}});
-    const test::OneDofBelt belt{k.m, spring, k.v_b, g, law.get(), k.c};
-    double x = (0.35 * k.m * g - k.c * k.v_b) / spring, v = k.v_b;
-    double lo = INFINITY, hi = -INFINITY;
-    belt.run(x, v, 1e-3, 300000, [&](double t, double x_t, double) {
-      if (t > 280.0) lo = std::min(lo, x_t), hi = std::max(hi, x_t);
-    });
-    const double cycle = hi - lo;
+    const auto law = beltLaw();
+    const double cycle = oneDofCyclePp(*law, k.m, k.c, k.v_b);
     // The engine's box from x0 for `seconds`: its peak to peak over the last 10 s.
     auto engine_pp = [&](double x0, double seconds) -> double {
       char m[64], c[64], vb[64], x0s[64];
