@@ -12,7 +12,9 @@
 //   solver: the multiplier system J M^-1 J^T is factorized dense (Cholesky) or sparse
 //     (block-sparse Cholesky in an approximate-minimum-degree order, core/block_cholesky.hpp);
 //     kAuto picks sparse from `sparse_threshold` equations on (the crossover measured by
-//     bench/core/chain_bench.cpp).
+//     bench/core/chain_bench.cpp), and solves in closed form when every row belongs to a
+//     joint holding one body to the world with its rotations locked
+//     (core/locked_rotation_solve.hpp).
 //   drift: the largest |Phi| at a step's end (m for a distance, rad or - for an angle or a
 //     perpendicularity) above `drift_warning` is a warning after the run naming the joint,
 //     above `drift_stop` a stop naming the joint's child body (quantity "constraint_drift"):

@@ -34,6 +34,8 @@ ConstraintSolver::ConstraintSolver(const Model& model)
   rhs_.setZero(m);
   lambda_.setZero(m);
   delta_lambda_.setZero(m);
+  if (model.options.constraints.solver == ConstraintSolverKind::kAuto)
+    locked_ = LockedRotationSolve::plan(model, rows_);
 }
 
 void ConstraintSolver::solve(const State& state, Workspace& ws) {
@@ -49,7 +51,6 @@ void ConstraintSolver::solve(const State& state, Workspace& ws) {
   evaluateRows(rows_, groups_, MotionView(state, ws.rotation), state.time, values_);
   for (int r = 0; r < m; ++r) {
     const RowValue& v = values_[r];
-    jacobian_.setRow(r, v);
     rhs_(r) = -v.bias - 2.0 * alpha * v.phi_dot - beta * beta * v.phi;
     if (std::abs(v.phi) > ws.max_constraint_error) {
       ws.max_constraint_error = std::abs(v.phi);
@@ -57,6 +58,14 @@ void ConstraintSolver::solve(const State& state, Workspace& ws) {
     }
     ws.max_constraint_rate_error = std::max(ws.max_constraint_rate_error, std::abs(v.phi_dot));
   }
+  // Bodies each held to the world with their rotations locked: in closed form.
+  closed_form_ = false;
+  if (locked_) {
+    lambda_.setZero();
+    closed_form_ = locked_->project(values_, rhs_, ws, lambda_);
+    if (closed_form_) return;
+  }
+  for (int r = 0; r < m; ++r) jacobian_.setRow(r, values_[r]);
   jacobian_.computeMassWeighted(inv_mass_, ws.inv_inertia_world);
   jacobian_.addJx(ws.linear_acceleration, ws.angular_acceleration, -1.0, rhs_);
 
@@ -80,6 +89,10 @@ void ConstraintSolver::addForcesAndResolve(const std::vector<Wrench>& delta, Wor
   }
   const int m = equationCount();
   if (m == 0) return;
+  if (closed_form_) {  // the same projection: J a = b again for the changed accelerations
+    locked_->project(values_, rhs_, ws, lambda_);
+    return;
+  }
   delta_lambda_.setZero();
   jacobian_.addJMinvF(delta, -1.0, delta_lambda_);
   matrix_.solveInPlace(delta_lambda_);
@@ -91,8 +104,10 @@ void ConstraintSolver::addForcesAndResolve(const std::vector<Wrench>& delta, Wor
 Vec3 ConstraintSolver::reactionForce(int joint) const {
   Vec3 f = Vec3::Zero();
   const int child = model_.joints[joint].child.value;
-  for (int r : joint_rows_[joint])
-    f += lambda_(r) * jacobian_.block(r, child).head<3>().transpose();
+  for (int r : joint_rows_[joint]) {
+    const Row6 block = closed_form_ ? values_[r].j[0] : jacobian_.block(r, child);
+    f += lambda_(r) * block.head<3>().transpose();
+  }
   return f;
 }
 

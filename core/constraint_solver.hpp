@@ -8,7 +8,9 @@
 // and f'' are the prescribed rates of drive rows (zero for the others). Rows come from
 // core/constraint_rows.hpp (joint equations, drives, couplings), J is stored by body
 // (core/constraint_jacobian.hpp) and J M^-1 J^T is factorized dense or sparse by size
-// (core/multiplier_matrix.hpp; ConstraintOptions::solver). Kinematic bodies and the world
+// (core/multiplier_matrix.hpp; ConstraintOptions::solver), or, under kAuto when every row
+// belongs to a joint holding one body to the world with its rotations locked, solved in
+// closed form (core/locked_rotation_solve.hpp). Kinematic bodies and the world
 // enter through their known motion only.
 // Not here: projection (core/constraint_projection.hpp), redundancy detection
 // (core/constraint_rank.hpp), joint forces (core/joint_forces.hpp).
@@ -19,6 +21,7 @@
 
 #include "core/constraint_jacobian.hpp"
 #include "core/constraint_rows.hpp"
+#include "core/locked_rotation_solve.hpp"
 #include "core/model.hpp"
 #include "core/multiplier_matrix.hpp"
 #include "core/state.hpp"
@@ -35,6 +38,8 @@ class ConstraintSolver {
 
   int equationCount() const { return static_cast<int>(rows_.size()); }
   bool isSparse() const { return matrix_.isSparse(); }
+  // Whether the last solve() was in closed form (core/locked_rotation_solve.hpp).
+  bool lastSolveClosedForm() const { return closed_form_; }
   const std::vector<ConstraintRow>& rows() const { return rows_; }
 
   // Given unconstrained accelerations and the kinematics stage in ws, adds
@@ -48,6 +53,8 @@ class ConstraintSolver {
   // factorization (one back-substitution).
   void addForcesAndResolve(const std::vector<Wrench>& delta, Workspace& ws);
 
+  // After solve(): the multipliers, one per row in rows()' order.
+  const Eigen::VectorXd& multipliers() const { return lambda_; }
   // After solve(): the force the joint's own equations exert on its child [N, world].
   Vec3 reactionForce(int joint) const;
 
@@ -63,6 +70,8 @@ class ConstraintSolver {
   Eigen::VectorXd rhs_;
   Eigen::VectorXd lambda_;
   Eigen::VectorXd delta_lambda_;
+  std::optional<LockedRotationSolve> locked_;  // under kAuto, when every row allows it
+  bool closed_form_ = false;
 };
 
 }  // namespace tribo

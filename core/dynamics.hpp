@@ -49,6 +49,8 @@ class Dynamics {
   // next call.
   const Workspace& evaluate(const State& state);
   const Workspace& workspace() const { return ws_; }
+  // The joint solve of the last evaluation (its multipliers, the path it took).
+  const ConstraintSolver& constraintSolver() const { return solver_; }
   // Added to load i's force and torque (in its frame) from now on: the input matrix's
   // perturbation (study/modes/input_matrix.hpp); zero offsets restore the load.
   void setLoadOffset(std::size_t load, const Vec3& force, const Vec3& torque) {
