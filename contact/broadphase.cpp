@@ -1,7 +1,5 @@
 #include "contact/broadphase.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -188,19 +186,17 @@ void GridBroadphase::pairsFromBuckets(std::span<const Aabb> boxes, std::span<con
   if (team <= 1) {
     pairsInBuckets(0, buckets, boxes, members, pairs);
   } else {
-    if (lanes_.size() < static_cast<std::size_t>(team))
-      lanes_.resize(static_cast<std::size_t>(team));
-#pragma omp parallel num_threads(team)
-    {
-      const auto t = static_cast<std::size_t>(omp_get_thread_num());
-      const auto n = static_cast<std::size_t>(omp_get_num_threads());
-      if (t == 0 && n > 1) countSplitLoop();
-      lanes_[t].clear();
-      pairsInBuckets(buckets * t / n, buckets * (t + 1) / n, boxes, members, lanes_[t]);
-    }
-    for (int t = 0; t < team; ++t)
-      pairs.insert(pairs.end(), lanes_[static_cast<std::size_t>(t)].begin(),
-                   lanes_[static_cast<std::size_t>(t)].end());
+    // Contiguous bucket ranges, one lane each, claimed by the threads (contact/work_team.hpp);
+    // the lanes appended in bucket order whoever ran them.
+    const std::size_t chunks = std::min(buckets, static_cast<std::size_t>(team) * kChunksPerThread);
+    if (lanes_.size() < chunks) lanes_.resize(chunks);
+    auto run = [&](std::size_t c) {
+      lanes_[c].clear();
+      pairsInBuckets(buckets * c / chunks, buckets * (c + 1) / chunks, boxes, members, lanes_[c]);
+    };
+    runChunks(chunks, team, run);
+    for (std::size_t c = 0; c < chunks; ++c)
+      pairs.insert(pairs.end(), lanes_[c].begin(), lanes_[c].end());
   }
 
   // Boxes kept aside: against every other member (aside with aside once).

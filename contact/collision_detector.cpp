@@ -211,8 +211,8 @@ struct CollisionDetector::Impl {
   void buildSkinList();
 
   // The narrowphase of every pair in `list`, appended to `out` in list order. Split across
-  // `threads` when the list is long enough: thread t takes the t-th contiguous run of the
-  // list into its lane, then each lane is copied to its place in `out`.
+  // `threads` when the list is long enough: the list cut into contiguous runs, each into its
+  // own lane by whichever thread claims it, then the lanes appended in order.
   void narrowphaseAll(std::span<const Candidate> list, std::span<const Eigen::Isometry3d> poses,
                       std::vector<ContactPoint>& out) {
     constexpr std::size_t kPairsPerThread = 128;
@@ -222,30 +222,24 @@ struct CollisionDetector::Impl {
       if (timing) fcl_seconds += std::exchange(lanes[0].fcl_seconds, 0.0);
       return;
     }
-    if (lanes.size() < static_cast<std::size_t>(team)) lanes.resize(static_cast<std::size_t>(team));
-    if (watchdog) watchdog->reserveLanes(team);
-    const std::size_t base = out.size();
-#pragma omp parallel num_threads(team)
-    {
-      const auto t = static_cast<std::size_t>(omp_get_thread_num());
-      const auto n = static_cast<std::size_t>(omp_get_num_threads());
-      if (t == 0 && n > 1) countSplitLoop();
-      Lane& lane = lanes[t];
+    // Contiguous runs of the list, one lane each, claimed by the threads (contact/work_team.hpp);
+    // the lanes are copied to `out` in list order whoever ran them.
+    const std::size_t chunks =
+        std::min(list.size(), static_cast<std::size_t>(team) * kChunksPerThread);
+    if (lanes.size() < chunks) lanes.resize(chunks);
+    if (watchdog) watchdog->reserveLanes(static_cast<int>(chunks));
+    auto run = [&](std::size_t c) {
+      Lane& lane = lanes[c];
       lane.points.clear();
-      for (std::size_t i = list.size() * t / n; i < list.size() * (t + 1) / n; ++i)
+      for (std::size_t i = list.size() * c / chunks; i < list.size() * (c + 1) / chunks; ++i)
         narrowphase(list[i], poses, lane.points, lane);
-#pragma omp barrier
-#pragma omp single
-      {
-        std::size_t total = base;
-        for (std::size_t k = 0; k < n; ++k) total += lanes[k].points.size();
-        out.resize(total);
-      }  // implicit barrier: `out` has its size before any lane is copied
-      std::size_t offset = base;
-      for (std::size_t k = 0; k < t; ++k) offset += lanes[k].points.size();
-      std::copy(lane.points.begin(), lane.points.end(),
-                out.begin() + static_cast<std::ptrdiff_t>(offset));
-    }
+    };
+    runChunks(chunks, team, run);
+    std::size_t total = out.size();
+    for (std::size_t c = 0; c < chunks; ++c) total += lanes[c].points.size();
+    out.reserve(total);
+    for (std::size_t c = 0; c < chunks; ++c)
+      out.insert(out.end(), lanes[c].points.begin(), lanes[c].points.end());
     for (Lane& lane : lanes)
       if (timing) fcl_seconds += std::exchange(lane.fcl_seconds, 0.0);
   }

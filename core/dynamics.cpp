@@ -81,7 +81,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
       model_->automatic_contacts ? 8 * model_->geometries.size() : 8 * model_->contact_pairs.size();
   ws_.contact_points.reserve(expected);
   ws_.contacts.reserve(expected);
-  // One thread for a scene whose every stage is too small to share (no OpenMP call then).
+  // One thread for a scene whose every stage is too small to share (no helper asked then).
   // Automatic contacts have no pair list: about three pairs a geometry (a densely packed
   // body's six neighbours, each pair counted once).
   const std::size_t most_items =

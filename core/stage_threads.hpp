@@ -3,7 +3,6 @@
 // force evaluation (core/dynamics.cpp), the integrators' per-body updates
 // (core/integrator.cpp) and the energy account (core/energy.cpp), so every stage of a step
 // splits by the same measured rule (docs/performance.md, "Two threads").
-// Include only from a .cpp compiled with OpenMP, as contact/parallel_range.hpp says.
 // Not here: the parallel loop itself (contact/parallel_range.hpp), the threads a scene may
 // use (core/thread_count.hpp).
 #pragma once

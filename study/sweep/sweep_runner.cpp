@@ -161,7 +161,7 @@ void runPointsOnThreads(const SweepPlan& plan, const fs::path& out, unsigned job
                         const std::function<std::optional<std::size_t>()>& next,
                         const std::function<void(const FinishedPoint&)>& done) {
   auto worker = [&] {
-    // Points already share the cores: each evaluation keeps to its thread (no OpenMP team
+    // Points already share the cores: each evaluation keeps to its thread (no helper threads
     // per point on top of `jobs` threads). With one job the scene's own threads apply.
     const ScopedThreadLimit one_each(jobs > 1 ? 1 : 0);
     // The scene text parsed once per thread (planSweep has loaded it, so it parses).
