@@ -128,7 +128,7 @@ class WorkTeam {
   }
 
   std::mutex mutex_;
-  std::condition_variable wake_;      // helpers: a new loop (or stop)
+  std::condition_variable wake_;      // helpers: a new loop
   std::condition_variable finished_;  // the caller: the last chunk is done
   std::atomic<std::uint64_t> generation_{0};
   // The loop's generation (low 32 bits) << 32 | first unclaimed chunk << 16 | end of the

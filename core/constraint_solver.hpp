@@ -50,7 +50,8 @@ class ConstraintSolver {
 
   // After solve(): the applied forces change by `delta` (per body, world, at the origin);
   // updates lambda, the accelerations and the constraint wrenches with the same
-  // factorization (one back-substitution).
+  // factorization (one back-substitution), or after a closed-form solve the same projection
+  // again.
   void addForcesAndResolve(const std::vector<Wrench>& delta, Workspace& ws);
 
   // After solve(): the multipliers, one per row in rows()' order.

@@ -223,7 +223,7 @@ TEST(GridBroadphase, TheSameListInTheSameOrderForAnyThreadCountAndTheWorkIsSplit
     Pairs pairs;
     grid.overlappingPairs(boxes, members, pairs);
     EXPECT_EQ(pairs, one) << threads << " threads";
-    EXPECT_GT(splitLoopCount().load(), before) << "the pair tests ran on a team";
+    EXPECT_GT(splitLoopCount().load(), before) << "the pair tests were cut for a team";
   }
 }
 

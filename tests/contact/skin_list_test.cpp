@@ -216,7 +216,7 @@ TEST(SkinList, TheSameListForOneTwoAndThreeThreads) {
     }
     moveAll(rng, s, call % 2 == 0 ? 1e-3 : 0.3);
   }
-  EXPECT_GT(splitLoopCount().load(), split_before) << "some stage ran on a team";
+  EXPECT_GT(splitLoopCount().load(), split_before) << "some stage was cut for a team";
 }
 
 }  // namespace

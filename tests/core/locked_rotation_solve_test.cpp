@@ -3,11 +3,12 @@
 // 10 m, anchors up to 10 m from the centre of mass, joint frames at random, states off the
 // constraints): against the dense factorization of the same rows, and against the equations
 // themselves (Newton-Euler with the constraint wrench, J a = b at acceleration level); joint
-// friction's resolve; the models it must leave to the factorization.
+// friction's resolve; a locked-up state and the models it must leave to the factorization.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -232,6 +233,28 @@ TEST(LockedRotationSolve, JointFrictionResolvesAsTheFactorizationDoes) {
   EXPECT_NEAR(closed.state().bodies[0].position.dot(axis), v0 * t - 0.5 * decel * t * t, 1e-6);
   EXPECT_LT((closed.state().bodies[0].position - dense.state().bodies[0].position).norm(), 1e-12);
   EXPECT_LT((closed.state().bodies[0].velocity - dense.state().bodies[0].velocity).norm(), 1e-12);
+}
+
+TEST(LockedRotationSolve, ALockedUpStateIsLeftToTheFactorization) {
+  // Turned 90 degrees about the joint's axis, the child's y axis lies along the parent's x:
+  // the equation x_P . y_C = 0 no longer constrains a rotation and the three rotation rows
+  // are dependent. The closed form refuses; the factorization then meets a singular
+  // J M^-1 J^T as it always did, and the accelerations are NaN (which the simulator reports).
+  const Case c{JointType::kPlanarTranslation, 1.0, 0.1, 0.0, 1};
+  auto closed = heldBodies(c, ConstraintSolverKind::kAuto, 5);
+  auto dense = heldBodies(c, ConstraintSolverKind::kDense, 5);
+  Dynamics dc(closed), dd(dense);
+  State s = dc.initialState();
+  const Vec3 axis = closed->joints[0].axes_in_parent.col(2);  // z, in the world (its parent)
+  s.bodies[0].orientation = Eigen::AngleAxisd(std::numbers::pi / 2, axis) * s.bodies[0].orientation;
+  const Workspace& a = dc.evaluate(s);
+  EXPECT_FALSE(dc.constraintSolver().lastSolveClosedForm());
+  const Workspace& b = dd.evaluate(s);
+  EXPECT_EQ(std::isnan(a.linear_acceleration[0].x()), std::isnan(b.linear_acceleration[0].x()));
+  EXPECT_TRUE(std::isnan(a.angular_acceleration[0].x()));
+  // Back on the constraints, the closed form is taken again.
+  dc.evaluate(dc.initialState());
+  EXPECT_TRUE(dc.constraintSolver().lastSolveClosedForm());
 }
 
 TEST(LockedRotationSolve, JointsThatLeaveARotationOrJoinBodiesAreFactorized) {
