@@ -188,7 +188,7 @@ void GridBroadphase::pairsFromBuckets(std::span<const Aabb> boxes, std::span<con
   } else {
     // Contiguous bucket ranges, one lane each, claimed by the threads (contact/work_team.hpp);
     // the lanes appended in bucket order whoever ran them.
-    const std::size_t chunks = std::min(buckets, static_cast<std::size_t>(team) * kChunksPerThread);
+    const std::size_t chunks = chunksFor(buckets, team);
     if (lanes_.size() < chunks) lanes_.resize(chunks);
     auto run = [&](std::size_t c) {
       lanes_[c].clear();

@@ -224,8 +224,7 @@ struct CollisionDetector::Impl {
     }
     // Contiguous runs of the list, one lane each, claimed by the threads (contact/work_team.hpp);
     // the lanes are copied to `out` in list order whoever ran them.
-    const std::size_t chunks =
-        std::min(list.size(), static_cast<std::size_t>(team) * kChunksPerThread);
+    const std::size_t chunks = chunksFor(list.size(), team);
     if (lanes.size() < chunks) lanes.resize(chunks);
     if (watchdog) watchdog->reserveLanes(static_cast<int>(chunks));
     auto run = [&](std::size_t c) {

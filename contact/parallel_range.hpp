@@ -28,6 +28,11 @@ inline int threadsFor(std::size_t n, int threads, std::size_t per_thread) {
 // behind leaves work for the others to take.
 inline constexpr std::size_t kChunksPerThread = 4;
 
+// The chunks a split loop of `n` items on `threads` threads is cut into (at most one an item).
+inline std::size_t chunksFor(std::size_t n, int threads) {
+  return std::min(n, static_cast<std::size_t>(threads) * kChunksPerThread);
+}
+
 // f(i) for every i in [0, n), on up to `threads` threads (1: the calling thread alone).
 template <class F>
 void parallelFor(std::size_t n, int threads, F&& f) {
@@ -35,7 +40,7 @@ void parallelFor(std::size_t n, int threads, F&& f) {
     for (std::size_t i = 0; i < n; ++i) f(i);
     return;
   }
-  const std::size_t chunks = std::min(n, static_cast<std::size_t>(threads) * kChunksPerThread);
+  const std::size_t chunks = chunksFor(n, threads);
   auto chunk = [&](std::size_t c) {
     for (std::size_t i = n * c / chunks; i < n * (c + 1) / chunks; ++i) f(i);
   };
