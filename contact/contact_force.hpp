@@ -45,17 +45,58 @@ struct Material {
 };
 
 // Kinematics stage: fills out.point, out.depth_rate and out.slip for point `cp` between A
-// and B (inline: the hot path of every contact scene).
+// and B (inline: the hot path of every contact scene). Written on components, not with
+// Eigen's cross and dot: GCC packed pairs of the cross products' scalars into 2-wide
+// registers through the stack, a store-to-load forwarding stall that was half of the stage's
+// time on the box grids (docs/performance.md). The same operations in the same order as the
+// formulas above, so the same bits (tests/contact/contact_force_test.cpp).
 inline void contactKinematics(const ContactPoint& cp, const GeometryMotion& a,
                               const GeometryMotion& b, ContactRecord& out) {
-  const Eigen::Vector3d& n = cp.normal;
-  const Eigen::Vector3d v_rel = b.pointVelocity(cp.position) - a.pointVelocity(cp.position);
-  const double vn = n.dot(v_rel);
+  const double px = cp.position.x(), py = cp.position.y(), pz = cp.position.z();
+  const double nx = cp.normal.x(), ny = cp.normal.y(), nz = cp.normal.z();
+  const double rax = px - a.origin.x(), ray = py - a.origin.y(), raz = pz - a.origin.z();
+  const double rbx = px - b.origin.x(), rby = py - b.origin.y(), rbz = pz - b.origin.z();
+  const Eigen::Vector3d& wa = a.angular_velocity;
+  const Eigen::Vector3d& wb = b.angular_velocity;
+  const double vax = a.velocity.x() + (wa.y() * raz - wa.z() * ray);
+  const double vay = a.velocity.y() + (wa.z() * rax - wa.x() * raz);
+  const double vaz = a.velocity.z() + (wa.x() * ray - wa.y() * rax);
+  const double vbx = b.velocity.x() + (wb.y() * rbz - wb.z() * rby);
+  const double vby = b.velocity.y() + (wb.z() * rbx - wb.x() * rbz);
+  const double vbz = b.velocity.z() + (wb.x() * rby - wb.y() * rbx);
+  const double vx = vbx - vax, vy = vby - vay, vz = vbz - vaz;
+  const double vn = nx * vx + ny * vy + nz * vz;
   out.point = cp;
   out.depth_rate = -vn;
   out.moment.setZero();
-  const Eigen::Vector3d v_slide = v_rel + b.surface_velocity - a.surface_velocity;
-  out.slip = v_slide - n.dot(v_slide) * n;
+  const double wx = vx + b.surface_velocity.x() - a.surface_velocity.x();
+  const double wy = vy + b.surface_velocity.y() - a.surface_velocity.y();
+  const double wz = vz + b.surface_velocity.z() - a.surface_velocity.z();
+  const double wn = nx * wx + ny * wy + nz * wz;
+  out.slip = Eigen::Vector3d(wx - wn * nx, wy - wn * ny, wz - wn * nz);
+}
+
+// Wrench stage, after the friction: the point's force on B (A gets its opposite) and its
+// moments about B's and A's origins, each plus or minus the rolling and spinning moment.
+// On components, like contactKinematics.
+inline void contactWrench(const ContactRecord& rec, const Eigen::Vector3d& origin_a,
+                          const Eigen::Vector3d& origin_b, Eigen::Vector3d& force,
+                          Eigen::Vector3d& torque_a, Eigen::Vector3d& torque_b) {
+  const Eigen::Vector3d& n = rec.point.normal;
+  const Eigen::Vector3d& p = rec.point.position;
+  const double fn = rec.normal_force;
+  const double fx = fn * n.x() + rec.friction_force.x();
+  const double fy = fn * n.y() + rec.friction_force.y();
+  const double fz = fn * n.z() + rec.friction_force.z();
+  force = Eigen::Vector3d(fx, fy, fz);
+  const double rbx = p.x() - origin_b.x(), rby = p.y() - origin_b.y(), rbz = p.z() - origin_b.z();
+  torque_b = Eigen::Vector3d((rby * fz - rbz * fy) + rec.moment.x(),
+                             (rbz * fx - rbx * fz) + rec.moment.y(),
+                             (rbx * fy - rby * fx) + rec.moment.z());
+  const double rax = p.x() - origin_a.x(), ray = p.y() - origin_a.y(), raz = p.z() - origin_a.z();
+  torque_a = Eigen::Vector3d((ray * -fz - raz * -fy) - rec.moment.x(),
+                             (raz * -fx - rax * -fz) - rec.moment.y(),
+                             (rax * -fy - ray * -fx) - rec.moment.z());
 }
 
 // Normal-force stage, after the kinematics: out.normal_force.

@@ -233,15 +233,11 @@ void Dynamics::assemble(const State& state) {
     const ContactPair& pair = ws_.contact_pair[i];
     const BodyIndex a = m.geometries[pair.geometry_a].body, b = m.geometries[pair.geometry_b].body;
     point_bodies_[i] = {a, b};
-    const Vec3 f = rec.force();
-    point_force_[i] = f;
-    // Plus the rolling and spinning resistance's pure moment (zero without it).
-    if (!b.isWorld())
-      point_torque_b_[i] =
-          (rec.point.position - state.bodies[b.value].position).cross(f) + rec.moment;
-    if (!a.isWorld())
-      point_torque_a_[i] =
-          (rec.point.position - state.bodies[a.value].position).cross(-f) - rec.moment;
+    // Each origin only where its side is a body (the world's torque is never read).
+    const Vec3& origin_a = a.isWorld() ? rec.point.position : state.bodies[a.value].position;
+    const Vec3& origin_b = b.isWorld() ? rec.point.position : state.bodies[b.value].position;
+    contact::contactWrench(rec, origin_a, origin_b, point_force_[i], point_torque_a_[i],
+                           point_torque_b_[i]);
   });
   for (std::size_t i = 0; i < n; ++i) {
     const auto [a, b] = point_bodies_[i];
