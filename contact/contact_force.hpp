@@ -8,8 +8,11 @@
 //   F_B = F_n n + F_t,  F_n from the normal law, F_t = -mu(|slip|) F_n slip/|slip|
 // where s is a body's surface velocity (world frame; it never changes the depth rate). A
 // stateful law gets the contact's StickView instead and returns F_t itself.
-// Not here: collision detection, wrench accumulation on bodies (core does that), keeping
-// the state of stateful laws (contact/stick_anchor.hpp).
+// contactWrench gives one point's force and its moments about the two bodies' origins:
+//   tau_B = (p - o_B) x F_B + M,   tau_A = (p - o_A) x (-F_B) - M
+// with M the rolling and spinning moment (contact/rolling_resistance.hpp).
+// Not here: collision detection, the sums of the points' wrenches on each body (core does
+// that), keeping the state of stateful laws (contact/stick_anchor.hpp).
 #pragma once
 
 #include <Eigen/Core>

@@ -2,8 +2,8 @@
 // contactKinematics, contactWrench) against the vector formulas they stand for, written here
 // with Eigen's own products: the same bits over random points, motions and forces from 1e-9 to
 // 1e3 in every quantity; and the physics they must keep (the slip lies in the tangent plane, a
-// body sliding on a resting one slips at its own tangential speed, the wrench's moments are
-// the force's moments plus the rolling moment).
+// body sliding on a resting one slips at its own tangential speed, the moments on A and B
+// differ by the moment of the force's arm between their origins).
 #include "contact/contact_force.hpp"
 
 #include <gtest/gtest.h>
