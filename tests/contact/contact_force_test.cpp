@@ -30,6 +30,16 @@ class RandomContact {
     return n.normalized();
   }
   GeometryMotion motion() { return {vector(), vector(), vector(), vector()}; }
+  // A record after the friction stage: a point, its load, friction force and (optionally)
+  // rolling moment.
+  ContactRecord loaded(bool with_moment) {
+    ContactRecord rec;
+    rec.point = point();
+    rec.normal_force = std::abs(value());
+    rec.friction_force = vector();
+    if (with_moment) rec.moment = vector();
+    return rec;
+  }
   ContactPoint point() {
     ContactPoint cp;
     cp.pair = 3;
@@ -100,11 +110,7 @@ TEST(ContactForce, BodySlidingOnARestingOneSlipsAtItsTangentialSpeed) {
 TEST(ContactForce, WrenchOnComponentsEqualsTheVectorFormulaBitForBit) {
   RandomContact random(13);
   for (int k = 0; k < 20000; ++k) {
-    ContactRecord rec;
-    rec.point = random.point();
-    rec.normal_force = std::abs(random.value());
-    rec.friction_force = random.vector();
-    rec.moment = k % 3 == 0 ? Eigen::Vector3d::Zero() : random.vector();
+    const ContactRecord rec = random.loaded(k % 3 != 0);
     const Eigen::Vector3d oa = random.vector(), ob = random.vector();
     Eigen::Vector3d force, torque_a, torque_b;
     contactWrench(rec, oa, ob, force, torque_a, torque_b);
@@ -117,16 +123,12 @@ TEST(ContactForce, WrenchOnComponentsEqualsTheVectorFormulaBitForBit) {
 }
 
 TEST(ContactForce, WrenchMomentsBalanceAboutAnyPoint) {
-  // The force on B at p and its opposite on A at p: the moments about B's and A's origins
-  // differ by the moment of the force's arm between the origins, (o_A - o_B) x f, and the
-  // rolling moment twice (B gets +M, A gets -M).
+  // The force on B at p and its opposite on A at p: the moments about B's and A's origins sum
+  // to (o_A - o_B) x f, the force's moment over the arm between the origins; the rolling
+  // moment cancels (B gets +M, A gets -M).
   RandomContact random(14);
   for (int k = 0; k < 2000; ++k) {
-    ContactRecord rec;
-    rec.point = random.point();
-    rec.normal_force = std::abs(random.value());
-    rec.friction_force = random.vector();
-    rec.moment = random.vector();
+    const ContactRecord rec = random.loaded(true);
     const Eigen::Vector3d oa = random.vector(), ob = random.vector();
     Eigen::Vector3d force, torque_a, torque_b;
     contactWrench(rec, oa, ob, force, torque_a, torque_b);
