@@ -40,7 +40,7 @@ void ConstraintProjection::leastChange(double RowValue::*residual) {
 double ConstraintProjection::evaluate(const State& state) {
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     rotation_[b] = state.bodies[b].orientation.toRotationMatrix();
-    inv_inertia_world_[b] = rotation_[b] * inv_inertia_body_[b] * rotation_[b].transpose();
+    inv_inertia_world_[b] = rotatedTensor(rotation_[b], inv_inertia_body_[b]);
   }
   evaluateRows(rows_, groups_, MotionView(state, rotation_), state.time, values_);
   double max_phi = 0.0;

@@ -150,7 +150,7 @@ void Dynamics::updatePoses(const State& state) {
     const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
     ws_.rotation[b] = r;
     if (m.bodies[b].kind == BodyKind::kDynamic)
-      ws_.inv_inertia_world[b] = r * inv_inertia_body_[b] * r.transpose();
+      ws_.inv_inertia_world[b] = rotatedTensor(r, inv_inertia_body_[b]);
   });
   const std::size_t ng = m.geometries.size();
   parallelFor(ng, stageThreads(ng, threads_), [&](std::size_t g) {

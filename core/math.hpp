@@ -1,6 +1,6 @@
-// Small math vocabulary shared by core/: vector and rotation types (Eigen), and the
-// quaternion update used by the integrators. SI units, world-frame angular velocities.
-// Not a general geometry library.
+// Small math vocabulary shared by core/: vector and rotation types (Eigen), the quaternion
+// update used by the integrators, and a body tensor turned to the world. SI units,
+// world-frame angular velocities. Not a general geometry library.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +25,35 @@ inline Quat rotateBy(const Vec3& w, double h, const Quat& q) {
 inline Eigen::Vector4d quaternionRate(const Vec3& w, const Quat& q) {
   const Quat r = Quat(0.0, w.x(), w.y(), w.z()) * q;
   return 0.5 * r.coeffs();
+}
+
+// R T R^T: a body-frame tensor T (an inertia or its inverse) in the world, R the body's
+// rotation. Written on components with the products and sums of Eigen's `r * t *
+// r.transpose()` in its order, so the same bits: rows 0 and 1 of each product sum left to
+// right, row 2 adds its first term to the sum of the other two (Eigen's two-wide rows and
+// its scalar tail). GCC had packed the expression's scalars through the stack into 2-wide
+// registers, a store-to-load forwarding stall a body (docs/performance.md, "The rotated
+// inertia on components").
+inline Mat3 rotatedTensor(const Mat3& r, const Mat3& t) {
+  auto left = [](double a0, double a1, double a2, double b0, double b1, double b2) {
+    return a0 * b0 + a1 * b1 + a2 * b2;
+  };
+  auto tail = [](double a0, double a1, double a2, double b0, double b1, double b2) {
+    return a0 * b0 + (a1 * b1 + a2 * b2);
+  };
+  double rt[3][3];  // R T
+  for (int j = 0; j < 3; ++j) {
+    rt[0][j] = left(r(0, 0), r(0, 1), r(0, 2), t(0, j), t(1, j), t(2, j));
+    rt[1][j] = left(r(1, 0), r(1, 1), r(1, 2), t(0, j), t(1, j), t(2, j));
+    rt[2][j] = tail(r(2, 0), r(2, 1), r(2, 2), t(0, j), t(1, j), t(2, j));
+  }
+  Mat3 out;  // (R T) R^T
+  for (int j = 0; j < 3; ++j) {
+    out(0, j) = left(rt[0][0], rt[0][1], rt[0][2], r(j, 0), r(j, 1), r(j, 2));
+    out(1, j) = left(rt[1][0], rt[1][1], rt[1][2], r(j, 0), r(j, 1), r(j, 2));
+    out(2, j) = tail(rt[2][0], rt[2][1], rt[2][2], r(j, 0), r(j, 1), r(j, 2));
+  }
+  return out;
 }
 
 }  // namespace tribo
