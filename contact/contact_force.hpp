@@ -33,10 +33,6 @@ struct GeometryMotion {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // of the origin [m/s]
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // [rad/s]
   Eigen::Vector3d surface_velocity = Eigen::Vector3d::Zero();  // belt surface [m/s]
-
-  Eigen::Vector3d pointVelocity(const Eigen::Vector3d& p) const {
-    return velocity + angular_velocity.cross(p - origin);
-  }
 };
 
 // A pair's contact material: how the surfaces push and how they rub.
