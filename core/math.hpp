@@ -29,9 +29,10 @@ inline Eigen::Vector4d quaternionRate(const Vec3& w, const Quat& q) {
 
 // R T R^T: a body-frame tensor T (an inertia or its inverse) in the world, R the body's
 // rotation. Written on components with the products and sums of Eigen's `r * t *
-// r.transpose()` in its order, so the same bits: rows 0 and 1 of each product sum left to
-// right, row 2 adds its first term to the sum of the other two (Eigen's two-wide rows and
-// its scalar tail). GCC had packed the expression's scalars through the stack into 2-wide
+// r.transpose()` in the order this build evaluates it, so the same bits: rows 0 and 1 of
+// each product sum left to right, row 2 adds its first term to the sum of the other two
+// (two-wide vectors for rows 0-1, a scalar tail; tests/core/rotated_tensor_test.cpp checks
+// the bits). GCC had packed the expression's scalars through the stack into 2-wide
 // registers, a store-to-load forwarding stall a body (docs/performance.md, "The rotated
 // inertia on components").
 inline Mat3 rotatedTensor(const Mat3& r, const Mat3& t) {
