@@ -86,23 +86,25 @@ void thinContacts(std::vector<ContactPoint>& out, std::size_t first, int max_poi
 int boxHalfSpaceContacts(const Eigen::Isometry3d& box_pose, const Eigen::Vector3d& half_extents,
                          const Eigen::Isometry3d& plane_pose, int pair,
                          std::vector<ContactPoint>& out) {
-  // The belt's hot path: written out rather than through addIfBelow.
+  // The belt's and the box grids' hot path. A corner is t + R s with s = (+-hx, +-hy, +-hz),
+  // summed as Eigen sums `box_pose * s` on this build, ((x + y) + z) + t per row, from the
+  // three products e_i = R.col(i) h_i formed once (a sign flips a product exactly): the
+  // corners are the same bits as the plain loop's (tests/contact/box_half_space_test.cpp).
+  // The loop is unrolled so that each corner's signs are constants.
   const Eigen::Vector3d n = plane_pose.linear().col(2);
   const double offset = n.dot(plane_pose.translation());
+  const Eigen::Vector3d t = box_pose.translation();
+  const Eigen::Vector3d ex = box_pose.linear().col(0) * half_extents.x();
+  const Eigen::Vector3d ey = box_pose.linear().col(1) * half_extents.y();
+  const Eigen::Vector3d ez = box_pose.linear().col(2) * half_extents.z();
   int added = 0;
+#pragma GCC unroll 8
   for (int k = 0; k < 8; ++k) {
-    const Eigen::Vector3d local((k & 1) ? half_extents.x() : -half_extents.x(),
-                                (k & 2) ? half_extents.y() : -half_extents.y(),
-                                (k & 4) ? half_extents.z() : -half_extents.z());
-    const Eigen::Vector3d corner = box_pose * local;
+    const Eigen::Vector3d corner =
+        (((k & 1) ? ex : -ex) + ((k & 2) ? ey : -ey) + ((k & 4) ? ez : -ez)) + t;
     const double depth = offset - n.dot(corner);
     if (depth <= 0.0) continue;
-    ContactPoint& cp = out.emplace_back();
-    cp.pair = pair;
-    cp.feature = k;
-    cp.position = corner + 0.5 * depth * n;
-    cp.normal = n;
-    cp.depth = depth;
+    out.push_back({pair, k, corner + 0.5 * depth * n, n, depth});
     ++added;
   }
   return added;
