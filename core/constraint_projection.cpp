@@ -16,8 +16,11 @@ ConstraintProjection::ConstraintProjection(const Model& model)
                groupBegins(groups_, m));
   jacobian_.bindSlots(matrix_);
   values_.resize(m);
+  if (m == 0) return;  // nothing to project: no per-body arrays (project returns at once)
   rotation_.assign(nb, Mat3::Identity());
   inv_inertia_world_.assign(nb, Mat3::Zero());
+  inv_mass_.reserve(nb);
+  inv_inertia_body_.reserve(nb);
   for (const Body& b : model.bodies) {
     const bool dynamic = b.kind == BodyKind::kDynamic;
     inv_mass_.push_back(dynamic ? 1.0 / b.mass : 0.0);

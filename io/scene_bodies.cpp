@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <random>
 #include <utility>
 
@@ -35,7 +36,8 @@ void Loader::readBody(const Value& v) {
     for (int i = 0; i < 3; ++i) body.surface_velocity[i] = signals[i].value(0.0);
     if (std::any_of(signals.begin(), signals.end(),
                     [](const Signal& c) { return c.kind() != Signal::Kind::kConstant; }))
-      body.surface_velocity_signal = std::move(signals);
+      body.surface_velocity_signal =
+          std::make_shared<const std::array<Signal, 3>>(std::move(signals));
   }
   std::vector<GeometrySpec> geometries;
   if (auto g = m.get("geometry"))

@@ -8,6 +8,7 @@
 // breakpoint on an output time, and the breakpoints gathered from every kind of input.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -113,7 +114,8 @@ TEST(IntegratorBreakpoints, GatheredFromLoadsActuatorsAndSurfaceVelocities) {
   Body belt;
   belt.name = "belt";
   belt.kind = BodyKind::kKinematic;
-  belt.surface_velocity_signal = {Signal::table({{0.2, 1.0}, {0.9, 2.0}}), Signal(), Signal()};
+  belt.surface_velocity_signal = std::make_shared<const std::array<Signal, 3>>(
+      std::array<Signal, 3>{Signal::table({{0.2, 1.0}, {0.9, 2.0}}), Signal(), Signal()});
   b.addBody(belt);
   AppliedLoad load;
   load.name = "push";
