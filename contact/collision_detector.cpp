@@ -176,7 +176,7 @@ struct CollisionDetector::Impl {
   GridBroadphase grid;
   std::vector<int> bounded;          // geometries in the broadphase (all but half-spaces)
   std::vector<Aabb> boxes;           // world boxes, by geometry (half-spaces' unused)
-  std::vector<Aabb> mesh_local;      // local boxes of meshes with many vertices
+  std::vector<Aabb> mesh_local;      // local boxes of meshes with many vertices (else empty)
   std::vector<char> has_mesh_local;  // by geometry
   std::vector<std::pair<int, int>> close_pairs;
   fcl::CollisionRequestd request;  // shared by the threads: FCL only reads it
@@ -463,7 +463,12 @@ void CollisionDetector::Impl::setUp() {
   // a rule a shape type that meets another with no closed form (polyhedra are made for every
   // convex shape).
   std::vector<bool> needed(n, false);
-  polyhedra.resize(n);
+  // Sized by geometry on the first polyhedron made (left empty, as `mesh_local` is, when a
+  // scene needs none: 100 bytes a geometry of a large scene of boxes).
+  auto make_polyhedron = [&](int g) {
+    if (polyhedra.empty()) polyhedra.resize(static_cast<std::size_t>(n));
+    polyhedra[static_cast<std::size_t>(g)] = makePolyhedron(shapes[g]);
+  };
   // Cylinder/box falls back to FCL for the poses it has no closed form for.
   auto fcl_kind = [](PairKind k) {
     return k == PairKind::kFcl || k == PairKind::kPolyhedra || k == PairKind::kBoxCylinder ||
@@ -474,7 +479,7 @@ void CollisionDetector::Impl::setUp() {
     any_fcl_pair = any_fcl_pair || fcl_kind(c.kind);
     if (c.kind != PairKind::kPolyhedra) continue;
     for (int g : {c.a, c.b})
-      if (polyhedra[g].faces.empty()) polyhedra[g] = makePolyhedron(shapes[g]);
+      if (polyhedra.empty() || polyhedra[g].faces.empty()) make_polyhedron(g);
   }
   if (rule && options.polyhedron_manifold) {
     // Any two polyhedra may meet, except two boxes: boxes need theirs only beside a mesh.
@@ -483,7 +488,7 @@ void CollisionDetector::Impl::setUp() {
       any_mesh = any_mesh || (isPolyhedron(shapes[g]) && shapes[g].type != ShapeType::kBox);
     for (int g = 0; g < n; ++g)
       if (isPolyhedron(shapes[g]) && (any_mesh || shapes[g].type != ShapeType::kBox))
-        polyhedra[g] = makePolyhedron(shapes[g]);
+        make_polyhedron(g);
   }
   narrowphase_reaches_fcl = any_fcl_pair;
   if (rule) {
@@ -511,6 +516,7 @@ void CollisionDetector::Impl::setUp() {
     for (int g = 0; g < n; ++g)
       if (type_reaches_fcl[static_cast<std::size_t>(shapes[g].type)]) needed[g] = true;
   }
+  objects.reserve(static_cast<std::size_t>(n));
   for (int g = 0; g < n; ++g) {
     narrowphase_reaches_fcl = narrowphase_reaches_fcl || needed[g];
     objects.push_back(
@@ -522,8 +528,8 @@ void CollisionDetector::Impl::setUp() {
   std::vector<int> planes;
   boxes.resize(static_cast<std::size_t>(n));
   fat.resize(static_cast<std::size_t>(n));
-  mesh_local.resize(static_cast<std::size_t>(n));
   has_mesh_local.assign(static_cast<std::size_t>(n), 0);
+  bounded.reserve(static_cast<std::size_t>(n));
   for (int g = 0; g < n; ++g) {
     if (shapes[g].type == ShapeType::kHalfSpace) {
       planes.push_back(g);
@@ -531,6 +537,7 @@ void CollisionDetector::Impl::setUp() {
     }
     bounded.push_back(g);
     if (shapes[g].mesh && shapes[g].mesh->vertices.size() > 64) {
+      if (mesh_local.empty()) mesh_local.resize(static_cast<std::size_t>(n));
       Aabb& local = mesh_local[static_cast<std::size_t>(g)];
       local.lo = local.hi = shapes[g].mesh->vertices.front();
       for (const Eigen::Vector3d& v : shapes[g].mesh->vertices) {

@@ -49,32 +49,40 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
       loads_(*model_),
       projection_(*model_),
       friction_(*model_, joint_forces_) {
-  const std::size_t nb = model_->bodies.size();
+  const Model& m = *model_;
+  const std::size_t nb = m.bodies.size(), ng = m.geometries.size();
   inv_inertia_body_.reserve(nb);
-  at_body_origin_.reserve(model_->geometries.size());
-  ws_.surface_velocity.reserve(nb);
-  for (const Body& b : model_->bodies)
+  for (const Body& b : m.bodies)
     inv_inertia_body_.push_back(b.kind == BodyKind::kDynamic ? Mat3(b.inertia.inverse())
                                                              : Mat3::Zero());
-  ws_.geometry_poses.assign(model_->geometries.size(), Eigen::Isometry3d::Identity());
-  geometry_motion_.resize(model_->geometries.size());
-  for (const Geometry& g : model_->geometries)
+  ws_.geometry_poses.assign(ng, Eigen::Isometry3d::Identity());
+  geometry_motion_.resize(ng);
+  at_body_origin_.reserve(ng);
+  for (const Geometry& g : m.geometries)
     at_body_origin_.push_back(g.local_pose.matrix() == Eigen::Matrix4d::Identity() ? 1 : 0);
+  // The wrenches a body by source, each made only where the model has that source (empty
+  // otherwise, read as zero: four of them were 192 bytes a body of a scene of free boxes).
+  const bool force_elements =
+      !m.springs.empty() || !m.bushings.empty() || !m.torsional_springs.empty();
   ws_.contact_wrench.assign(nb, {});
-  ws_.spring_wrench.assign(nb, {});
-  ws_.joint_wrench.assign(nb, {});
-  ws_.joint_friction.assign(model_->joints.size(), 0.0);
-  ws_.actuator_output.assign(model_->joints.size(), {});
+  ws_.spring_wrench.assign(force_elements ? nb : 0, {});
+  ws_.joint_wrench.assign(m.joints.empty() ? 0 : nb, {});
+  ws_.constraint_wrench.assign(solver_.equationCount() > 0 ? nb : 0, {});
+  ws_.load_wrench.assign(m.loads.empty() ? 0 : nb, {});
+  ws_.joint_friction.assign(m.joints.size(), 0.0);
+  ws_.actuator_output.assign(m.joints.size(), {});
+  // Surface velocities a body only where some body has one (else empty: zero everywhere).
+  const bool surfaces = std::any_of(m.bodies.begin(), m.bodies.end(), [](const Body& b) {
+    return b.surface_velocity_signal || b.surface_velocity.squaredNorm() != 0.0;
+  });
   ws_.surface_velocity.clear();
-  for (const Body& b : model_->bodies) {
-    ws_.surface_velocity.push_back(b.surface_velocity);
-    if (b.surface_velocity_signal)
-      varying_surfaces_.emplace_back(ws_.surface_velocity.size() - 1,
-                                     SignalVectorMemo(*b.surface_velocity_signal));
+  ws_.surface_velocity.reserve(surfaces ? nb : 0);
+  for (std::size_t b = 0; surfaces && b < nb; ++b) {
+    ws_.surface_velocity.push_back(m.bodies[b].surface_velocity);
+    if (m.bodies[b].surface_velocity_signal)
+      varying_surfaces_.emplace_back(b, SignalVectorMemo(*m.bodies[b].surface_velocity_signal));
   }
-  ws_.constraint_wrench.assign(nb, {});
-  ws_.load_wrench.assign(nb, {});
-  ws_.load_force.assign(model_->loads.size(), Vec3::Zero());
+  ws_.load_force.assign(m.loads.size(), Vec3::Zero());
   ws_.rotation.assign(nb, Mat3::Identity());
   ws_.inv_inertia_world.assign(nb, Mat3::Zero());
   ws_.linear_acceleration.assign(nb, Vec3::Zero());
@@ -102,6 +110,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
 State Dynamics::initialState() const {
   State s;
   s.time = 0.0;
+  s.bodies.reserve(model_->bodies.size());
   for (const Body& b : model_->bodies)
     s.bodies.push_back({b.position, b.orientation, b.velocity, b.angular_velocity});
   const ConstraintOptions& c = model_->options.constraints;
@@ -223,10 +232,8 @@ void Dynamics::friction(const State& state) {
 
 void Dynamics::assemble(const State& state) {
   const Model& m = *model_;
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-    ws_.contact_wrench[b].setZero();
-    ws_.spring_wrench[b].setZero();
-  }
+  for (Wrench& w : ws_.contact_wrench) w.setZero();
+  for (Wrench& w : ws_.spring_wrench) w.setZero();
   // Each point's force and its moments about the bodies' origins, in parallel; then the sums
   // per body in contact order (the additions of the one-thread code, in its order).
   const std::size_t n = ws_.contacts.size();
@@ -318,6 +325,10 @@ void Dynamics::accumulateBushingsAndTorsion(const State& state) {
 
 void Dynamics::unconstrainedAccelerations(const State& state) {
   const Model& m = *model_;
+  // Only the sources the model has (Dynamics::Dynamics): a wrench of a source it has not is
+  // zero, and a sum of contact forces starting from +0 is never -0, so leaving it out adds
+  // nothing a bit would show.
+  const bool springs = !ws_.spring_wrench.empty(), joints = !ws_.joint_wrench.empty();
   const bool has_loads = !m.loads.empty();
   parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Body& body = m.bodies[b];
@@ -332,10 +343,16 @@ void Dynamics::unconstrainedAccelerations(const State& state) {
       return;
     }
     const BodyState& s = state.bodies[b];
-    Vec3 force =
-        ws_.contact_wrench[b].force + ws_.spring_wrench[b].force + ws_.joint_wrench[b].force;
-    Vec3 torque =
-        ws_.contact_wrench[b].torque + ws_.spring_wrench[b].torque + ws_.joint_wrench[b].torque;
+    Vec3 force = ws_.contact_wrench[b].force;
+    Vec3 torque = ws_.contact_wrench[b].torque;
+    if (springs) {
+      force += ws_.spring_wrench[b].force;
+      torque += ws_.spring_wrench[b].torque;
+    }
+    if (joints) {
+      force += ws_.joint_wrench[b].force;
+      torque += ws_.joint_wrench[b].torque;
+    }
     if (has_loads) {  // else nothing added: a scene without loads computes as before
       force += ws_.load_wrench[b].force;
       torque += ws_.load_wrench[b].torque;

@@ -25,8 +25,9 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
   const Body& body = model.bodies[b];
   const BodyState& s = state.bodies[b];
   if (body.kind == BodyKind::kKinematic) {
+    // A model without force elements has no spring wrenches (core/workspace.hpp): zero.
     const Wrench& c = ws.contact_wrench[b];
-    const Wrench& k = ws.spring_wrench[b];
+    const Wrench k = ws.spring_wrench.empty() ? Wrench{} : ws.spring_wrench[b];
     t.power[0] =
         (c.force + k.force).dot(s.velocity) + (c.torque + k.torque).dot(s.angular_velocity);
     return t;
@@ -36,10 +37,14 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
   t.kinetic = 0.5 * body.mass * s.velocity.squaredNorm() + 0.5 * w_body.dot(body.inertia * w_body);
   t.gravity = -body.mass * model.options.gravity.dot(s.position);
   // Joint constraint forces and joint elements (limits, springs, dampers, friction,
-  // drives) count as sources: their work enters or leaves through the joints.
+  // drives) count as sources: their work enters or leaves through the joints. A model
+  // without constraint rows or joints has no such wrenches (core/workspace.hpp): power 0.
   int k = 0;
-  for (const Wrench* j : {&ws.constraint_wrench[b], &ws.joint_wrench[b]})
-    t.power[k++] = j->force.dot(s.velocity) + j->torque.dot(s.angular_velocity);
+  for (const std::vector<Wrench>* j : {&ws.constraint_wrench, &ws.joint_wrench}) {
+    if (!j->empty())
+      t.power[k] = (*j)[b].force.dot(s.velocity) + (*j)[b].torque.dot(s.angular_velocity);
+    ++k;
+  }
   // Applied loads too (core/applied_load.hpp): F . v + T . w, T about the origin.
   if (!model.loads.empty()) {
     const Wrench& l = ws.load_wrench[b];

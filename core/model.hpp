@@ -122,11 +122,12 @@ struct Model {
 // The world velocity of geometry `g`'s surface: its body's surface velocity at the
 // evaluation's time (`body_surface`, per body: Workspace::surface_velocity) read in the
 // geometry's own frame (local_pose), so a belt surface tilted by its geometry's pose moves
-// along the tilted plane; zero for the world. `body_rotation`: body to world rotations.
+// along the tilted plane; zero for the world, and for all when `body_surface` is empty (no
+// body has a surface velocity). `body_rotation`: body to world rotations.
 inline Vec3 surfaceVelocityOf(const Model& model, const std::vector<Mat3>& body_rotation,
                               const std::vector<Vec3>& body_surface, int g) {
   const Geometry& geometry = model.geometries[static_cast<std::size_t>(g)];
-  if (geometry.body.isWorld()) return Vec3::Zero();
+  if (geometry.body.isWorld() || body_surface.empty()) return Vec3::Zero();
   const Vec3& v = body_surface[static_cast<std::size_t>(geometry.body.value)];
   if (v.squaredNorm() == 0.0) return Vec3::Zero();
   return body_rotation[geometry.body.value] * (geometry.local_pose.linear() * v);

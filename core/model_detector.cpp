@@ -51,8 +51,10 @@ void queryOverrun(const std::shared_ptr<const Model>& model, int a, int b, doubl
 contact::CollisionDetector makeModelDetector(const std::shared_ptr<const Model>& shared) {
   const Model& model = *shared;
   std::vector<contact::Shape> shapes;
+  shapes.reserve(model.geometries.size());
   for (const auto& g : model.geometries) shapes.push_back(g.shape);
   std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(model.contact_pairs.size());
   for (const auto& p : model.contact_pairs) pairs.emplace_back(p.geometry_a, p.geometry_b);
   contact::CollisionDetector detector =
       model.automatic_contacts

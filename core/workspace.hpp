@@ -43,7 +43,8 @@ struct Workspace {
   // assemble, per body, by source (gravity is m g, not stored). spring_wrench: the force
   // elements (spring-dampers, bushings, torsional springs). joint_wrench: joint limits,
   // springs, dampers, efforts, constant-load friction; solveConstraints adds the friction
-  // under reaction load.
+  // under reaction load. Each but contact_wrench is empty when the model has none of its
+  // source (no force element, no joint, no constraint row, no load): a reader takes zero.
   std::vector<Wrench> contact_wrench;
   std::vector<Wrench> spring_wrench;
   std::vector<Wrench> joint_wrench;
@@ -76,7 +77,7 @@ struct Workspace {
   // (core/joint_actuator.hpp; zero for joints without one).
   std::vector<ActuatorOutput> actuator_output;
   // Per body: its surface velocity at this evaluation's time, body's geometry frames
-  // (Body::surfaceVelocityAt; zero for bodies without one).
+  // (Body::surfaceVelocityAt; zero for bodies without one). Empty when no body has one.
   std::vector<Vec3> surface_velocity;
 };
 
