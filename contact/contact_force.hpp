@@ -8,8 +8,8 @@
 //   F_B = F_n n + F_t,  F_n from the normal law, F_t = -mu(|slip|) F_n slip/|slip|
 // where s is a body's surface velocity (world frame; it never changes the depth rate). A
 // stateful law gets the contact's StickView instead and returns F_t itself.
-// contactWrench gives one point's force and its moments about the two bodies' origins:
-//   tau_B = (p - o_B) x F_B + M,   tau_A = (p - o_A) x (-F_B) - M
+// contactWrench gives one point's force on either body and its moment about that body's
+// origin:   tau_B = (p - o_B) x F_B + M,   tau_A = (p - o_A) x (-F_B) - M
 // with M the rolling and spinning moment (contact/rolling_resistance.hpp).
 // Not here: collision detection, the sums of the points' wrenches on each body (core does
 // that), keeping the state of stateful laws (contact/stick_anchor.hpp).
@@ -75,27 +75,24 @@ inline void contactKinematics(const ContactPoint& cp, const GeometryMotion& a,
   out.slip = Eigen::Vector3d(wx - wn * nx, wy - wn * ny, wz - wn * nz);
 }
 
-// Wrench stage, after the friction: the point's force on B (A gets its opposite) and its
-// moments about B's and A's origins, each plus or minus the rolling and spinning moment.
-// On components, like contactKinematics.
-inline void contactWrench(const ContactRecord& rec, const Eigen::Vector3d& origin_a,
-                          const Eigen::Vector3d& origin_b, Eigen::Vector3d& force,
-                          Eigen::Vector3d& torque_a, Eigen::Vector3d& torque_b) {
+// Wrench stage, after the friction: the point's force on one side's body and its moment
+// about that body's origin o, on B F_B and (p - o) x F_B + M, on A -F_B and
+// (p - o) x (-F_B) - M (each side's sum is formed where it is needed: the other is not).
+// On components, like contactKinematics; the sign flips are exact.
+inline void contactWrench(const ContactRecord& rec, const Eigen::Vector3d& origin, bool on_b,
+                          Eigen::Vector3d& force, Eigen::Vector3d& torque) {
   const Eigen::Vector3d& n = rec.point.normal;
   const Eigen::Vector3d& p = rec.point.position;
   const double fn = rec.normal_force;
-  const double fx = fn * n.x() + rec.friction_force.x();
-  const double fy = fn * n.y() + rec.friction_force.y();
-  const double fz = fn * n.z() + rec.friction_force.z();
+  const double s = on_b ? 1.0 : -1.0;
+  const double fx = s * (fn * n.x() + rec.friction_force.x());
+  const double fy = s * (fn * n.y() + rec.friction_force.y());
+  const double fz = s * (fn * n.z() + rec.friction_force.z());
   force = Eigen::Vector3d(fx, fy, fz);
-  const double rbx = p.x() - origin_b.x(), rby = p.y() - origin_b.y(), rbz = p.z() - origin_b.z();
-  torque_b = Eigen::Vector3d((rby * fz - rbz * fy) + rec.moment.x(),
-                             (rbz * fx - rbx * fz) + rec.moment.y(),
-                             (rbx * fy - rby * fx) + rec.moment.z());
-  const double rax = p.x() - origin_a.x(), ray = p.y() - origin_a.y(), raz = p.z() - origin_a.z();
-  torque_a = Eigen::Vector3d((ray * -fz - raz * -fy) - rec.moment.x(),
-                             (raz * -fx - rax * -fz) - rec.moment.y(),
-                             (rax * -fy - ray * -fx) - rec.moment.z());
+  const double rx = p.x() - origin.x(), ry = p.y() - origin.y(), rz = p.z() - origin.z();
+  torque = Eigen::Vector3d((ry * fz - rz * fy) + s * rec.moment.x(),
+                           (rz * fx - rx * fz) + s * rec.moment.y(),
+                           (rx * fy - ry * fx) + s * rec.moment.z());
 }
 
 // Normal-force stage, after the kinematics: out.normal_force.

@@ -232,37 +232,43 @@ void Dynamics::friction(const State& state) {
 
 void Dynamics::assemble(const State& state) {
   const Model& m = *model_;
-  for (Wrench& w : ws_.contact_wrench) w.setZero();
   for (Wrench& w : ws_.spring_wrench) w.setZero();
-  // Each point's force and its moments about the bodies' origins, in parallel; then the sums
-  // per body in contact order (the additions of the one-thread code, in its order).
-  const std::size_t n = ws_.contacts.size();
-  point_force_.resize(n);
-  point_torque_b_.resize(n);
-  point_torque_a_.resize(n);
+  // Each point's bodies in parallel; then each body's points listed in contact order (B's
+  // entry before A's within a point); then each body's sum of its points' forces and moments
+  // in parallel, in that order: the additions of the one-thread loop over the points.
+  const std::size_t n = ws_.contacts.size(), nb = m.bodies.size();
   point_bodies_.resize(n);
   parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
-    const contact::ContactRecord& rec = ws_.contacts[i];
     const ContactPair& pair = ws_.contact_pair[i];
-    const BodyIndex a = m.geometries[pair.geometry_a].body, b = m.geometries[pair.geometry_b].body;
-    point_bodies_[i] = {a, b};
-    // Each origin only where its side is a body (the world's torque is never read).
-    const Vec3& origin_a = a.isWorld() ? rec.point.position : state.bodies[a.value].position;
-    const Vec3& origin_b = b.isWorld() ? rec.point.position : state.bodies[b.value].position;
-    contact::contactWrench(rec, origin_a, origin_b, point_force_[i], point_torque_a_[i],
-                           point_torque_b_[i]);
+    point_bodies_[i] = {m.geometries[pair.geometry_a].body, m.geometries[pair.geometry_b].body};
   });
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto [a, b] = point_bodies_[i];
-    if (!b.isWorld()) {
-      ws_.contact_wrench[b.value].force += point_force_[i];
-      ws_.contact_wrench[b.value].torque += point_torque_b_[i];
-    }
-    if (!a.isWorld()) {
-      ws_.contact_wrench[a.value].force += -point_force_[i];
-      ws_.contact_wrench[a.value].torque += point_torque_a_[i];
-    }
+  body_point_start_.assign(nb + 1, 0);
+  int* const start = body_point_start_.data();  // in locals: a store through them reloads nothing
+  for (const auto& [a, b] : point_bodies_) {
+    if (!b.isWorld()) ++start[b.value + 1];
+    if (!a.isWorld()) ++start[a.value + 1];
   }
+  for (std::size_t b = 0; b < nb; ++b) start[b + 1] += start[b];
+  body_points_.resize(static_cast<std::size_t>(start[nb]));
+  int* const entries = body_points_.data();
+  for (std::size_t i = 0; i < n; ++i) {  // start[b] runs to start[b + 1], then shifted back
+    const auto [a, b] = point_bodies_[i];
+    if (!b.isWorld()) entries[start[b.value]++] = static_cast<int>(2 * i + 1);
+    if (!a.isWorld()) entries[start[a.value]++] = static_cast<int>(2 * i);
+  }
+  for (std::size_t b = nb; b > 0; --b) start[b] = start[b - 1];
+  start[0] = 0;
+  parallelFor(nb, stageThreads(static_cast<std::size_t>(start[nb]), threads_), [&](std::size_t b) {
+    const Vec3& origin = state.bodies[b].position;
+    Vec3 sum_force = Vec3::Zero(), sum_torque = Vec3::Zero(), force, torque;
+    for (int k = start[b]; k < start[b + 1]; ++k) {
+      const auto e = static_cast<std::size_t>(entries[k]);
+      contact::contactWrench(ws_.contacts[e / 2], origin, e % 2 == 1, force, torque);
+      sum_force += force;
+      sum_torque += torque;
+    }
+    ws_.contact_wrench[b] = {sum_force, sum_torque};
+  });
   accumulateSprings(state);
   accumulateBushingsAndTorsion(state);
   if (!loads_.empty()) loads_.accumulate(state, ws_);  // core/applied_loads.hpp

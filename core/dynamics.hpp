@@ -124,10 +124,12 @@ class Dynamics {
   StageProfile profile_;
   double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on
   int threads_ = 1;
-  // assemble, per contact point: the force on B, the torques about B's and A's origins and
-  // the two bodies (A, B), computed in parallel and summed per body in contact order.
-  std::vector<Vec3> point_force_, point_torque_b_, point_torque_a_;
+  // assemble: per contact point its two bodies (A, B); per body the entries of its points in
+  // contact order, 2 i + 1 where it is point i's B and 2 i where A (body_points_, from
+  // body_point_start_[b] to body_point_start_[b + 1]): each body's sum then runs on its own
+  // thread in the one-thread order, without a copy of each point's wrench.
   std::vector<std::pair<BodyIndex, BodyIndex>> point_bodies_;
+  std::vector<int> body_point_start_, body_points_;
 };
 
 }  // namespace tribo

@@ -4,10 +4,11 @@
 // Times are processor time of the process (one thread).
 // - BM_GridSetUp/side: the scene text loaded, the model built, a Dynamics made and its first
 //   evaluation: seconds (and the loading's share), heap held afterwards (glibc's mallinfo2, bytes
-//   in use in the arena and in chunks mapped apart) in MB and per box, the model's share a
-//   box, and the process's peak resident set (VmHWM; meaningful when the benchmark runs alone
-//   in its process: --benchmark_filter='BM_GridSetUp/70$'); and apart, the seconds to make a
-//   Simulator on the loaded model (simulator_s).
+//   in use in the arena and in chunks mapped apart) in MB and per box, the shares a box of the
+//   model, the Dynamics and the initial state, and the process's peak resident set (VmHWM;
+//   meaningful when the benchmark runs alone in its process:
+//   --benchmark_filter='BM_GridSetUp/70$'); and apart, the seconds to make a Simulator on the
+//   loaded model (simulator_s).
 // - BM_GridStep/side: semi-implicit Euler steps at 1 ms: microseconds a step and a box.
 // - BM_GridGrowth: 10 x 10 and 70 x 70 stepped in the same iteration; the growth exponent
 //   log(t_70 / t_10) / log(4900 / 100) of the step's cost (1: linear in the boxes).
@@ -54,7 +55,8 @@ double heapInUse() {
 void BM_GridSetUp(benchmark::State& st) {
   const int side = static_cast<int>(st.range(0));
   const std::string text = tribo::bench::boxGridYaml(side);
-  double seconds = 0, loading = 0, held = 0, model_held = 0, simulator = 0;
+  double seconds = 0, loading = 0, held = 0, model_held = 0, dynamics_held = 0, state_held = 0,
+         simulator = 0;
   for (auto _ : st) {
     const double before = heapInUse();
     const double t0 = cpuSeconds();
@@ -62,12 +64,16 @@ void BM_GridSetUp(benchmark::State& st) {
     const double t1 = cpuSeconds();
     const double after_model = heapInUse();
     tribo::Dynamics dynamics(scene.model);
+    const double after_dynamics = heapInUse();
     const tribo::State s = dynamics.initialState();
+    const double after_state = heapInUse();
     benchmark::DoNotOptimize(dynamics.evaluate(s).contacts.size());
     seconds += cpuSeconds() - t0;
     loading += t1 - t0;
     held = heapInUse() - before;
     model_held = after_model - before;
+    dynamics_held = after_dynamics - after_model;
+    state_held = after_state - after_dynamics;
     // What `tribo run` adds: the simulator on the same model (its own Dynamics, its
     // integrator, its energy guard's floor), not counted in the heap above.
     const double t2 = cpuSeconds();
@@ -81,7 +87,12 @@ void BM_GridSetUp(benchmark::State& st) {
   st.counters["simulator_s"] = simulator / static_cast<double>(st.iterations());
   st.counters["heap_MB"] = held / 1e6;
   st.counters["heap_per_box_kB"] = held / boxes / 1e3;
-  st.counters["model_per_box_kB"] = model_held / boxes / 1e3;  // the scene's model alone
+  // The shares a box: the scene's model; the Dynamics made on it (its workspace, detector,
+  // solvers, the contact lists reserved); the initial state; the rest is what the first
+  // evaluation made (pair lists, the broadphase, per-point lists).
+  st.counters["model_per_box_kB"] = model_held / boxes / 1e3;
+  st.counters["dynamics_per_box_kB"] = dynamics_held / boxes / 1e3;
+  st.counters["state_per_box_kB"] = state_held / boxes / 1e3;
   st.counters["peak_rss_MB"] = peakRssMb();
 }
 

@@ -112,11 +112,13 @@ TEST(ContactForce, WrenchOnComponentsEqualsTheVectorFormulaBitForBit) {
   for (int k = 0; k < 20000; ++k) {
     const ContactRecord rec = random.loaded(k % 3 != 0);
     const Eigen::Vector3d oa = random.vector(), ob = random.vector();
-    Eigen::Vector3d force, torque_a, torque_b;
-    contactWrench(rec, oa, ob, force, torque_a, torque_b);
+    Eigen::Vector3d force, torque_b, force_a, torque_a;
+    contactWrench(rec, ob, true, force, torque_b);
+    contactWrench(rec, oa, false, force_a, torque_a);
     const Eigen::Vector3d f = rec.normal_force * rec.point.normal + rec.friction_force;
     expectSameBits(force, f, "force", k);
     expectSameBits(force, rec.force(), "force()", k);
+    expectSameBits(force_a, -f, "force on A", k);
     expectSameBits(torque_b, (rec.point.position - ob).cross(f) + rec.moment, "torque on B", k);
     expectSameBits(torque_a, (rec.point.position - oa).cross(-f) - rec.moment, "torque on A", k);
   }
@@ -130,8 +132,9 @@ TEST(ContactForce, WrenchMomentsBalanceAboutAnyPoint) {
   for (int k = 0; k < 2000; ++k) {
     const ContactRecord rec = random.loaded(true);
     const Eigen::Vector3d oa = random.vector(), ob = random.vector();
-    Eigen::Vector3d force, torque_a, torque_b;
-    contactWrench(rec, oa, ob, force, torque_a, torque_b);
+    Eigen::Vector3d force, torque_b, force_a, torque_a;
+    contactWrench(rec, ob, true, force, torque_b);
+    contactWrench(rec, oa, false, force_a, torque_a);
     const Eigen::Vector3d arm = (oa - ob).cross(force);
     const Eigen::Vector3d balance = torque_b + torque_a - arm;
     // Each moment rounds to its own largest term, the force's moment or the rolling one.
