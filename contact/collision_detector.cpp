@@ -463,8 +463,8 @@ void CollisionDetector::Impl::setUp() {
   // a rule a shape type that meets another with no closed form (polyhedra are made for every
   // convex shape).
   std::vector<bool> needed(n, false);
-  // Sized by geometry on the first polyhedron made (left empty, as `mesh_local` is, when a
-  // scene needs none: 100 bytes a geometry of a large scene of boxes).
+  // Sized by geometry on the first polyhedron made: left empty, as `mesh_local` is, when a
+  // scene needs none (the two were 104 bytes a geometry of a large scene of boxes).
   auto make_polyhedron = [&](int g) {
     if (polyhedra.empty()) polyhedra.resize(static_cast<std::size_t>(n));
     polyhedra[static_cast<std::size_t>(g)] = makePolyhedron(shapes[g]);
