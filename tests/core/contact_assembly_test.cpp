@@ -2,12 +2,14 @@
 // written here over the contact records, point by point in contact order: on B the point's
 // force F = F_n n + F_t and (p - o_B) x F + M, on A -F and (p - o_A) x (-F) - M
 // (contact/contact_force.hpp), for 1, 2 and 3 threads, on scenes where bodies touch each
-// other (a settled pile of 200 spheres, a box stack, two boxes on a belt), so that a body is
-// B at some points and A at others, beside the ground and kinematic bodies. The sums are
-// compared within 4e-16 of the sum of the terms' magnitudes (the same additions in the same
-// order agree bit for bit; the bound leaves the compiler room to order a product's
-// roundings). Newton's third law on top: the contact forces on all bodies add up to those of
-// the points with a world side.
+// other, so that a body is B at some points and A at others, beside the ground and kinematic
+// bodies: a settled pile of 200 spheres, a box stack, two boxes on a belt (each too small for
+// a stage to split: one thread whatever the setting), and 12 x 12 stacks of two boxes, whose
+// 1 728 body entries split the per-body sums on 2 and 3 threads (checked: the entries reach
+// kItemsPerThread a thread, and loops were split). The sums are compared within 4e-16 of the
+// sum of the terms' magnitudes (the same additions in the same order agree bit for bit; the
+// bound leaves the compiler room to order a product's roundings). Newton's third law on top:
+// the contact forces on all bodies add up to those of the points with a world side.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -15,8 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "contact/split_count.hpp"
 #include "core/dynamics.hpp"
 #include "core/simulator.hpp"
+#include "core/stage_threads.hpp"
 #include "io/scene_loader.hpp"
 
 namespace tribo {
@@ -29,9 +33,34 @@ std::string fileText(const std::string& path) {
   return s.str();
 }
 
+// n x n stacks of two 0.2 m boxes on the ground, each box at its static depth.
+std::string stacks(int n) {
+  std::ostringstream s;
+  s.precision(17);
+  const double k = 6.0e5, m = 4.0, g = 9.81;
+  s << "simulation: {time_step: 2.0e-4, integrator: semi_implicit_euler}\n"
+    << "friction_laws:\n  coulomb: {mu: 0.5, regularization: tanh, v_eps: 0.01}\n"
+    << "materials:\n  - {name: m, normal: {law: linear, stiffness: " << k
+    << ", damping: 1000}, friction: coulomb, default: true}\n"
+    << "bodies:\n  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: "
+       "halfspace}]}\n";
+  for (int i = 0; i < n * n; ++i) {
+    const double x = 0.3 * (i / n), y = 0.3 * (i % n), vx = 0.01 * (i % 7 - 3);
+    const double z0 = 0.1 - 2 * m * g / (4 * k), z1 = z0 + 0.2 - m * g / (4 * k);
+    for (int level = 0; level < 2; ++level)
+      s << "  - {name: b" << i << "_" << level << ", mass: " << m << ", position: [" << x << ", "
+        << y << ", " << (level == 0 ? z0 : z1) << "], velocity: [" << vx * level
+        << ", 0, 0], geometry: [{name: s" << i << "_" << level
+        << ", shape: box, size: [0.2, 0.2, 0.2]}]}\n";
+  }
+  return s.str();
+}
+
 std::shared_ptr<const Model> load(const std::string& file, int threads) {
   io::RunSettings settings;
   settings.threads = threads;
+  if (file.rfind("stacks", 0) == 0)
+    return io::loadSceneFromString(stacks(12), "stacks.yaml", {}, {}, settings).model;
   const std::string path = std::string(TRIBO_SOURCE_DIR) + "/scenes/" + file;
   return io::loadSceneFromString(fileText(path), path, {}, {}, settings).model;
 }
@@ -46,7 +75,8 @@ struct Sum {
   }
 };
 
-void expectAssembledAsSummed(const std::string& file, int steps) {
+// `split`: the scene's body entries must reach kItemsPerThread a thread, and loops split.
+void expectAssembledAsSummed(const std::string& file, int steps, bool split = false) {
   SCOPED_TRACE(file);
   const auto model = load(file, 1);
   Simulator sim(model);
@@ -56,11 +86,14 @@ void expectAssembledAsSummed(const std::string& file, int steps) {
     SCOPED_TRACE("threads " + std::to_string(threads));
     const auto threaded = load(file, threads);
     Dynamics dynamics(threaded);
+    const long splits_before = contact::splitLoopCount().load();
     const Workspace& ws = dynamics.evaluate(state);
+    const long splits = contact::splitLoopCount().load() - splits_before;
     const Model& m = *threaded;
     std::vector<Sum> sums(m.bodies.size());
     Vec3 on_world = Vec3::Zero();
     int between_bodies = 0;
+    std::size_t entries = 0;  // a point's sides that are bodies
     for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
       const contact::ContactRecord& rec = ws.contacts[i];
       const ContactPair& pair = ws.contact_pair[i];
@@ -80,6 +113,11 @@ void expectAssembledAsSummed(const std::string& file, int steps) {
         on_world -= f;
       }
       between_bodies += !a.isWorld() && !b.isWorld();
+      entries += static_cast<std::size_t>(!a.isWorld()) + static_cast<std::size_t>(!b.isWorld());
+    }
+    if (split && threads > 1) {
+      EXPECT_GE(entries, kItemsPerThread * static_cast<std::size_t>(threads));
+      EXPECT_GT(splits, 0);
     }
     EXPECT_GT(between_bodies, 0) << "no point between two bodies: the scene checks too little";
     Vec3 on_bodies = Vec3::Zero();
@@ -102,6 +140,10 @@ TEST(ContactAssembly, SettledSpherePile) { expectAssembledAsSummed("sphere_pile.
 TEST(ContactAssembly, BoxStack) { expectAssembledAsSummed("box_stack.yaml", 300); }
 
 TEST(ContactAssembly, TwoBoxesOnABelt) { expectAssembledAsSummed("two_boxes_on_belt.yaml", 300); }
+
+TEST(ContactAssembly, StacksOfTwoBoxesSplitAcrossThreads) {
+  expectAssembledAsSummed("stacks", 20, true);
+}
 
 }  // namespace
 }  // namespace tribo
