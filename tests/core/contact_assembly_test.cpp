@@ -12,7 +12,6 @@
 // the contact forces on all bodies add up to those of the points with a world side.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,16 +21,10 @@
 #include "core/simulator.hpp"
 #include "core/stage_threads.hpp"
 #include "io/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tribo {
 namespace {
-
-std::string fileText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // n x n stacks of two 0.2 m boxes on the ground, each box at its static depth.
 std::string stacks(int n) {
@@ -62,7 +55,7 @@ std::shared_ptr<const Model> load(const std::string& file, int threads) {
   if (file.rfind("stacks", 0) == 0)
     return io::loadSceneFromString(stacks(12), "stacks.yaml", {}, {}, settings).model;
   const std::string path = std::string(TRIBO_SOURCE_DIR) + "/scenes/" + file;
-  return io::loadSceneFromString(fileText(path), path, {}, {}, settings).model;
+  return io::loadSceneFromString(test::fileText(path), path, {}, {}, settings).model;
 }
 
 struct Sum {
