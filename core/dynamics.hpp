@@ -3,13 +3,16 @@
 //   updatePoses        kinematics (rotations, world inertias) and geometry poses
 //   detect             collision detection (contact/collision_detector.hpp)
 //   contactKinematics  per contact point: depth rate, slip (contact/contact_force.hpp)
-//   normalForces       per contact point: penalty normal force
+//   normalForces       per contact point: penalty normal force (in the kinematics' pass over
+//                      the points unless profiling, so that each record is read once)
 //   friction           per contact point: the pair's friction law, with the memory of
 //                      stateful and dynamic laws (core/friction_states.hpp)
 //   assemble           wrenches by source: contacts, force elements (spring-dampers,
 //                      bushings, torsional springs), applied loads at the state's time
 //                      (core/applied_load.hpp), joint forces (core/joint_forces.hpp)
-//   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations
+//   unconstrainedAccelerations  forces, gravity and gyroscopic terms -> accelerations (in
+//                      assemble's pass over the bodies, unless profiling, when contacts are
+//                      the only source of force)
 //   solveConstraints   Lagrange multipliers (core/constraint_solver.hpp), then joint
 //                      friction under reaction load
 // Results land in the Workspace, split by source. With profiling on, each stage's wall time

@@ -19,8 +19,10 @@ Simulator::Simulator(std::shared_ptr<const Model> model)
       last_good_(state_),
       energy_(makeEnergyGuard()) {
   thinnest_.reserve(dynamics_.model().geometries.size());
-  for (const Geometry& g : dynamics_.model().geometries)
+  for (const Geometry& g : dynamics_.model().geometries) {
     thinnest_.push_back(g.shape.thinnestHalfWidth());
+    thinnest_of_all_ = std::min(thinnest_of_all_, thinnest_.back());
+  }
 }
 
 void Simulator::setState(const State& state) {
@@ -172,24 +174,29 @@ StepStatus Simulator::check() {
       return failed(body, "friction_state", what);
   }
   const Workspace& ws = current();
+  // When the deepest point (ws.max_penetration) is within every geometry's bound, no point
+  // needs a width measured and the pass reads the forces alone: the same outcome, for a
+  // point whose depth passes no bound is skipped below (a NaN depth passes none either).
+  const bool some_deep = ws.max_penetration > thinnest_of_all_;
   for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
     const contact::ContactRecord& c = ws.contacts[i];
     const ContactPair& pair = ws.contact_pair[i];
     // Deeper than the geometry's half width along the normal: a warning (recorded here,
     // worded after the run), not a stop; a contact that is failing shows as energy rising.
     // No shallower contact needs the width (Shape::thinnestHalfWidth bounds it from below).
-    for (int g : {pair.geometry_a, pair.geometry_b}) {
-      if (!(c.point.depth > thinnest_[static_cast<std::size_t>(g)])) continue;
-      const double extent = halfWidth(m, ws, i, g);
-      if (c.point.depth > extent && c.point.depth / extent > stats_.deepest_ratio) {
-        if (stats_.deep_penetrations == 0) stats_.first_deep_time = state_.time;
-        stats_.deepest_ratio = c.point.depth / extent;
-        stats_.deepest_geometry = g;
-        stats_.deepest_depth = c.point.depth;
-        stats_.deepest_extent = extent;
+    if (some_deep)
+      for (int g : {pair.geometry_a, pair.geometry_b}) {
+        if (!(c.point.depth > thinnest_[static_cast<std::size_t>(g)])) continue;
+        const double extent = halfWidth(m, ws, i, g);
+        if (c.point.depth > extent && c.point.depth / extent > stats_.deepest_ratio) {
+          if (stats_.deep_penetrations == 0) stats_.first_deep_time = state_.time;
+          stats_.deepest_ratio = c.point.depth / extent;
+          stats_.deepest_geometry = g;
+          stats_.deepest_depth = c.point.depth;
+          stats_.deepest_extent = extent;
+        }
+        if (c.point.depth > extent) ++stats_.deep_penetrations;
       }
-      if (c.point.depth > extent) ++stats_.deep_penetrations;
-    }
     if (!std::isfinite(c.normal_force) || !c.friction_force.allFinite()) {
       const BodyIndex b = m.geometries[pair.geometry_b].body;
       const std::string body = b.isWorld() ? "world" : m.bodies[b.value].name;

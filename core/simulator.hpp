@@ -135,6 +135,7 @@ class Simulator {
   // Per geometry: no contact shallower than this is deeper than its half width
   // (contact::Shape::thinnestHalfWidth); check() measures the width only past it.
   std::vector<double> thinnest_;
+  double thinnest_of_all_ = std::numeric_limits<double>::infinity();  // the least of thinnest_
 };
 
 }  // namespace tribo

@@ -12,14 +12,21 @@
 // - BM_GridStep/side: semi-implicit Euler steps at 1 ms: microseconds a step and a box.
 // - BM_GridGrowth: 10 x 10 and 70 x 70 stepped in the same iteration; the growth exponent
 //   log(t_70 / t_10) / log(4900 / 100) of the step's cost (1: linear in the boxes).
+// - BM_GridStageGrowth: the same two grids (and 142 x 142) with the stage clock on
+//   (core/stage_profile.hpp): each stage's growth exponent between 100 and 20 164 boxes and
+//   its nanoseconds a box at each end, so that the stage whose cost a box grows is named
+//   (`rest` is the step outside the stages: the integrator's update, the checks, the guard).
+//   Wall time of the stage clock, one thread.
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
 #include <cmath>
 #include <ctime>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "box_grid_scene.hpp"
 #include "core/dynamics.hpp"
@@ -136,6 +143,45 @@ void BM_GridGrowth(benchmark::State& st) {
   st.counters["per_box_us_4900"] = 1e6 * t_large / static_cast<double>(st.iterations()) / 4900;
 }
 
+// Seconds a step by stage (the last entry: the step outside the stages), stage clock on.
+std::vector<double> stageSeconds(const std::shared_ptr<const tribo::Model>& model, int steps) {
+  tribo::Simulator sim(model);
+  for (int i = 0; i < 20; ++i) sim.step();
+  sim.setProfiling(true);
+  for (int i = 0; i < steps; ++i)
+    if (!sim.step().ok) return {};
+  const tribo::StageProfile& p = sim.stats().profile;
+  std::vector<double> out(p.seconds.begin(), p.seconds.end());
+  out.push_back(p.step - p.total());
+  for (double& s : out) s /= steps;
+  return out;
+}
+
+void BM_GridStageGrowth(benchmark::State& st) {
+  const auto small = tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(10), "grid.yaml");
+  const auto large = tribo::io::loadSceneFromString(tribo::bench::boxGridYaml(142), "grid.yaml");
+  std::vector<double> t_small(tribo::kStageCount + 1, 0.0), t_large = t_small;
+  for (auto _ : st) {
+    const auto a = stageSeconds(small.model, 2000);
+    const auto b = stageSeconds(large.model, 10);
+    if (a.empty() || b.empty()) {
+      st.SkipWithError("diverged");
+      return;
+    }
+    for (std::size_t k = 0; k < a.size(); ++k) t_small[k] += a[k], t_large[k] += b[k];
+  }
+  const double n_small = 100.0, n_large = 142.0 * 142.0, it = st.iterations();
+  for (std::size_t k = 0; k < t_small.size(); ++k) {
+    const std::string name = k < tribo::kStageCount
+                                 ? std::string(tribo::stageName(static_cast<tribo::Stage>(k)))
+                                 : std::string("rest");
+    if (t_small[k] <= 0.0 || t_large[k] <= 0.0) continue;
+    st.counters[name + "_exp"] = std::log(t_large[k] / t_small[k]) / std::log(n_large / n_small);
+    st.counters[name + "_ns_100"] = 1e9 * t_small[k] / it / n_small;
+    st.counters[name + "_ns_20164"] = 1e9 * t_large[k] / it / n_large;
+  }
+}
+
 }  // namespace
 
 // Grid sides 10, 20, 40, 70 and 142, one iteration each.
@@ -147,3 +193,4 @@ void gridSides(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_GridSetUp)->Apply(gridSides);
 BENCHMARK(BM_GridStep)->Apply(gridSides);
 BENCHMARK(BM_GridGrowth)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_GridStageGrowth)->Unit(benchmark::kMillisecond)->Iterations(3);
