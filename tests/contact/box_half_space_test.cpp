@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contact/primitive_contacts.hpp"
+#include "support/same_bits.hpp"
 
 namespace tribo::contact {
 namespace {
@@ -45,9 +46,7 @@ Eigen::Isometry3d pose(const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
   return t;
 }
 
-bool sameBits(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
-}
+using test::sameBits;
 
 TEST(BoxHalfSpaceCorners, SameBitsAsThePlainCornersOverRandomPoses) {
   std::mt19937 rng(2026);

@@ -15,13 +15,14 @@
 #include "contact/collision_detector.hpp"
 #include "contact/split_count.hpp"
 #include "support/every_pair_rule.hpp"
+#include "support/same_bits.hpp"
 
 namespace tribo::contact {
 namespace {
 
 using test::EveryPair;
 
-bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+using test::sameBits;
 
 bool samePoint(const ContactPoint& a, const ContactPoint& b) {
   bool same = a.pair == b.pair && a.feature == b.feature && sameBits(a.depth, b.depth);

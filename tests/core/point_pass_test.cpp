@@ -16,22 +16,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <sstream>
 #include <string>
 
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/same_bits.hpp"
 #include "support/scene_text.hpp"
 
 namespace tribo {
 namespace {
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-bool sameBits(const Vec3& a, const Vec3& b) {
-  return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()) && sameBits(a.z(), b.z());
-}
+using test::sameBits;
 
 std::shared_ptr<const Model> loadScene(const std::string& file, int threads) {
   io::RunSettings settings;

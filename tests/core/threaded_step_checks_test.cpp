@@ -27,6 +27,7 @@
 #include "core/energy.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
+#include "support/same_bits.hpp"
 
 namespace tribo {
 namespace {
@@ -74,7 +75,7 @@ std::shared_ptr<const Model> load(const std::string& yaml, int threads) {
   return io::loadSceneFromString(yaml, "field.yaml", {}, {}, settings).model;
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test::sameBits;
 
 // The account formed by the test: world-frame inertia, and the sources' power from the loads'
 // definitions and the contact wrench on the belt.

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "friction/tabulated_law.hpp"
+#include "support/same_bits.hpp"
 #include "support/table1_laws.hpp"
 
 namespace tribo::friction {
@@ -65,7 +66,7 @@ std::vector<BatchCase> allCases() {
   return cases;
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test::sameBits;
 
 class TangentialBatchLaws : public testing::TestWithParam<BatchCase> {};
 
