@@ -12,7 +12,6 @@
 
 #include <Eigen/Core>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <random>
 #include <string>
