@@ -57,6 +57,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
                                                              : Mat3::Zero());
   ws_.geometry_poses.assign(ng, Eigen::Isometry3d::Identity());
   geometry_motion_.resize(ng);
+  prescribed_bodies_ = tribo::prescribedBodies(m.bodies);
   at_body_origin_.reserve(ng);
   for (const Geometry& g : m.geometries)
     at_body_origin_.push_back(g.local_pose.matrix() == Eigen::Matrix4d::Identity() ? 1 : 0);
@@ -189,7 +190,7 @@ const Workspace& Dynamics::evaluate(const State& state) {
   clock.lap(Stage::kPoses);
   detect();
   clock.lap(Stage::kDetect);
-  contactKinematics(state);  // off the stage clock, with each point's normal force
+  contactKinematics(state);  // off the stage clock, with each point's normal force (and friction)
   clock.lap(Stage::kContactKinematics);
   if (profiling_) normalForces();
   clock.lap(Stage::kNormalForce);
@@ -249,6 +250,8 @@ void Dynamics::detect() {
 void Dynamics::contactKinematics(const State& state) {
   const Model& m = *model_;
   ws_.max_penetration = 0.0;
+  ws_.forces_finite = false;
+  friction_fused_ = false;
   if (ws_.contact_points.empty()) return;
   // Each geometry's motion once per evaluation, not once per contact point and side.
   const std::size_t geometries = m.geometries.size();
@@ -261,16 +264,51 @@ void Dynamics::contactKinematics(const State& state) {
   // arithmetic either way, so the same bits.
   const bool with_normal_force = !profiling_;
   const std::size_t n = ws_.contact_points.size();
-  parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
+  auto kinematics = [&](std::size_t i) {
     const contact::ContactPoint& cp = ws_.contact_points[i];
     const ContactPair& pair = ws_.contact_pair[i];
     contact::ContactRecord& rec = ws_.contacts[i];
     contact::contactKinematics(cp, geometry_motion_[static_cast<std::size_t>(pair.geometry_a)],
                                geometry_motion_[static_cast<std::size_t>(pair.geometry_b)], rec);
     if (with_normal_force) contact::normalForce(m.materials[pair.material], rec);
+  };
+  // And while no dynamic law is in play, the points go in the friction stage's chunks: each
+  // chunk's kinematics and normal forces, then its friction (FrictionStates::evaluateChunk),
+  // its deepest point and whether its forces are finite, while its 256 records (40 kB) are in
+  // cache; the friction stage's and the check's passes over all records are then not needed.
+  // Each point's arithmetic is the stages' own, and a maximum does not depend on its order:
+  // the same bits.
+  friction_fused_ = with_normal_force && friction_.pointwise();
+  if (!friction_fused_) {
+    parallelFor(n, stageThreads(n, threads_), kinematics);
+    for (const contact::ContactPoint& cp : ws_.contact_points)
+      ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
+    return;
+  }
+  constexpr std::size_t kChunk = FrictionStates::kChunk;
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  chunk_summary_.resize(chunks);
+  parallelFor(chunks, stageThreads(n, threads_), [&](std::size_t c) {
+    const std::size_t end = std::min(n, (c + 1) * kChunk);
+    ChunkSummary summary;
+    for (std::size_t i = c * kChunk; i < end; ++i) {
+      kinematics(i);
+      summary.deepest = std::max(summary.deepest, ws_.contact_points[i].depth);
+    }
+    friction_.evaluateChunk(state, ws_, c);
+    for (std::size_t i = c * kChunk; i < end; ++i) {
+      const contact::ContactRecord& rec = ws_.contacts[i];
+      summary.finite =
+          summary.finite && std::isfinite(rec.normal_force) && rec.friction_force.allFinite();
+    }
+    chunk_summary_[c] = summary;
   });
-  for (const contact::ContactPoint& cp : ws_.contact_points)
-    ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
+  bool finite = true;
+  for (const ChunkSummary& summary : chunk_summary_) {
+    ws_.max_penetration = std::max(ws_.max_penetration, summary.deepest);
+    finite = finite && summary.finite;
+  }
+  ws_.forces_finite = finite;
 }
 
 void Dynamics::normalForces() {
@@ -283,6 +321,7 @@ void Dynamics::normalForces() {
 }
 
 void Dynamics::friction(const State& state) {
+  if (friction_fused_) return;  // formed in the points' pass (contactKinematics)
   friction_.evaluate(state, ws_, stageThreads(ws_.contacts.size(), threads_));
 }
 

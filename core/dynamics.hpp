@@ -6,7 +6,10 @@
 //   normalForces       per contact point: penalty normal force (in the kinematics' pass over
 //                      the points unless profiling, so that each record is read once)
 //   friction           per contact point: the pair's friction law, with the memory of
-//                      stateful and dynamic laws (core/friction_states.hpp)
+//                      stateful and dynamic laws (core/friction_states.hpp); unless
+//                      profiling, while no dynamic law is in play, in the kinematics' pass
+//                      too, chunk by chunk (each chunk's kinematics, normal forces, then its
+//                      friction, its deepest point and whether its forces are finite)
 //   assemble           wrenches by source: contacts, force elements (spring-dampers,
 //                      bushings, torsional springs), applied loads at the state's time
 //                      (core/applied_load.hpp), joint forces (core/joint_forces.hpp)
@@ -95,6 +98,8 @@ class Dynamics {
   // The threads an evaluation may use (SimulationOptions::threads resolved, under the
   // constructing thread's ScopedThreadLimit): 1 for a scene too small to gain from more.
   int threads() const { return threads_; }
+  // The model's bodies with a prescribed motion (core/prescribed_motion.hpp), in index order.
+  const std::vector<std::size_t>& prescribedBodies() const { return prescribed_bodies_; }
 
  private:
   // The stages of evaluate, in order.
@@ -120,6 +125,7 @@ class Dynamics {
   std::vector<Mat3> inv_inertia_body_;                    // per body, zero for kinematic bodies
   std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
   std::vector<char> at_body_origin_;  // per geometry: its local pose is the identity
+  std::vector<std::size_t> prescribed_bodies_;
   // Bodies whose surface velocity is a signal, each with its memo (core/signal_memo.hpp).
   std::vector<std::pair<std::size_t, SignalVectorMemo>> varying_surfaces_;
   FrictionStates friction_;
@@ -133,6 +139,15 @@ class Dynamics {
   // thread in the one-thread order, without a copy of each point's wrench.
   std::vector<std::pair<BodyIndex, BodyIndex>> point_bodies_;
   std::vector<int> body_point_start_, body_points_;
+  // contactKinematics with the friction in its pass: each chunk of points' deepest depth and
+  // whether its forces are all finite (friction_fused_: this evaluation's friction was formed
+  // there, so the friction stage has nothing left to do).
+  struct ChunkSummary {
+    double deepest = 0.0;
+    bool finite = true;
+  };
+  std::vector<ChunkSummary> chunk_summary_;
+  bool friction_fused_ = false;
 };
 
 }  // namespace tribo

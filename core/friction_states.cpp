@@ -124,6 +124,53 @@ void FrictionStates::initial(State& state, const JointForces& joints) const {
   joints.initialJointStates(state.friction_values.data());
 }
 
+void FrictionStates::evaluatePoint(const State& state, Workspace& ws,
+                                   contact::ContactRecord& rec) const {
+  const Model& m = *model_;
+  const ContactPair& pair = pairOf(ws, rec);
+  const contact::Material& material = m.materials[pair.material];
+  const LawPlane plane(ws, pair, material.anisotropy, rec);
+  const contact::StickAnchor* anchor =
+      anchored_material_[pair.material]
+          ? contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius)
+          : nullptr;
+  if (!stateful_material_[pair.material]) {
+    contact::frictionForce(material, rec);
+  } else {
+    friction::StickView view =
+        contact::stickView(anchor, rec.point, anchorFrames(m, ws, pair), state.time);
+    view.elongation = plane.in(view.elongation);
+    contact::frictionForce(material, view, rec);
+  }
+  plane.leave(rec);
+  if (material.resistance.active()) resistingMoment(m, state, ws, pair, anchor, rec);
+}
+
+// Each run of points of one plain material through its law as a batch; the others one by one
+// (stateful laws only read the anchors, so every point on its own). The batches are the
+// point-by-point arithmetic: the same bits for any split.
+void FrictionStates::evaluateChunk(const State& state, Workspace& ws, std::size_t chunk) const {
+  const Model& m = *model_;
+  const std::size_t end = std::min(ws.contacts.size(), (chunk + 1) * kChunk);
+  friction::TangentialBatch batch;
+  for (std::size_t i = chunk * kChunk; i < end;) {
+    const int material = ws.contact_pair[i].material;
+    if (!batched_material_[material]) {
+      evaluatePoint(state, ws, ws.contacts[i++]);
+      continue;
+    }
+    const std::size_t first = i;
+    const friction::FrictionLaw& law = *m.materials[material].friction;
+    for (batch.clear(); i < end && ws.contact_pair[i].material == material; ++i)
+      batch.add(ws.contacts[i].slip);
+    batch.evaluate(law);
+    for (std::size_t k = 0; k < batch.size; ++k) {
+      contact::ContactRecord& rec = ws.contacts[first + k];
+      rec.friction_force = batch.force(k, rec.slip, rec.normal_force, &rec.mu);
+    }
+  }
+}
+
 void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) const {
   const Model& m = *model_;
   if (any_dynamic_) {  // the joints' rates, first, are the joint stage's (assemble)
@@ -131,52 +178,11 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
     std::fill(ws.friction_state_rate.begin() + joint_values_, ws.friction_state_rate.end(), 0.0);
     ws.friction_state_contact.assign(state.friction_states.size(), -1);
   }
-  // Memoryless and stateful laws: each point on its own (stateful ones only read the
-  // anchors), so in parallel when no dynamic law is in play.
-  auto independent = [&](contact::ContactRecord& rec) {
-    const ContactPair& pair = pairOf(ws, rec);
-    const contact::Material& material = m.materials[pair.material];
-    const LawPlane plane(ws, pair, material.anisotropy, rec);
-    const contact::StickAnchor* anchor =
-        anchored_material_[pair.material]
-            ? contact::findAnchor(state.stick_anchors, rec.point, m.options.collision.match_radius)
-            : nullptr;
-    if (!stateful_material_[pair.material]) {
-      contact::frictionForce(material, rec);
-    } else {
-      friction::StickView view =
-          contact::stickView(anchor, rec.point, anchorFrames(m, ws, pair), state.time);
-      view.elongation = plane.in(view.elongation);
-      contact::frictionForce(material, view, rec);
-    }
-    plane.leave(rec);
-    if (material.resistance.active()) resistingMoment(m, state, ws, pair, anchor, rec);
-  };
   if (!any_dynamic_ || steady_) {
-    // Each run of points of one plain material through its law as a batch; the others one by
-    // one. The batches are the point-by-point arithmetic: the same bits for any split.
-    constexpr std::size_t kBatch = friction::TangentialBatch::kCapacity;
+    // Each chunk of points on its own: the same bits for any split.
     const std::size_t n = ws.contacts.size();
-    contact::parallelFor((n + kBatch - 1) / kBatch, threads, [&](std::size_t chunk) {
-      friction::TangentialBatch batch;
-      const std::size_t end = std::min(n, (chunk + 1) * kBatch);
-      for (std::size_t i = chunk * kBatch; i < end;) {
-        const int material = ws.contact_pair[i].material;
-        if (!batched_material_[material]) {
-          independent(ws.contacts[i++]);
-          continue;
-        }
-        const std::size_t first = i;
-        const friction::FrictionLaw& law = *m.materials[material].friction;
-        for (batch.clear(); i < end && ws.contact_pair[i].material == material; ++i)
-          batch.add(ws.contacts[i].slip);
-        batch.evaluate(law);
-        for (std::size_t k = 0; k < batch.size; ++k) {
-          contact::ContactRecord& rec = ws.contacts[first + k];
-          rec.friction_force = batch.force(k, rec.slip, rec.normal_force, &rec.mu);
-        }
-      }
-    });
+    contact::parallelFor((n + kChunk - 1) / kChunk, threads,
+                         [&](std::size_t chunk) { evaluateChunk(state, ws, chunk); });
     return;
   }
   // Dynamic laws: the first point using a record drives it, so in contact order.
@@ -193,7 +199,7 @@ void FrictionStates::evaluate(const State& state, Workspace& ws, int threads) co
     const ContactPair& pair = pairOf(ws, rec);
     const friction::DynamicFrictionLaw* law = dynamic_law_[pair.material];
     if (law == nullptr) {
-      independent(rec);
+      evaluatePoint(state, ws, rec);
       continue;
     }
     const LawPlane plane(ws, pair, m.materials[pair.material].anisotropy, rec);

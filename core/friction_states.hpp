@@ -41,6 +41,7 @@
 #include "core/state.hpp"
 #include "core/workspace.hpp"
 #include "friction/dynamic_law.hpp"
+#include "friction/tangential_batch.hpp"
 
 namespace tribo {
 
@@ -62,6 +63,14 @@ class FrictionStates {
   // The friction stage of an evaluation at `state` (contact points, their pairs and normal
   // forces in `ws`), on up to `threads` threads when no dynamic law is in play.
   void evaluate(const State& state, Workspace& ws, int threads) const;
+  // The same stage one chunk at a time, for the points' pass of core/dynamics.cpp, which forms
+  // each chunk's kinematics and normal forces and then its friction while its records are in
+  // cache: points [kChunk c, kChunk (c + 1)) of ws.contacts (fewer in the last chunk). Only
+  // while no dynamic law is in play (pointwise()): then each point's force depends on its own
+  // record alone, and evaluate is these chunks in any order, the same bits.
+  static constexpr std::size_t kChunk = friction::TangentialBatch::kCapacity;
+  bool pointwise() const { return !any_dynamic_; }
+  void evaluateChunk(const State& state, Workspace& ws, std::size_t chunk) const;
   // Before a step, with `ws` evaluated at `state`: the records of dynamic laws (above).
   // Returns true when a force of the evaluation may have changed (a state was turned or a
   // record shared by two points was split), so the caller must evaluate again; otherwise it
@@ -81,6 +90,10 @@ class FrictionStates {
   static constexpr double kRebaseAngle = 1e-3;  // [rad]
 
  private:
+  // A point whose material is not batched: memoryless or stateful law, in its law's plane,
+  // with its rolling and spinning moment.
+  void evaluatePoint(const State& state, Workspace& ws, contact::ContactRecord& rec) const;
+
   const Model* model_;
   int joint_values_ = 0;
   std::vector<char> stateful_material_;  // per material

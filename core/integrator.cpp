@@ -53,7 +53,7 @@ class RungeKutta4 final : public Integrator {
         makeStage(dynamics, state, rates_[k - 1], z_rates_[k - 1], kStageTime[k] * h);
         // Kinematic bodies along signals at the stage's time exactly, not to the stage's
         // order (their velocity's curvature would err by h^2 v'' / 8 in the slip).
-        placePrescribedBodies(dynamics.model().bodies, stage_);
+        placePrescribedBodies(dynamics.model().bodies, dynamics.prescribedBodies(), stage_);
       }
       const State& at = k == 0 ? state : stage_;
       const bool reuse = k == 0 && start_is_evaluated;

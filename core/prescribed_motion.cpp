@@ -51,9 +51,17 @@ void PrescribedMotion::reserveIntegrals(double until) const {
   spin_rate.reserveIntegral(until);
 }
 
-void placePrescribedBodies(const std::vector<Body>& bodies, State& state) {
+std::vector<std::size_t> prescribedBodies(const std::vector<Body>& bodies) {
+  std::vector<std::size_t> prescribed;
   for (std::size_t b = 0; b < bodies.size(); ++b)
-    if (bodies[b].motion) state.bodies[b] = bodies[b].motion->at(bodies[b], state.time);
+    if (bodies[b].motion) prescribed.push_back(b);
+  return prescribed;
+}
+
+void placePrescribedBodies(const std::vector<Body>& bodies,
+                           const std::vector<std::size_t>& prescribed, State& state) {
+  for (const std::size_t b : prescribed)
+    state.bodies[b] = bodies[b].motion->at(bodies[b], state.time);
 }
 
 }  // namespace tribo

@@ -92,7 +92,7 @@ StepStatus Simulator::advance() {
       integrator_->step(dynamics_, state_, model().options.time_step, evaluated_);
   if (integrated.ok) {
     // Kinematic bodies along signals end the step exactly where their signals put them.
-    placePrescribedBodies(model().bodies, state_);
+    placePrescribedBodies(model().bodies, dynamics_.prescribedBodies(), state_);
     dynamics_.projectConstraints(state_);  // no-op unless enabled
   }
   evaluated_ = false;
@@ -177,8 +177,11 @@ StepStatus Simulator::check() {
   // When the deepest point (ws.max_penetration) is within every geometry's bound, no point
   // needs a width measured and the pass reads the forces alone: the same outcome, for a
   // point whose depth passes no bound is skipped below (a NaN depth passes none either).
+  // And when the points' pass found every force finite (Workspace::forces_finite), the pass
+  // has nothing left to find.
   const bool some_deep = ws.max_penetration > thinnest_of_all_;
-  for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
+  const std::size_t points = some_deep || !ws.forces_finite ? ws.contacts.size() : 0;
+  for (std::size_t i = 0; i < points; ++i) {
     const contact::ContactRecord& c = ws.contacts[i];
     const ContactPair& pair = ws.contact_pair[i];
     // Deeper than the geometry's half width along the normal: a warning (recorded here,

@@ -62,6 +62,10 @@ struct Workspace {
   double max_constraint_rate_error = 0.0;  // max |J v|
   int max_constraint_joint = -1;           // the joint of the row with max |Phi| (-1: none)
   double max_penetration = 0.0;            // contactKinematics: deepest contact [m]
+  // contactKinematics, when the friction is formed in its pass (core/dynamics.cpp): every
+  // point's normal and friction force is finite, so Simulator::check need not read them
+  // again. False when they were not screened (or some force is not finite).
+  bool forces_finite = false;
   // solveConstraints: joint friction under reaction load (core/joint_forces.hpp): false when
   // its fixed-point iteration stopped at the cap before the friction torques settled.
   bool joint_friction_converged = true;

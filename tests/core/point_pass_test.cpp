@@ -7,6 +7,13 @@
 //   (a box grid whose loops split on 2 threads, checked, a pile of spheres and a Hunt-Crossley ball
 //   drop through its bounce, whose accelerations are fused; the belt under RK4 on its joint and
 //   LuGre stick-slip on its spring, whose are not);
+// - the friction formed in the same pass, chunk by chunk, while no dynamic law is in play:
+//   besides the scenes above, a grid of sliding boxes whose four materials (a batched
+//   Coulomb law, elastic_stick with its anchors, an anisotropic law, rolling and spinning
+//   resistance) alternate within each chunk of points, on 2 threads (split, checked);
+// - the check's reading of the forces skipped when that pass found them finite: a box driven
+//   so deep in one step that its normal force overflows still stops the run as a non-finite
+//   contact force on that box, merged or apart;
 // - the per-step penetration warning (Simulator::check), which measures no width when the
 //   deepest point is within every geometry's bound: a heavy box and a thin plate side by side
 //   on a half-space, the box sunk to m g / (4 k) at each corner (analytic static depth), so
@@ -18,6 +25,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "contact/split_count.hpp"
 #include "core/simulator.hpp"
@@ -84,6 +92,107 @@ TEST(PointPass, MergedPassesGiveTheSeparateStagesBits) {
       EXPECT_TRUE(sameBits(wa.angular_acceleration[k], wb.angular_acceleration[k])) << k;
     }
     EXPECT_TRUE(sameBits(fused.stats().max_penetration, apart.stats().max_penetration));
+  }
+}
+
+// A side x side grid of 0.1 m boxes sliding on a half-space at 0.3 m/s, box k of surface
+// s(k % 4): each surface pair its own material, so that the four kinds of friction point
+// alternate every four points.
+std::string mixedGrid(int side) {
+  std::ostringstream s;
+  s << "simulation: {time_step: 1.0e-4, integrator: semi_implicit_euler, gravity: [0, 0, -9.81],"
+    << " threads: 2}\n"
+    << "friction_laws:\n"
+    << "  coulomb: {mu: 0.4, regularization: tanh, v_eps: 0.01}\n"
+    << "  elastic_stick: {mu_s: 0.5, mu_k: 0.4, stiffness: 1.0e5, damping: 100}\n"
+    << "materials:\n"
+    << "  - {name: plain, friction: coulomb, normal: {stiffness: 1.0e5, damping: 200},"
+    << " surfaces: [[floor, s0]], default: true}\n"
+    << "  - {name: stick, friction: elastic_stick, normal: {stiffness: 1.0e5, damping: 200},"
+    << " surfaces: [[floor, s1]]}\n"
+    << "  - {name: grain, friction: coulomb, normal: {stiffness: 1.0e5, damping: 200},"
+    << " anisotropy: {frame: b, axis: [1, 0, 0], ratio: [0.5, 1.5]}, surfaces: [[floor, s2]]}\n"
+    << "  - {name: rolls, friction: coulomb, normal: {stiffness: 1.0e5, damping: 200},"
+    << " rolling: {length: 0.002, stiffness: 50, damping: 0.8},"
+    << " spinning: {mu: 0.3, radius: 0.005, stiffness: 10, damping: 0.1},"
+    << " surfaces: [[floor, s3]]}\n"
+    << "bodies:\n"
+    << "  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: halfspace,"
+    << " surface: floor}]}\n";
+  for (int k = 0; k < side * side; ++k)
+    s << "  - {name: b" << k << ", mass: 1, position: [" << 0.15 * (k % side) << ", "
+      << 0.15 * (k / side) << ", 0.0499], velocity: [0.3, " << 0.05 * (k % 3) << ", 0],"
+      << " geometry: [{name: g" << k << ", shape: box, size: [0.1, 0.1, 0.1], surface: s" << k % 4
+      << "}]}\n";
+  return s.str();
+}
+
+TEST(PointPass, FrictionInTheKinematicsPassGivesTheStageBitsOnMixedMaterials) {
+  const auto model = io::loadSceneFromString(mixedGrid(12), "mixed_grid.yaml").model;
+  ASSERT_EQ(model->materials.size(), 4u);
+  Simulator fused(model), apart(model);
+  apart.setProfiling(true);
+  const long splits_before = contact::splitLoopCount().load();
+  for (int i = 0; i < 300; ++i) {
+    ASSERT_TRUE(fused.step().ok);
+    ASSERT_TRUE(apart.step().ok);
+  }
+  EXPECT_GT(contact::splitLoopCount().load(), splits_before);
+  const Workspace &wa = fused.current(), &wb = apart.current();
+  // 576 points: more than one chunk, and every material within the first.
+  ASSERT_EQ(wa.contacts.size(), 4u * 144u);
+  ASSERT_EQ(wb.contacts.size(), wa.contacts.size());
+  std::vector<int> in_first_chunk(4, 0);
+  for (std::size_t i = 0; i < 256; ++i) ++in_first_chunk[wa.contact_pair[i].material];
+  for (int count : in_first_chunk) EXPECT_GT(count, 0);
+  EXPECT_FALSE(fused.state().stick_anchors.empty());  // elastic_stick and rolling anchors
+  EXPECT_TRUE(wa.forces_finite);
+  EXPECT_FALSE(wb.forces_finite);  // apart: not screened, the check reads them
+  for (std::size_t i = 0; i < wa.contacts.size(); ++i) {
+    EXPECT_TRUE(sameBits(wa.contacts[i].normal_force, wb.contacts[i].normal_force)) << i;
+    EXPECT_TRUE(sameBits(wa.contacts[i].friction_force, wb.contacts[i].friction_force)) << i;
+    EXPECT_TRUE(sameBits(wa.contacts[i].moment, wb.contacts[i].moment)) << i;
+    EXPECT_TRUE(sameBits(wa.contacts[i].mu, wb.contacts[i].mu)) << i;
+  }
+  const State &a = fused.state(), &b = apart.state();
+  for (std::size_t k = 0; k < a.bodies.size(); ++k) {
+    EXPECT_TRUE(sameBits(a.bodies[k].position, b.bodies[k].position)) << "body " << k;
+    EXPECT_TRUE(sameBits(a.bodies[k].velocity, b.bodies[k].velocity)) << "body " << k;
+    EXPECT_TRUE(sameBits(a.bodies[k].angular_velocity, b.bodies[k].angular_velocity)) << k;
+  }
+  // The boxes slid: friction acted (not a grid at rest, where every law gives zero).
+  EXPECT_LT(a.bodies[1].velocity.x(), 0.3 - 0.3 * 9.81 * 300 * 1e-4 * 0.5);
+}
+
+TEST(PointPass, AnOverflowingNormalForceStillStopsTheRunNamingTheBox) {
+  // A 0.1 m box 10 mm above the floor falling at 3 m/s with a 10 ms step: one step later its
+  // corners are 20 mm deep (within its 50 mm half height: no penetration warning, so the check
+  // reads the forces only when the points' pass did not screen them) and sinking at 3 m/s, and
+  // c d' = 1e308 x 3 overflows; its state is still finite.
+  const double gap = 0.01, speed = 3.0, step = 0.01, damping = 1e308;
+  ASSERT_TRUE(std::isinf(damping * speed));
+  std::ostringstream s;
+  s.precision(17);
+  s << "simulation: {time_step: " << step
+    << ", integrator: semi_implicit_euler, gravity: [0, 0, 0]}\n"
+    << "friction_laws: {coulomb: {mu: 0.4, regularization: tanh, v_eps: 0.01}}\n"
+    << "materials: [{name: m, friction: coulomb, normal: {stiffness: 1.0e5, damping: " << damping
+    << "}, default: true}]\n"
+    << "bodies:\n"
+    << "  - {name: ground, kind: kinematic, geometry: [{name: floor, shape: halfspace}]}\n"
+    << "  - {name: falling, mass: 1, position: [0, 0, " << 0.05 + gap << "], velocity: [0.1, 0, "
+    << -speed << "], geometry: [{name: cube, shape: box, size: [0.1, 0.1, 0.1]}]}\n";
+  const auto model = io::loadSceneFromString(s.str(), "overflow.yaml").model;
+  for (const bool profiling : {false, true}) {
+    SCOPED_TRACE(profiling ? "apart" : "merged");
+    Simulator sim(model);
+    sim.setProfiling(profiling);
+    const StepStatus status = sim.step();
+    EXPECT_FALSE(status.ok);
+    EXPECT_EQ(status.quantity, "contact_force") << status.message;
+    EXPECT_EQ(status.body, "falling") << status.message;
+    EXPECT_NE(status.message.find("geometry 'cube'"), std::string::npos) << status.message;
+    EXPECT_TRUE(sim.state().bodies[1].position.allFinite());  // the last good state, kept
   }
 }
 
