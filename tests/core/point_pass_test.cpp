@@ -12,8 +12,9 @@
 //   Coulomb law, elastic_stick with its anchors, an anisotropic law, rolling and spinning
 //   resistance) alternate within each chunk of points, on 2 threads (split, checked);
 // - the check's reading of the forces skipped when that pass found them finite: a box driven
-//   so deep in one step that its normal force overflows still stops the run as a non-finite
-//   contact force on that box, merged or apart;
+//   into the floor so fast in one step that its normal force's damping term overflows (within
+//   its half height, so no penetration warning reads the points) still stops the run as a
+//   non-finite contact force on that box, merged or apart;
 // - the per-step penetration warning (Simulator::check), which measures no width when the
 //   deepest point is within every geometry's bound: a heavy box and a thin plate side by side
 //   on a half-space, the box sunk to m g / (4 k) at each corner (analytic static depth), so
