@@ -251,7 +251,6 @@ void Dynamics::contactKinematics(const State& state) {
   const Model& m = *model_;
   ws_.max_penetration = 0.0;
   ws_.forces_finite = false;
-  friction_fused_ = false;
   if (ws_.contact_points.empty()) return;
   // Each geometry's motion once per evaluation, not once per contact point and side.
   const std::size_t geometries = m.geometries.size();
@@ -278,8 +277,7 @@ void Dynamics::contactKinematics(const State& state) {
   // cache; the friction stage's and the check's passes over all records are then not needed.
   // Each point's arithmetic is the stages' own, and a maximum does not depend on its order:
   // the same bits.
-  friction_fused_ = with_normal_force && friction_.pointwise();
-  if (!friction_fused_) {
+  if (!frictionInPointsPass()) {
     parallelFor(n, stageThreads(n, threads_), kinematics);
     for (const contact::ContactPoint& cp : ws_.contact_points)
       ws_.max_penetration = std::max(ws_.max_penetration, cp.depth);
@@ -321,7 +319,7 @@ void Dynamics::normalForces() {
 }
 
 void Dynamics::friction(const State& state) {
-  if (friction_fused_) return;  // formed in the points' pass (contactKinematics)
+  if (frictionInPointsPass()) return;  // formed in the points' pass (contactKinematics)
   friction_.evaluate(state, ws_, stageThreads(ws_.contacts.size(), threads_));
 }
 

@@ -140,14 +140,15 @@ class Dynamics {
   std::vector<std::pair<BodyIndex, BodyIndex>> point_bodies_;
   std::vector<int> body_point_start_, body_points_;
   // contactKinematics with the friction in its pass: each chunk of points' deepest depth and
-  // whether its forces are all finite (friction_fused_: this evaluation's friction was formed
-  // there, so the friction stage has nothing left to do).
+  // whether its forces are all finite.
   struct ChunkSummary {
     double deepest = 0.0;
     bool finite = true;
   };
   std::vector<ChunkSummary> chunk_summary_;
-  bool friction_fused_ = false;
+  // The friction is formed in contactKinematics' pass (the friction stage has nothing left to
+  // do): the stages are not timed apart and no dynamic law is in play.
+  bool frictionInPointsPass() const { return !profiling_ && friction_.pointwise(); }
 };
 
 }  // namespace tribo
