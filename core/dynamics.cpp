@@ -326,10 +326,42 @@ void Dynamics::friction(const State& state) {
 void Dynamics::assemble(const State& state) {
   const Model& m = *model_;
   for (Wrench& w : ws_.spring_wrench) w.setZero();
+  const std::size_t n = ws_.contacts.size(), nb = m.bodies.size();
+  const bool with_accelerations = accelerationsWithContactSums(profiling_, m, ws_);
+  if (stageThreads(std::max(2 * n, with_accelerations ? nb : 0), threads_) == 1) {
+    // One thread (2 n bounds the entries listed below): the points walked once in contact
+    // order, each adding to its B's sum, then its A's, gives each body's sum the additions
+    // of the listing below in the same order, without the listing.
+    for (std::size_t b = 0; b < nb; ++b) ws_.contact_wrench[b] = {Vec3::Zero(), Vec3::Zero()};
+    Vec3 force, torque;
+    for (std::size_t i = 0; i < n; ++i) {
+      const ContactPair& pair = ws_.contact_pair[i];
+      for (const auto& [g, is_b] : {std::pair{pair.geometry_b, true}, {pair.geometry_a, false}}) {
+        const BodyIndex body = m.geometries[g].body;
+        if (body.isWorld()) continue;
+        contact::contactWrench(ws_.contacts[i], state.bodies[body.value].position, is_b, force,
+                               torque);
+        ws_.contact_wrench[body.value].force += force;
+        ws_.contact_wrench[body.value].torque += torque;
+      }
+    }
+    if (with_accelerations)
+      for (std::size_t b = 0; b < nb; ++b) unconstrainedAcceleration(m, state, ws_, b);
+  } else {
+    listedContactSums(state, with_accelerations);
+  }
+  accumulateSprings(state);
+  accumulateBushingsAndTorsion(state);
+  if (!loads_.empty()) loads_.accumulate(state, ws_);  // core/applied_loads.hpp
+  joint_forces_.accumulate(state, ws_);
+}
+
+void Dynamics::listedContactSums(const State& state, bool with_accelerations) {
+  const Model& m = *model_;
+  const std::size_t n = ws_.contacts.size(), nb = m.bodies.size();
   // Each point's bodies in parallel; then each body's points listed in contact order (B's
   // entry before A's within a point); then each body's sum of its points' forces and moments
   // in parallel, in that order: the additions of the one-thread loop over the points.
-  const std::size_t n = ws_.contacts.size(), nb = m.bodies.size();
   point_bodies_.resize(n);
   parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
     const ContactPair& pair = ws_.contact_pair[i];
@@ -351,7 +383,6 @@ void Dynamics::assemble(const State& state) {
   }
   for (std::size_t b = nb; b > 0; --b) start[b] = start[b - 1];
   start[0] = 0;
-  const bool with_accelerations = accelerationsWithContactSums(profiling_, m, ws_);
   const std::size_t items = std::max<std::size_t>(start[nb], with_accelerations ? nb : 0);
   parallelFor(nb, stageThreads(items, threads_), [&](std::size_t b) {
     const Vec3& origin = state.bodies[b].position;
@@ -365,10 +396,6 @@ void Dynamics::assemble(const State& state) {
     ws_.contact_wrench[b] = {sum_force, sum_torque};
     if (with_accelerations) unconstrainedAcceleration(m, state, ws_, b);
   });
-  accumulateSprings(state);
-  accumulateBushingsAndTorsion(state);
-  if (!loads_.empty()) loads_.accumulate(state, ws_);  // core/applied_loads.hpp
-  joint_forces_.accumulate(state, ws_);
 }
 
 void Dynamics::accumulateSprings(const State& state) {

@@ -109,6 +109,7 @@ class Dynamics {
   void normalForces();
   void friction(const State& state);
   void assemble(const State& state);
+  void listedContactSums(const State& state, bool with_accelerations);  // assemble's, split
   void unconstrainedAccelerations(const State& state);
   void solveConstraints(const State& state);
 
@@ -133,10 +134,10 @@ class Dynamics {
   StageProfile profile_;
   double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on
   int threads_ = 1;
-  // assemble: per contact point its two bodies (A, B); per body the entries of its points in
-  // contact order, 2 i + 1 where it is point i's B and 2 i where A (body_points_, from
-  // body_point_start_[b] to body_point_start_[b + 1]): each body's sum then runs on its own
-  // thread in the one-thread order, without a copy of each point's wrench.
+  // assemble on more than one thread: per contact point its two bodies (A, B); per body the
+  // entries of its points in contact order, 2 i + 1 where it is point i's B and 2 i where A
+  // (body_points_, from body_point_start_[b] to body_point_start_[b + 1]): each body's sum
+  // then runs on its own thread in the one-thread order, without a copy of each point's wrench.
   std::vector<std::pair<BodyIndex, BodyIndex>> point_bodies_;
   std::vector<int> body_point_start_, body_points_;
   // contactKinematics with the friction in its pass: each chunk of points' deepest depth and

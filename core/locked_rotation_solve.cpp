@@ -1,6 +1,5 @@
 #include "core/locked_rotation_solve.hpp"
 
-#include <cmath>
 #include <map>
 
 namespace tribo {
@@ -8,10 +7,14 @@ namespace tribo {
 namespace {
 
 // Whether a 3 x 3 matrix is invertible with room to spare: |det| against the product of its
-// rows' lengths (1 for orthonormal rows, 0 for dependent ones).
+// rows' lengths (1 for orthonormal rows, 0 for dependent ones), both squared (no roots taken:
+// this runs at every evaluation). Rows so long or so short that the squares leave the double
+// range read as not well conditioned, and the caller factorizes instead.
 bool wellConditioned(const Mat3& m) {
-  const double scale = m.row(0).norm() * m.row(1).norm() * m.row(2).norm();
-  return scale > 0.0 && std::abs(m.determinant()) > 1e-9 * scale;
+  const double scale_squared =
+      m.row(0).squaredNorm() * m.row(1).squaredNorm() * m.row(2).squaredNorm();
+  const double det = m.determinant();
+  return scale_squared > 0.0 && det * det > 1e-18 * scale_squared;
 }
 
 }  // namespace
