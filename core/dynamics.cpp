@@ -184,13 +184,14 @@ bool accelerationsWithContactSums(bool profiling, const Model& m, const Workspac
 
 }  // namespace
 
-const Workspace& Dynamics::evaluate(const State& state) {
+const Workspace& Dynamics::evaluate(const State& state, bool point_energy) {
   StageClock clock(profiling_ ? &profile_ : nullptr);
   updatePoses(state);
   clock.lap(Stage::kPoses);
   detect();
   clock.lap(Stage::kDetect);
-  contactKinematics(state);  // off the stage clock, with each point's normal force (and friction)
+  // Off the stage clock, with each point's normal force (and friction, and elastic energy).
+  contactKinematics(state, point_energy);
   clock.lap(Stage::kContactKinematics);
   if (profiling_) normalForces();
   clock.lap(Stage::kNormalForce);
@@ -247,10 +248,11 @@ void Dynamics::detect() {
   }
 }
 
-void Dynamics::contactKinematics(const State& state) {
+void Dynamics::contactKinematics(const State& state, bool point_energy) {
   const Model& m = *model_;
   ws_.max_penetration = 0.0;
   ws_.forces_finite = false;
+  ws_.point_elastic.clear();
   if (ws_.contact_points.empty()) return;
   // Each geometry's motion once per evaluation, not once per contact point and side.
   const std::size_t geometries = m.geometries.size();
@@ -286,12 +288,18 @@ void Dynamics::contactKinematics(const State& state) {
   constexpr std::size_t kChunk = FrictionStates::kChunk;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   chunk_summary_.resize(chunks);
+  // Asked for, each point's elastic energy too: the energy guard's term, the same function of
+  // the same depth as its own pass over the records would form (core/energy.cpp).
+  if (point_energy) ws_.point_elastic.resize(n);
   parallelFor(chunks, stageThreads(n, threads_), [&](std::size_t c) {
     const std::size_t end = std::min(n, (c + 1) * kChunk);
     ChunkSummary summary;
     for (std::size_t i = c * kChunk; i < end; ++i) {
       kinematics(i);
-      summary.deepest = std::max(summary.deepest, ws_.contact_points[i].depth);
+      const double depth = ws_.contact_points[i].depth;
+      summary.deepest = std::max(summary.deepest, depth);
+      if (point_energy)
+        ws_.point_elastic[i] = m.materials[ws_.contact_pair[i].material].normal.energy(depth);
     }
     friction_.evaluateChunk(state, ws_, c);
     for (std::size_t i = c * kChunk; i < end; ++i) {

@@ -9,7 +9,8 @@
 //                      stateful and dynamic laws (core/friction_states.hpp); unless
 //                      profiling, while no dynamic law is in play, in the kinematics' pass
 //                      too, chunk by chunk (each chunk's kinematics, normal forces, then its
-//                      friction, its deepest point and whether its forces are finite)
+//                      friction, its deepest point and whether its forces are finite; for
+//                      the evaluation the energy guard reads, each point's elastic energy)
 //   assemble           wrenches by source: contacts, force elements (spring-dampers,
 //                      bushings, torsional springs), applied loads at the state's time
 //                      (core/applied_load.hpp), joint forces (core/joint_forces.hpp)
@@ -52,8 +53,10 @@ class Dynamics {
   // The state a model starts from (its bodies' initial poses and velocities, t = 0).
   State initialState() const;
   // Evaluates forces and accelerations at `state`; the workspace stays valid until the
-  // next call.
-  const Workspace& evaluate(const State& state);
+  // next call. With `point_energy`, each contact point's elastic energy too, where it can be
+  // formed in the points' pass (Workspace::point_elastic): for the evaluation the energy
+  // guard reads.
+  const Workspace& evaluate(const State& state, bool point_energy = false);
   const Workspace& workspace() const { return ws_; }
   // The joint solve of the last evaluation (its multipliers, the path it took).
   const ConstraintSolver& constraintSolver() const { return solver_; }
@@ -105,7 +108,7 @@ class Dynamics {
   // The stages of evaluate, in order.
   void updatePoses(const State& state);
   void detect();
-  void contactKinematics(const State& state);
+  void contactKinematics(const State& state, bool point_energy);
   void normalForces();
   void friction(const State& state);
   void assemble(const State& state);

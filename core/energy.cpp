@@ -88,7 +88,13 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
   const std::size_t nb = model.bodies.size(), np = ws.contacts.size();
   const bool surfaces = std::any_of(ws.surface_velocity.begin(), ws.surface_velocity.end(),
                                     [](const Vec3& v) { return v.squaredNorm() != 0.0; });
-  const int body_threads = stageThreads(nb, threads), point_threads = stageThreads(np, threads);
+  // No surface moving, the points' terms are their elastic energies alone (both powers +0),
+  // and the evaluation may have formed them in its pass over the points
+  // (Workspace::point_elastic: the same function of the same depth): then they are summed
+  // from that list, in the same order, instead of from the records.
+  const bool elastic_listed = !surfaces && ws.point_elastic.size() == np;
+  const int body_threads = stageThreads(nb, threads);
+  const int point_threads = elastic_listed ? 1 : stageThreads(np, threads);
   if (body_threads > 1) {
     terms.bodies.resize(nb);
     contact::parallelFor(nb, body_threads, [&](std::size_t b) {
@@ -136,7 +142,12 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
     a.elastic += torsionalEnergy(
         spring, torsionalDeflection(spring, bodyKinematics(state, ws.rotation, spring.body_a),
                                     bodyKinematics(state, ws.rotation, spring.body_b)));
-  // A side without a surface speed holds +0, and x - (+0) is x bit for bit.
+  // A side without a surface speed holds +0, and x - (+0) is x bit for bit: the listed terms
+  // subtract nothing.
+  if (elastic_listed) {
+    for (const double e : ws.point_elastic) a.elastic += e;
+    return a;
+  }
   for (std::size_t i = 0; i < np; ++i) {
     const EnergyTerms::Point t =
         point_threads > 1 ? terms.points[i] : pointTerms(model, ws, i, surfaces);

@@ -53,7 +53,7 @@ void Simulator::setLoadCommand(std::size_t load, const std::optional<Vec3>& forc
 
 const Workspace& Simulator::current() {
   if (!evaluated_) {
-    dynamics_.evaluate(state_);
+    dynamics_.evaluate(state_, /*point_energy=*/true);  // the evaluation the guard reads
     ++own_evaluations_;
     evaluated_ = true;
   }

@@ -66,6 +66,11 @@ struct Workspace {
   // point's normal and friction force is finite, so Simulator::check need not read them
   // again. False when they were not screened (or some force is not finite).
   bool forces_finite = false;
+  // contactKinematics, when the friction is formed in its pass and the evaluation was asked
+  // for the points' energy (Dynamics::evaluate): each point's elastic energy U(d), in contact
+  // order, formed while its record is in cache (the energy guard's contact terms,
+  // core/energy.cpp). Empty when not formed.
+  std::vector<double> point_elastic;
   // solveConstraints: joint friction under reaction load (core/joint_forces.hpp): false when
   // its fixed-point iteration stopped at the cap before the friction torques settled.
   bool joint_friction_converged = true;
