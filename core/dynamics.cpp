@@ -340,7 +340,7 @@ void Dynamics::assemble(const State& state) {
     // One thread (2 n bounds the entries listed below): the points walked once in contact
     // order, each adding to its B's sum, then its A's, gives each body's sum the additions
     // of the listing below in the same order, without the listing.
-    for (std::size_t b = 0; b < nb; ++b) ws_.contact_wrench[b] = {Vec3::Zero(), Vec3::Zero()};
+    for (Wrench& w : ws_.contact_wrench) w.setZero();
     Vec3 force, torque;
     for (std::size_t i = 0; i < n; ++i) {
       const ContactPair& pair = ws_.contact_pair[i];
