@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "contact/parallel_range.hpp"
 #include "core/model_detector.hpp"
@@ -35,8 +36,20 @@ inline void applyAt(Wrench& w, const Vec3& origin, const Vec3& point, const Vec3
 
 }  // namespace
 
+int autoThreads() {
+  // OMP_NUM_THREADS's first number, read from the environment rather than from OpenMP's
+  // current setting: a library in the same process may change that (LAMMPS sets one thread
+  // when it opens). Else one per core this process may run on.
+  if (const char* env = std::getenv("OMP_NUM_THREADS"); env != nullptr) {
+    char* end = nullptr;
+    const long n = std::strtol(env, &end, 10);
+    if (end != env && n >= 1) return static_cast<int>(std::min(n, 4096L));
+  }
+  return omp_get_num_procs();
+}
+
 int resolveThreads(int requested) {
-  int n = requested == kAutoThreads ? omp_get_max_threads() : requested;
+  int n = requested == kAutoThreads ? autoThreads() : requested;
   if (const int limit = ScopedThreadLimit::limit(); limit > 0) n = std::min(n, limit);
   return std::max(1, n);
 }
@@ -104,7 +117,12 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
                 static_cast<std::size_t>(model_->options.collision.max_points_per_pair) *
                     (model_->automatic_contacts ? 3 * model_->geometries.size()
                                                 : model_->contact_pairs.size())});
-  threads_ = stageThreads(most_items, resolveThreads(model_->options.threads));
+  most_threads_ = stageThreads(most_items, resolveThreads(model_->options.threads));
+  useThreads(most_threads_);
+}
+
+void Dynamics::useThreads(int threads) {
+  threads_ = std::clamp(threads, 1, most_threads_);
   detector_.setThreads(threads_);
 }
 

@@ -98,9 +98,14 @@ class Dynamics {
   void setProfiling(bool on);
   bool profiling() const { return profiling_; }
   const StageProfile& profile() const { return profile_; }
+  // The threads an evaluation uses now: mostThreads() unless useThreads chose fewer.
+  int threads() const { return threads_; }
   // The threads an evaluation may use (SimulationOptions::threads resolved, under the
   // constructing thread's ScopedThreadLimit): 1 for a scene too small to gain from more.
-  int threads() const { return threads_; }
+  int mostThreads() const { return most_threads_; }
+  // From the next evaluation on, `threads` threads (within 1 and mostThreads()); the results
+  // are the same bit for bit (core/thread_choice.hpp chooses it for `threads: auto`).
+  void useThreads(int threads);
   // The model's bodies with a prescribed motion (core/prescribed_motion.hpp), in index order.
   const std::vector<std::size_t>& prescribedBodies() const { return prescribed_bodies_; }
 
@@ -136,7 +141,7 @@ class Dynamics {
   bool profiling_ = false;
   StageProfile profile_;
   double fcl_offset_ = 0.0;  // detector's FCL seconds when profiling was switched on
-  int threads_ = 1;
+  int threads_ = 1, most_threads_ = 1;
   // assemble on more than one thread: per contact point its two bodies (A, B); per body the
   // entries of its points in contact order, 2 i + 1 where it is point i's B and 2 i where A
   // (body_points_, from body_point_start_[b] to body_point_start_[b + 1]): each body's sum

@@ -108,6 +108,8 @@ class EnergyGuard {
   // Starts watching at `state` (evaluated in `ws`).
   void reset(const State& state, const Workspace& ws);
   bool started() const { return started_; }
+  // From the next account on, its terms split over `threads` (the verdicts do not change).
+  void setThreads(int threads) { threads_ = threads; }
   // Takes the next checked state (evaluated in `ws`).
   EnergyVerdict update(const State& state, const Workspace& ws);
 

@@ -17,7 +17,8 @@ Simulator::Simulator(std::shared_ptr<const Model> model)
       integrator_(makeIntegrator(dynamics_.model().options.integrator, dynamics_.model())),
       state_(dynamics_.initialState()),
       last_good_(state_),
-      energy_(makeEnergyGuard()) {
+      energy_(makeEnergyGuard()),
+      choice_(dynamics_.model().options.threads == kAutoThreads ? dynamics_.mostThreads() : 1) {
   thinnest_.reserve(dynamics_.model().geometries.size());
   for (const Geometry& g : dynamics_.model().geometries) {
     thinnest_.push_back(g.shape.thinnestHalfWidth());
@@ -66,15 +67,36 @@ void Simulator::setProfiling(bool on) {
   dynamics_.setProfiling(on);
 }
 
+void Simulator::pinThreads(int threads) {
+  choice_ = ThreadChoice();
+  dynamics_.useThreads(threads);
+  energy_.setThreads(dynamics_.threads());
+}
+
 StepStatus Simulator::step() {
-  if (!profiling_) return advance();
+  const bool threaded = dynamics_.threads() > 1;
+  if (!profiling_ && !choice_.measuring()) {
+    StepStatus status = advance();
+    if (threaded && !status.interrupted) ++stats_.threaded_steps;
+    return status;
+  }
   const auto start = std::chrono::steady_clock::now();
   StepStatus status = advance();
-  const double step_seconds =
-      stats_.profile.step +
+  if (threaded && !status.interrupted) ++stats_.threaded_steps;
+  const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  stats_.profile = dynamics_.profile();
-  stats_.profile.step = step_seconds;
+  if (choice_.measuring()) {
+    choice_.record(seconds);
+    if (choice_.threads() != dynamics_.threads()) {
+      dynamics_.useThreads(choice_.threads());
+      energy_.setThreads(dynamics_.threads());
+    }
+  }
+  if (profiling_) {
+    const double step_seconds = stats_.profile.step + seconds;
+    stats_.profile = dynamics_.profile();
+    stats_.profile.step = step_seconds;
+  }
   return status;
 }
 

@@ -14,10 +14,13 @@
 // and named in the message when the energy guard stops the run.
 // A step returns a status; it never throws and never lets a NaN through: on divergence the
 // state stays at the last good step and the status names the step, time, body and quantity.
+// With `threads: auto` and more than one thread to use, each step is timed (two clock reads)
+// and the next step's threads follow the measured choice (core/thread_choice.hpp); the
+// results do not depend on it.
 // With profiling on (setProfiling), StepStats::profile holds the time per stage of the step
-// (core/stage_profile.hpp); off, the default, no clock is read. A warm step does not
-// allocate (tests/core/allocation_test.cpp): messages are built only on failure.
-// Not here: output (io/), the stop time (the caller's loop), the a-priori step limit
+// (core/stage_profile.hpp); off, the default, no clock is read (but for `threads: auto`). A warm
+// step does not allocate (tests/core/allocation_test.cpp): messages are built only on failure. Not
+// here: output (io/), the stop time (the caller's loop), the a-priori step limit
 // (core/stability.hpp).
 #pragma once
 
@@ -32,6 +35,7 @@
 #include "core/energy.hpp"
 #include "core/integrator.hpp"
 #include "core/stage_profile.hpp"
+#include "core/thread_choice.hpp"
 
 namespace tribo {
 
@@ -77,6 +81,9 @@ struct StepStats {
   double deepest_depth = 0.0;                                                // [m]
   double deepest_extent = 0.0;                                               // [m]
   double first_unconverged_time = std::numeric_limits<double>::quiet_NaN();  // [s]
+  // Steps run on more than one thread (all of them for a fixed count above one that the
+  // scene's size pays for; for `threads: auto`, those of the measured choice).
+  long threaded_steps = 0;
   // Time per stage since Simulator::setProfiling(true); all zero while profiling is off.
   // With profiling on from the start, profile.evaluations == evaluations.
   StageProfile profile;
@@ -114,6 +121,12 @@ class Simulator {
   void setProfiling(bool on);
   // Forces, contacts and accelerations at the current state (evaluated at most once).
   const Workspace& current();
+  // The threads the next step runs on, and the most it may (Dynamics::mostThreads).
+  int threads() const { return dynamics_.threads(); }
+  int mostThreads() const { return dynamics_.mostThreads(); }
+  // Runs every step from now on on `threads` threads (within 1 and mostThreads()), ending the
+  // measured choice of `threads: auto`; the results are the same bit for bit.
+  void pinThreads(int threads);
 
  private:
   StepStatus advance();  // step() without the profile
@@ -132,6 +145,7 @@ class Simulator {
   long own_evaluations_ = 0;
   StepStats stats_;
   bool profiling_ = false;
+  ThreadChoice choice_;  // measures only for `threads: auto` with more than one thread
   // Per geometry: no contact shallower than this is deeper than its half width
   // (contact::Shape::thinnestHalfWidth); check() measures the width only past it.
   std::vector<double> thinnest_;

@@ -1,5 +1,8 @@
 // How many threads a force evaluation may use (SimulationOptions::threads): a number, or
-// kAutoThreads (0): the OpenMP default (OMP_NUM_THREADS, else one per core). Each stage of
+// kAutoThreads (0): OMP_NUM_THREADS's first number, else one per core the process may run on
+// (read from the environment: another library in the process may change OpenMP's own
+// setting), and a Simulator then runs each step on one thread or on all of them, whichever
+// its timed steps found faster (core/thread_choice.hpp). Each stage of
 // Dynamics::evaluate then starts only as many as its item count pays for (one per
 // kItemsPerThread items; core/stage_threads.hpp), so small scenes never start a thread; the
 // results are the same bit for bit for any count (docs/performance.md, "Two threads").
@@ -32,7 +35,10 @@ class ScopedThreadLimit {
 };
 
 // The threads a Dynamics uses for a model asking for `requested` (kAutoThreads or >= 1),
-// under this thread's ScopedThreadLimit. Defined in core/dynamics.cpp (it asks OpenMP).
+// under this thread's ScopedThreadLimit. Defined in core/dynamics.cpp (it asks OpenMP for
+// the cores).
 int resolveThreads(int requested);
+// What kAutoThreads stands for, before any limit.
+int autoThreads();
 
 }  // namespace tribo

@@ -81,6 +81,12 @@ def bullet_ratio_at_mujoco_depth(runs, scene):
     return ratio, note, tribo <= mujoco  # the ratio counts only at MuJoCo's depth or less
 
 
+def auto_against_lammps(runs, case):
+    bench = f"BM_Peers/{case}/tribo_auto"
+    threads = runs.counter(bench, "threads")
+    return runs.counter(bench, "x_lammps"), f"{threads:.2f} threads a step on the mean"
+
+
 def chute_threads(runs):
     one = runs.counter("BM_Peers/granular_chute/tribo", "us_per_step")
     two = runs.counter("BM_Peers/granular_chute/tribo_2threads", "us_per_step")
@@ -102,6 +108,12 @@ TARGETS = [
     ("32 000-sphere chute: Tribo on two threads at LAMMPS's per-core rate",
      "`BM_Peers/granular_chute/tribo_2threads` `x_lammps`", ">=", 1.0, "x",
      lambda r: r.counter("BM_Peers/granular_chute/tribo_2threads", "x_lammps")),
+    ("200-sphere pile: Tribo on `threads: auto` (the measured choice, up to two threads)",
+     "`BM_Peers/granular_pile/tribo_auto` `x_lammps`", ">=", 1.0, "x",
+     lambda r: auto_against_lammps(r, "granular_pile")),
+    ("32 000-sphere chute: Tribo on `threads: auto` (the measured choice, up to two threads)",
+     "`BM_Peers/granular_chute/tribo_auto` `x_lammps`", ">=", 1.0, "x",
+     lambda r: auto_against_lammps(r, "granular_chute")),
     ("400 boxes on a half-space: contact points a second on two threads",
      "`BM_Threads/grid20` `points_per_step` / `step_us_2`", ">=", 16e6, "points/s",
      lambda r: points_per_second_on_two_threads(r, "BM_Threads/grid20")),

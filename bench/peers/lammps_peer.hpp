@@ -25,7 +25,7 @@ struct GranularLaw {
 struct GranularRun {
   PeerRun run;               // seconds, cpu_seconds, steps, points (after the last step), ...
   long spheres = 0;          // moving spheres
-  int threads = 1;           // threads the engine stepped on
+  double threads = 1.0;      // threads the engine stepped on (a mean over its steps)
   double mean_points = 0.0;  // contact points, mean over the samples
   std::string settings;      // the engine's settings, one line
 };

@@ -18,12 +18,14 @@
 // Names: BM_Peers/<scene>/<engine>. Runs once each (--benchmark_repetitions=N for more).
 // Granular cases, Tribo beside LAMMPS (lammps_peer.hpp) when LAMMPS was found: the same pile
 // (granular_pile) and a chute of 32 000 spheres (granular_chute, generated here), LAMMPS run
-// first as the baseline, then Tribo on one and on two threads. Counters: sphere_steps_per_s
-// (moving spheres x steps / wall time), per_core_sphere_steps_per_s (the same over the threads
-// stepped on), cpu_sphere_steps_per_s (over the process's CPU time), points (contact points
-// after the last step), points_mean (mean over ten samples through the run), threads, and for
-// Tribo x_lammps, x_lammps_per_core, x_lammps_cpu (Tribo's figure over LAMMPS's in this
-// process: > 1 means Tribo is faster); each run's label gives the engine's settings.
+// first as the baseline, then Tribo on one thread, on two, and on `threads: auto` (the
+// measured choice between one thread and every core: core/thread_choice.hpp). Counters:
+// sphere_steps_per_s (moving spheres x steps / wall time), per_core_sphere_steps_per_s (the same
+// over the threads stepped on), cpu_sphere_steps_per_s (over the process's CPU time), points
+// (contact points after the last step), points_mean (mean over ten samples through the run),
+// threads (on the mean over the steps), and for Tribo x_lammps, x_lammps_per_core, x_lammps_cpu
+// (Tribo's figure over LAMMPS's in this process: > 1 means Tribo is faster); each run's label gives
+// the engine's settings.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -263,7 +265,6 @@ tribo::peers::GranularRun runTriboGranular(const GranularCase& c, const tribo::i
   tribo::Simulator sim(s.model);
   const double dt = s.model->options.time_step;
   tribo::peers::GranularRun out;
-  out.threads = threads;
   out.run.steps = std::lround(c.seconds / dt);
   for (const auto& b : s.model->bodies) out.spheres += b.kind == tribo::BodyKind::kDynamic;
   double points = 0.0;
@@ -288,11 +289,16 @@ tribo::peers::GranularRun runTriboGranular(const GranularCase& c, const tribo::i
     points += out.run.points;
   }
   out.mean_points = points / kSamples;
+  // Threads a step ran on, on the mean: `threads: auto` follows its measured choice
+  // (core/thread_choice.hpp); a fixed count runs every step on mostThreads().
+  const double threaded = static_cast<double>(sim.stats().threaded_steps);
+  out.threads = 1.0 + (sim.mostThreads() - 1) * threaded / static_cast<double>(out.run.steps);
   for (std::size_t b = 0; b < s.model->bodies.size(); ++b)
     if (s.model->bodies[b].kind == tribo::BodyKind::kDynamic)
       out.run.max_speed = std::max(out.run.max_speed, sim.state().bodies[b].velocity.norm());
   std::ostringstream set;
-  set << "Tribo, " << threads << " thread(s); linear normal law k " << parameter(s, "k")
+  set << "Tribo, " << (threads == tribo::kAutoThreads ? "auto" : std::to_string(threads))
+      << " thread(s) (" << out.threads << " on the mean); linear normal law k " << parameter(s, "k")
       << " N/m c " << parameter(s, "c") << " N s/m per point (F_n >= 0); Coulomb mu "
       << parameter(s, "mu") << " tanh-regularized v_eps 0.01 m/s, no tangential spring; "
       << "semi-implicit Euler dt " << dt << " s; grid broadphase, contacts found every step";
@@ -306,10 +312,13 @@ std::map<std::string, std::pair<double, double>>& lammpsSphereSteps() {
   return m;
 }
 
+// `tribo_threads`: the scene's threads (kAutoThreads: the measured choice), or kLammps.
+constexpr int kLammps = -1;
+
 void BM_Granular(benchmark::State& st, const GranularCase& c, int tribo_threads) {
   for (auto _ : st) {
     tribo::peers::GranularRun r;
-    if (tribo_threads > 0) {
+    if (tribo_threads != kLammps) {
       r = runTriboGranular(c, granularScene(c, tribo_threads), tribo_threads);
     } else {
       const tribo::io::Scene& s = granularScene(c, 1);
@@ -336,7 +345,7 @@ void BM_Granular(benchmark::State& st, const GranularCase& c, int tribo_threads)
     st.counters["points_mean"] = r.mean_points;
     st.counters["penetration_um"] = r.run.penetration * 1e6;
     st.counters["max_speed_mm_s"] = r.run.max_speed * 1e3;
-    if (tribo_threads == 0) {
+    if (tribo_threads == kLammps) {
       lammpsSphereSteps()[c.name] = {wall, cpu};
     } else if (auto it = lammpsSphereSteps().find(c.name); it != lammpsSphereSteps().end()) {
       st.counters["x_lammps"] = wall / it->second.first;
@@ -373,8 +382,10 @@ const bool kRegistered = [] {
   }
 #ifdef TRIBO_PEER_LAMMPS
   for (const GranularCase& c : kGranularCases)
-    for (const auto& [engine, threads] :
-         {std::pair<std::string, int>{"lammps", 0}, {"tribo", 1}, {"tribo_2threads", 2}})
+    for (const auto& [engine, threads] : {std::pair<std::string, int>{"lammps", kLammps},
+                                          {"tribo", 1},
+                                          {"tribo_2threads", 2},
+                                          {"tribo_auto", tribo::kAutoThreads}})
       benchmark::RegisterBenchmark(("BM_Peers/" + c.name + "/" + engine).c_str(), BM_Granular, c,
                                    threads)
           ->UseManualTime()

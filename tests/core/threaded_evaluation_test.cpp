@@ -11,8 +11,10 @@
 // checked to stay on one thread. The reference is the one-thread run of the same scene in the same
 // process. Also: the scene key and its errors, and the sweep's limit of one thread per point.
 #include <gtest/gtest.h>
+#include <sched.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -21,6 +23,7 @@
 #include "contact/split_count.hpp"
 #include "core/dynamics.hpp"
 #include "core/simulator.hpp"
+#include "core/thread_choice.hpp"
 #include "core/thread_count.hpp"
 #include "io/scene_loader.hpp"
 #include "support/scene_text.hpp"
@@ -208,6 +211,79 @@ TEST(ThreadedEvaluation, DynamicFriction) {
 
 TEST(ThreadedEvaluation, BoxesOnRevoluteJoints) {
   expectSameOnThreads(boxGrid(12, 0.25, "coulomb", "rk4", 0.0, true), 20, 2 * 144);
+}
+
+TEST(ThreadedEvaluation, AutoIsTheEnvironmentsCountElseTheCores) {
+  // kAutoThreads: OMP_NUM_THREADS's first number, else the CPUs this process may run on (its
+  // affinity mask), whatever OpenMP's own setting has been changed to in the process.
+  const char* saved = std::getenv("OMP_NUM_THREADS");
+  const std::string before = saved != nullptr ? saved : "";
+  ::setenv("OMP_NUM_THREADS", "3,2", 1);
+  EXPECT_EQ(autoThreads(), 3);
+  EXPECT_EQ(resolveThreads(kAutoThreads), 3);
+  {
+    const ScopedThreadLimit two(2);
+    EXPECT_EQ(resolveThreads(kAutoThreads), 2);
+  }
+  ::setenv("OMP_NUM_THREADS", "none", 1);  // not a number: the cores
+  cpu_set_t cpus;
+  CPU_ZERO(&cpus);
+  ASSERT_EQ(sched_getaffinity(0, sizeof(cpus), &cpus), 0);
+  EXPECT_EQ(autoThreads(), CPU_COUNT(&cpus));
+  ::unsetenv("OMP_NUM_THREADS");
+  EXPECT_EQ(autoThreads(), CPU_COUNT(&cpus));
+  if (saved != nullptr) ::setenv("OMP_NUM_THREADS", before.c_str(), 1);
+}
+
+TEST(ThreadedEvaluation, ThreadsChangedBetweenStepsGiveTheSameRun) {
+  // The threads of a run changed between steps (as `threads: auto`'s measured choice does):
+  // the one-thread run's trajectory bit for bit, each step counted on the threads it ran on.
+  const std::string yaml = boxGrid(16, 0.25, "elastic_stick", "rk4");
+  const int steps = 24;
+  const RunEnd one = run(yaml, 1, steps);
+  ASSERT_TRUE(one.ok);
+  Simulator sim(load(yaml, 3));
+  ASSERT_EQ(sim.mostThreads(), 3);
+  long threaded = 0;
+  const long split_before = contact::splitLoopCount().load();
+  for (int i = 0; i < steps; ++i) {
+    const int threads = 1 + (i * 7 / 3) % 3;  // 1, 1, 2, 3, 3, 1, 2, 2, 3, ...
+    sim.pinThreads(threads);
+    ASSERT_EQ(sim.threads(), threads);
+    threaded += threads > 1;
+    ASSERT_TRUE(sim.step().ok);
+  }
+  EXPECT_GE(contact::splitLoopCount().load() - split_before, threaded);
+  EXPECT_EQ(sim.stats().threaded_steps, threaded);
+  EXPECT_TRUE(identical(one.state, sim.state()));
+  sim.pinThreads(7);  // held within 1 and the most
+  EXPECT_EQ(sim.threads(), 3);
+  sim.pinThreads(0);
+  EXPECT_EQ(sim.threads(), 1);
+}
+
+TEST(ThreadedEvaluation, AutoThreadsMeasuredChoiceKeepsTheRun) {
+  // `threads: auto`: the steps' threads follow the measured choice (core/thread_choice.hpp),
+  // whichever it is on this machine, and the run is the one-thread run bit for bit. The first
+  // trial window (ThreadChoice::kWindowSteps steps and the uncounted first) runs on every
+  // thread; a fixed count is never changed.
+  const std::string yaml = boxGrid(30, 0.25, "coulomb", "semi_implicit_euler");
+  const int steps = 300;
+  const RunEnd one = run(yaml, 1, steps);
+  ASSERT_TRUE(one.ok);
+  Simulator sim(load(yaml, kAutoThreads));
+  for (int i = 0; i < steps; ++i) ASSERT_TRUE(sim.step().ok);
+  EXPECT_TRUE(identical(one.state, sim.state()));
+  if (sim.mostThreads() > 1) {
+    EXPECT_GE(sim.stats().threaded_steps, 1 + ThreadChoice::kWindowSteps);
+    EXPECT_LE(sim.stats().threaded_steps, steps);
+  } else {
+    EXPECT_EQ(sim.stats().threaded_steps, 0);  // a one-core machine: nothing to choose
+  }
+  Simulator fixed(load(yaml, 2));
+  for (int i = 0; i < 40; ++i) ASSERT_TRUE(fixed.step().ok);
+  EXPECT_EQ(fixed.threads(), 2);
+  EXPECT_EQ(fixed.stats().threaded_steps, 40);
 }
 
 TEST(ThreadedEvaluation, SmallScenesKeepOneThread) {
