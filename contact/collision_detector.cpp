@@ -103,10 +103,15 @@ Aabb worldBox(const Shape& shape, const Eigen::Isometry3d& pose, const Aabb* loc
     box.hi = centre + half;
     return box;
   }
+  if (shape.type == ShapeType::kSphere) {  // the same in every frame: no rotation, no norm
+    box.lo = pose.translation().array() - shape.radius;
+    box.hi = pose.translation().array() + shape.radius;
+    return box;
+  }
   // Shapes symmetric about their origin have support(-d) == support(d) bit for bit (|d| per
   // component, a norm, a hypot): one call per axis.
-  const bool symmetric = shape.type == ShapeType::kBox || shape.type == ShapeType::kSphere ||
-                         shape.type == ShapeType::kCapsule || shape.type == ShapeType::kCylinder;
+  const bool symmetric = shape.type == ShapeType::kBox || shape.type == ShapeType::kCapsule ||
+                         shape.type == ShapeType::kCylinder;
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d axis = r.row(i).transpose();  // world axis i in the shape frame
     const double up = shape.support(axis);
