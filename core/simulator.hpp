@@ -18,9 +18,10 @@
 // and the next step's threads follow the measured choice (core/thread_choice.hpp); the
 // results do not depend on it.
 // With profiling on (setProfiling), StepStats::profile holds the time per stage of the step
-// (core/stage_profile.hpp); off, the default, no clock is read (but for `threads: auto`). A warm
-// step does not allocate (tests/core/allocation_test.cpp): messages are built only on failure. Not
-// here: output (io/), the stop time (the caller's loop), the a-priori step limit
+// (core/stage_profile.hpp); off, the default, no clock is read (but for `threads: auto`).
+// A warm step does not allocate (tests/core/allocation_test.cpp): messages are built only on
+// failure.
+// Not here: output (io/), the stop time (the caller's loop), the a-priori step limit
 // (core/stability.hpp).
 #pragma once
 

@@ -20,12 +20,12 @@
 // (granular_pile) and a chute of 32 000 spheres (granular_chute, generated here), LAMMPS run
 // first as the baseline, then Tribo on one thread, on two, and on `threads: auto` (the
 // measured choice between one thread and every core: core/thread_choice.hpp). Counters:
-// sphere_steps_per_s (moving spheres x steps / wall time), per_core_sphere_steps_per_s (the same
-// over the threads stepped on), cpu_sphere_steps_per_s (over the process's CPU time), points
-// (contact points after the last step), points_mean (mean over ten samples through the run),
-// threads (on the mean over the steps), and for Tribo x_lammps, x_lammps_per_core, x_lammps_cpu
-// (Tribo's figure over LAMMPS's in this process: > 1 means Tribo is faster); each run's label gives
-// the engine's settings.
+// sphere_steps_per_s (moving spheres x steps / wall time), per_core_sphere_steps_per_s (the
+// same over the threads stepped on), cpu_sphere_steps_per_s (over the process's CPU time),
+// points (contact points after the last step), points_mean (mean over ten samples through
+// the run), threads (on the mean over the steps), and for Tribo x_lammps, x_lammps_per_core,
+// x_lammps_cpu (Tribo's figure over LAMMPS's in this process: > 1 means Tribo is faster);
+// each run's label gives the engine's settings.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
