@@ -19,6 +19,7 @@ Simulator::Simulator(std::shared_ptr<const Model> model)
       last_good_(state_),
       energy_(makeEnergyGuard()),
       choice_(dynamics_.model().options.threads == kAutoThreads ? dynamics_.mostThreads() : 1) {
+  stats_.most_threads = dynamics_.mostThreads();
   thinnest_.reserve(dynamics_.model().geometries.size());
   for (const Geometry& g : dynamics_.model().geometries) {
     thinnest_.push_back(g.shape.thinnestHalfWidth());

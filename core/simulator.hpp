@@ -82,8 +82,10 @@ struct StepStats {
   double deepest_depth = 0.0;                                                // [m]
   double deepest_extent = 0.0;                                               // [m]
   double first_unconverged_time = std::numeric_limits<double>::quiet_NaN();  // [s]
-  // Steps run on more than one thread (all of them for a fixed count above one that the
-  // scene's size pays for; for `threads: auto`, those of the measured choice).
+  // The threads a step may run on (Dynamics::mostThreads: the setting, under the scene's size),
+  // and the steps that ran on more than one (all of them for a fixed count above one; for
+  // `threads: auto`, those of the measured choice).
+  int most_threads = 1;
   long threaded_steps = 0;
   // Time per stage since Simulator::setProfiling(true); all zero while profiling is off.
   // With profiling on from the start, profile.evaluations == evaluations.

@@ -29,6 +29,8 @@ nlohmann::json stepStatsJson(const StepStats& stats) {
           {"integrator_steps", stats.integrator_steps},
           {"rejected_steps", stats.rejected_steps},
           {"force_evaluations", stats.evaluations},
+          {"most_threads", stats.most_threads},
+          {"threaded_steps", stats.threaded_steps},
           {"events", stats.events},
           {"joint_friction_unconverged_steps", stats.joint_friction_unconverged},
           {"joint_held_steps", stats.joint_held},

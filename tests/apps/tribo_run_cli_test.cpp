@@ -6,6 +6,7 @@
 // --quiet; --threads gives the same trajectory bit for bit and refuses bad values.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -144,21 +145,50 @@ TEST_F(TriboRun, PeakMemoryDoesNotGrowWithTheDuration) {
 namespace {
 
 // --threads: the same trajectory.csv, byte for byte at 17 digits (every double exactly: the
-// same bits), on 1 and 2 threads (400 boxes, 1600 contact points: the stages split); a
-// value that is not a whole number >= 1 or auto is a usage error naming the option.
+// same bits), on 1 and 2 threads and auto (400 boxes, 1600 contact points: the stages split),
+// the summary saying what the steps ran on; a value that is not a whole number >= 1 or auto
+// is a usage error naming the option.
 TEST_F(TriboRun, ThreadsGiveTheSameTrajectoryAndBadValuesAreRefused) {
   const std::string grid = std::string(TRIBO_SOURCE_DIR) + "/scenes/box_grid20.yaml";
-  std::string csv[2];
-  for (const std::string threads : {"1", "2"}) {
-    const fs::path out = dir_ / threads;
+  std::string csv[3];
+  const std::string names[3] = {"1", "2", "auto"};
+  for (int k = 0; k < 3; ++k) {
+    const fs::path out = dir_ / names[k];
     const Result r =
         runTribo("run " + grid + " --out " + out.string() +
-                 " --quiet --set duration=0.05 --set output.digits=17 --threads " + threads);
+                 " --quiet --set duration=0.05 --set output.digits=17 --threads " + names[k]);
     ASSERT_EQ(r.status, 0) << r.output;
-    csv[threads == "1" ? 0 : 1] = slurp(out / "trajectory.csv");
+    csv[k] = slurp(out / "trajectory.csv");
+    const std::size_t line = r.output.find("threads          ");
+    if (k == 0) {
+      EXPECT_EQ(line, std::string::npos) << r.output;  // the default: nothing to say
+    } else if (k == 1) {
+      EXPECT_NE(r.output.find("threads          2: 2 a step on the mean, of up to 2\n"),
+                std::string::npos)
+          << r.output;
+    } else {
+      ASSERT_NE(line, std::string::npos) << r.output;
+      double mean = 0.0;
+      int most = 0;
+      ASSERT_EQ(std::sscanf(r.output.c_str() + line,
+                            "threads          auto (measured choice): %lf a step on the mean, "
+                            "of up to %d",
+                            &mean, &most),
+                2)
+          << r.output;
+      EXPECT_GE(mean, 1.0);
+      EXPECT_LE(mean, most);
+    }
   }
   EXPECT_GT(lines(dir_ / "1" / "trajectory.csv"), 2);
   EXPECT_TRUE(csv[0] == csv[1]);
+  EXPECT_TRUE(csv[0] == csv[2]);
+  const Result small = runTribo("run " + kBelt + " --out " + (dir_ / "belt").string() +
+                                " --quiet --set duration=0.01 --threads 2");
+  EXPECT_NE(small.output.find("threads          2: 1 a step on the mean, of up to 1 (the scene "
+                              "is too small to split)"),
+            std::string::npos)
+      << small.output;
   for (const std::string bad : {"0", "-1", "2.5", "x"}) {
     const Result r =
         runTribo("run " + kBelt + " --out " + (dir_ / "bad").string() + " --threads " + bad);
