@@ -247,7 +247,7 @@ TEST(ThreadedEvaluation, ThreadsChangedBetweenStepsGiveTheSameRun) {
   long threaded = 0;
   const long split_before = contact::splitLoopCount().load();
   for (int i = 0; i < steps; ++i) {
-    const int threads = 1 + (i * 7 / 3) % 3;  // 1, 1, 2, 3, 3, 1, 2, 2, 3, ...
+    const int threads = 1 + (i * 7 / 3) % 3;  // 1, 3, 2, 2, 1, 3, 3, 2, 1, ...
     sim.pinThreads(threads);
     ASSERT_EQ(sim.threads(), threads);
     threaded += threads > 1;
