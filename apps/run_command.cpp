@@ -102,13 +102,10 @@ void printSummary(const tribo::io::Scene& scene, const tribo::study::RunResult& 
       std::printf("early growth     not measured (fewer than 3 cycles after the first)\n");
   }
   if (o.threads != 1) {  // asked for: what the steps ran on
-    const double threaded = r.stats.steps > 0 ? static_cast<double>(r.stats.threaded_steps) /
-                                                    static_cast<double>(r.stats.steps)
-                                              : 0.0;
     std::printf("threads          %s: %.3g a step on the mean, of up to %d%s\n",
                 o.threads == tribo::kAutoThreads ? "auto (measured choice)"
                                                  : std::to_string(o.threads).c_str(),
-                1.0 + (r.stats.most_threads - 1) * threaded, r.stats.most_threads,
+                r.stats.meanThreads(), r.stats.most_threads,
                 r.stats.most_threads == 1 ? " (the scene is too small to split)" : "");
   }
   std::printf("max penetration  %.3g m\n", r.stats.max_penetration);

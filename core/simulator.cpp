@@ -70,28 +70,27 @@ void Simulator::setProfiling(bool on) {
 
 void Simulator::pinThreads(int threads) {
   choice_ = ThreadChoice();
+  useThreads(threads);
+}
+
+void Simulator::useThreads(int threads) {
   dynamics_.useThreads(threads);
   energy_.setThreads(dynamics_.threads());
 }
 
 StepStatus Simulator::step() {
   const bool threaded = dynamics_.threads() > 1;
-  if (!profiling_ && !choice_.measuring()) {
-    StepStatus status = advance();
-    if (threaded && !status.interrupted) ++stats_.threaded_steps;
-    return status;
-  }
-  const auto start = std::chrono::steady_clock::now();
+  const bool timed = profiling_ || choice_.measuring();
+  const auto start =
+      timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
   StepStatus status = advance();
   if (threaded && !status.interrupted) ++stats_.threaded_steps;
+  if (!timed) return status;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (choice_.measuring()) {
     choice_.record(seconds);
-    if (choice_.threads() != dynamics_.threads()) {
-      dynamics_.useThreads(choice_.threads());
-      energy_.setThreads(dynamics_.threads());
-    }
+    if (choice_.threads() != dynamics_.threads()) useThreads(choice_.threads());
   }
   if (profiling_) {
     const double step_seconds = stats_.profile.step + seconds;

@@ -87,6 +87,12 @@ struct StepStats {
   // `threads: auto`, those of the measured choice).
   int most_threads = 1;
   long threaded_steps = 0;
+  // The threads a step ran on, on the mean over the steps (1 before any step).
+  double meanThreads() const {
+    return steps > 0 ? 1.0 + (most_threads - 1) * static_cast<double>(threaded_steps) /
+                                 static_cast<double>(steps)
+                     : 1.0;
+  }
   // Time per stage since Simulator::setProfiling(true); all zero while profiling is off.
   // With profiling on from the start, profile.evaluations == evaluations.
   StageProfile profile;
@@ -132,7 +138,8 @@ class Simulator {
   void pinThreads(int threads);
 
  private:
-  StepStatus advance();  // step() without the profile
+  StepStatus advance();          // step() without the profile
+  void useThreads(int threads);  // the dynamics' and the energy guard's count
   StepStatus check();
   EnergyGuard makeEnergyGuard() const;
   // A failed status at the current state's time (or at `time` for the integrator's).

@@ -291,8 +291,7 @@ tribo::peers::GranularRun runTriboGranular(const GranularCase& c, const tribo::i
   out.mean_points = points / kSamples;
   // Threads a step ran on, on the mean: `threads: auto` follows its measured choice
   // (core/thread_choice.hpp); a fixed count runs every step on mostThreads().
-  const double threaded = static_cast<double>(sim.stats().threaded_steps);
-  out.threads = 1.0 + (sim.mostThreads() - 1) * threaded / static_cast<double>(out.run.steps);
+  out.threads = sim.stats().meanThreads();
   for (std::size_t b = 0; b < s.model->bodies.size(); ++b)
     if (s.model->bodies[b].kind == tribo::BodyKind::kDynamic)
       out.run.max_speed = std::max(out.run.max_speed, sim.state().bodies[b].velocity.norm());
