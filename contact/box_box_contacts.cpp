@@ -14,9 +14,8 @@ using Eigen::Vector3d;
 
 constexpr double kFaceBias = 0.98;  // a face of B must beat a face of A by 2 %
 constexpr double kEdgeBias = 0.95;  // an edge pair must beat the face by 5 %
-constexpr double kParallel = 1e-6;
-constexpr double kFlush = 1e-9;  // a vertex this far (times the box size) outside is on  // |A_i x
-                                 // B_j| below this: no edge axis (faces cover it)
+constexpr double kParallel = 1e-6;  // |A_i x B_j| below this: no edge axis (faces cover it)
+constexpr double kFlush = 1e-9;     // a vertex this far (times the box size) outside is on
 constexpr int kReferenceOnB = 64;
 constexpr int kEdgeFeature = 128;
 
@@ -42,7 +41,7 @@ int clipSide(const Polygon& in, int n, int axis, double sign, double limit, doub
   int m = 0;
   for (int i = 0; i < n; ++i) {
     const Vertex& v = in[i];
-    const Vertex& w = in[(i + 1) % n];
+    const Vertex& w = in[i + 1 < n ? i + 1 : 0];
     const double dv = limit - sign * v.x[axis], dw = limit - sign * w.x[axis];
     const bool v_in = dv >= -tol, w_in = dw >= -tol;
     if (m + 2 > kMaxVertices) break;
@@ -74,7 +73,7 @@ int faceContacts(const Eigen::Isometry3d& ref_pose, const Vector3d& hr, const Ma
   const int m1 = (m + 1) % 3, m2 = (m + 2) % 3;
   const Vector3d face = centre + si * hi[m] * axes.col(m);
   const Vector3d e1 = hi[m1] * axes.col(m1), e2 = hi[m2] * axes.col(m2);
-  Polygon a{}, b{};
+  Polygon a, b;  // not zeroed (1 kB): a vertex is read only after it is written
   for (int v = 0; v < 4; ++v) {
     const int corner = ((si > 0) << m) | ((kS1[v] > 0) << m1) | ((kS2[v] > 0) << m2);
     a[v] = {face + kS1[v] * e1 + kS2[v] * e2, corner, v};
@@ -82,10 +81,19 @@ int faceContacts(const Eigen::Isometry3d& ref_pose, const Vector3d& hr, const Ma
   int n = 4;
   const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
   const double tol = kFlush * hr.maxCoeff();
-  n = clipSide(a, n, k1, 1.0, hr[k1], tol, 0, b);
-  n = clipSide(b, n, k1, -1.0, hr[k1], tol, 1, a);
-  n = clipSide(a, n, k2, 1.0, hr[k2], tol, 2, b);
-  n = clipSide(b, n, k2, -1.0, hr[k2], tol, 3, a);
+  // A quad with every corner within the four side planes (a box resting inside a larger
+  // face) comes out of the four clips as it went in: they are skipped, by the clips' own test.
+  bool inside = true;
+  for (int v = 0; v < 4; ++v)
+    for (const int axis : {k1, k2})
+      for (const double sign : {1.0, -1.0})
+        inside = inside && hr[axis] - sign * a[v].x[axis] >= -tol;
+  if (!inside) {
+    n = clipSide(a, n, k1, 1.0, hr[k1], tol, 0, b);
+    n = clipSide(b, n, k1, -1.0, hr[k1], tol, 1, a);
+    n = clipSide(a, n, k2, 1.0, hr[k2], tol, 2, b);
+    n = clipSide(b, n, k2, -1.0, hr[k2], tol, 3, a);
+  }
   const Vector3d u_world = sg * ref_pose.linear().col(k);
   int added = 0;
   for (int i = 0; i < n; ++i) {
@@ -161,23 +169,28 @@ int boxBoxContacts(const Eigen::Isometry3d& pose_a, const Vector3d& ha,
     if (s >= 0.0) return 0;
     if (s > s_b) s_b = s, face_b = k;
   }
-  // Edge pairs: L = A_i x B_j, in A's frame L[i1] = -R(i2, j), L[i2] = R(i1, j).
+  // Edge pairs: L = A_i x B_j, in A's frame L[i1] = -R(i2, j), L[i2] = R(i1, j). Each pair's
+  // separation is gap / |L| with |L| <= 1 (entries of a rotation: no overflow, so a square
+  // root, not hypot); the largest is found without dividing, gap * |L_best| > gap_best * |L|
+  // (both lengths positive), and divided out once.
+  constexpr std::array<int, 3> kNext{1, 2, 0}, kPrev{2, 0, 1};
   int edge_i = -1, edge_j = -1;
-  double s_e = -std::numeric_limits<double>::infinity();
+  double gap_e = -1.0, len_e = 1.0;
   for (int i = 0; i < 3; ++i) {
-    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    const int i1 = kNext[i], i2 = kPrev[i];
     for (int j = 0; j < 3; ++j) {
-      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      const double len = std::hypot(r(i1, j), r(i2, j));
+      const int j1 = kNext[j], j2 = kPrev[j];
+      const double len = std::sqrt(r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j));
       if (len < kParallel) continue;
       const double ra_l = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
       const double rb_l = hb[j1] * abs_r(i, j2) + hb[j2] * abs_r(i, j1);
       const double tl = t[i2] * r(i1, j) - t[i1] * r(i2, j);
-      const double s = (std::abs(tl) - ra_l - rb_l) / len;
-      if (s >= 0.0) return 0;
-      if (s > s_e) s_e = s, edge_i = i, edge_j = j;
+      const double gap = std::abs(tl) - ra_l - rb_l;
+      if (gap >= 0.0) return 0;
+      if (edge_i < 0 || gap * len_e > gap_e * len) gap_e = gap, len_e = len, edge_i = i, edge_j = j;
     }
   }
+  const double s_e = edge_i >= 0 ? gap_e / len_e : -std::numeric_limits<double>::infinity();
 
   const bool ref_is_b = s_b > kFaceBias * s_a;
   const double s_face = ref_is_b ? s_b : s_a;
