@@ -108,6 +108,12 @@ Aabb worldBox(const Shape& shape, const Eigen::Isometry3d& pose, const Aabb* loc
     box.hi = pose.translation().array() + shape.radius;
     return box;
   }
+  if (shape.type == ShapeType::kBox) {  // half width along world axis i: |row i of r| . h
+    const Eigen::Vector3d half = r.cwiseAbs() * shape.half_extents;
+    box.lo = pose.translation() - half;
+    box.hi = pose.translation() + half;
+    return box;
+  }
   // Shapes symmetric about their origin have support(-d) == support(d) bit for bit (|d| per
   // component, a norm, a hypot): one call per axis.
   const bool symmetric = shape.type == ShapeType::kBox || shape.type == ShapeType::kCapsule ||
