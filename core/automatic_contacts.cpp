@@ -1,6 +1,8 @@
 #include "core/automatic_contacts.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstring>
 #include <map>
 #include <numeric>
 
@@ -47,7 +49,18 @@ ContactPair automaticPair(const Model& model, int id) {
                     : !rule.dynamic[h] ? true
                                        : !rule.plane[g] && rule.plane[h];
   const int material = surfacePairMaterial(rule, rule.surface[g], rule.surface[h]);
-  return swap ? ContactPair{h, g, material} : ContactPair{g, h, material};
+  // The two geometries as one 8-byte word: built field by field, GCC wrote them to the stack
+  // as two 4-byte stores and read them back as the return register's 8 bytes, a
+  // store-forwarding stall that was most of this function's time (called once a contact
+  // point on a sphere pile).
+  const auto a = static_cast<std::uint32_t>(swap ? h : g);
+  const auto b = static_cast<std::uint32_t>(swap ? g : h);
+  const std::uint64_t ab = a | (static_cast<std::uint64_t>(b) << 32);
+  ContactPair pair;
+  static_assert(offsetof(ContactPair, geometry_b) == sizeof(std::uint32_t));
+  std::memcpy(&pair.geometry_a, &ab, sizeof ab);
+  pair.material = material;
+  return pair;
 }
 
 namespace {
