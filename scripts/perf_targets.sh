@@ -21,7 +21,7 @@ run() {  # binary, filter, json name, extra flags
     --benchmark_out_format=json "${@:4}"
 }
 if [ -x "$BUILD_DIR/bench/peers/tribo_bench_peers" ]; then
-  run peers/tribo_bench_peers 'BM_Peers/(box_grid20|box_grid20_box_ground|granular_pile|granular_chute)/' peers
+  run peers/tribo_bench_peers 'BM_Peers/(box_grid20|box_grid20_stiff|box_grid20_stiff_1ms|box_grid20_box_ground|granular_pile|granular_chute)/' peers
 fi
 run contact/tribo_bench_contact 'BM_Threads/grid(20|20_box_ground|40)$' threads --benchmark_repetitions=5
 run contact/tribo_bench_contact 'BM_GridStep/(10|142)/' scale --benchmark_repetitions=3

@@ -216,6 +216,10 @@ const Case kCases[] = {
     {"box_grid20_box_ground", "box_grid20_box_ground.yaml", 20, true, 2.0},
     // Stiffer corners (16.4 um static depth, MuJoCo's 17 um here) at the step they need.
     {"box_grid20_stiff", "box_grid20.yaml", 20, false, 2.0, {"k=1.2e6", "dt=5e-4"}, true},
+    // The same depth at 1 ms: the damping halved (c 500 N s/m a corner, damping ratio 0.16
+    // against the scene's 0.46) keeps the rocking mode's a-priori limit at 1.13 ms (`tribo run
+    // scenes/box_grid20.yaml --set k=1.2e6 --set c=500` prints it; c 1000 needs 0.87 ms).
+    {"box_grid20_stiff_1ms", "box_grid20.yaml", 20, false, 2.0, {"k=1.2e6", "c=500"}, true},
     {"box_grid20_stiff_rk4",
      "box_grid20.yaml",
      20,

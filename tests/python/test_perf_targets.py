@@ -1,7 +1,7 @@
 """scripts/perf_targets.py: the throughput targets' table from the benches' JSON. Made-up
 bench files whose figures give each target a value worked out by hand here: the rate on two
 threads, the growth exponent, the Bullet ratio that does not count when Tribo rests deeper
-than MuJoCo, the median of repetitions, a missing bench, the table written between the
+than MuJoCo (and the one on a setting of the scene that rests no deeper), the median of repetitions, a missing bench, the table written between the
 markers of a page and nowhere else."""
 import importlib.util
 import json
@@ -77,6 +77,31 @@ def test_the_bullet_ratio_counts_only_at_mujocos_depth_or_less(perf):
     assert deeper[3] is False
     slower = find(rows_by_target(perf, grid(30.0, 34.1, 3.7)), "half-space: times Bullet")
     assert slower[3] is False and slower[2].startswith("3.70 x")
+
+
+def test_tribo_deeper_than_mujoco_is_compared_on_its_fastest_setting_that_is_not(perf):
+    # As written Tribo rests at 32.7 um, MuJoCo at 17.1: Bullet's 800 us a simulated ms over
+    # the fastest setting no deeper than 17.1 um. At 0.5 ms, 160 us a simulated ms (5.00 x);
+    # at 1 ms with less damping, 80 us (10.0 x); one faster still but at 20 um is left out.
+    def settings(*cases):
+        return document(
+            run("BM_Peers/box_grid20/tribo", penetration_um=32.7, us_per_sim_ms=84.0),
+            run("BM_Peers/box_grid20/bullet", x_tribo=9.52, us_per_sim_ms=800.0),
+            run("BM_Peers/box_grid20/mujoco", penetration_um=17.1),
+            *[run(f"BM_Peers/{name}/tribo", penetration_um=depth, us_per_sim_ms=cost)
+              for name, depth, cost in cases])
+    both = find(rows_by_target(perf, settings(("box_grid20_stiff", 16.35, 160.0),
+                                              ("box_grid20_stiff_1ms", 16.35, 80.0))),
+                "half-space: times Bullet")
+    assert both[3] is True and both[2].startswith("10.0 x")
+    assert "`box_grid20_stiff_1ms`: depth 16.4 um" in both[2] and "9.52 x at 32.7 um" in both[2]
+    slow = find(rows_by_target(perf, settings(("box_grid20_stiff", 16.35, 160.0),
+                                              ("box_grid20_stiff_1ms", 20.0, 70.0))),
+                "half-space: times Bullet")
+    assert slow[3] is False and slow[2].startswith("5.00 x") and "box_grid20_stiff`" in slow[2]
+    none = find(rows_by_target(perf, settings(("box_grid20_stiff_1ms", 20.0, 70.0))),
+                "half-space: times Bullet")
+    assert none[3] is False and none[2].startswith("9.52 x")
 
 
 def test_repetitions_are_read_at_their_median(perf):
