@@ -219,5 +219,55 @@ TEST(SkinList, TheSameListForOneTwoAndThreeThreads) {
   EXPECT_GT(splitLoopCount().load(), split_before) << "some stage was cut for a team";
 }
 
+// Pairs numbered with room between them, id = g * 65536 + h (g < h): ids past 2^26 have digits
+// in the third 11-bit place of the detector's radix sort of long lists.
+class SpreadPair : public PairRule {
+ public:
+  int pairId(int g, int h) const override { return std::min(g, h) * 65536 + std::max(g, h); }
+  std::pair<int, int> geometries(int id) const override { return {id / 65536, id % 65536}; }
+};
+
+TEST(SkinList, ThousandsOfPairsComeInIdOrderAsEveryPairListed) {
+  // 1200 spheres of 10 mm on a floor, a 20 x 20 x 3 lattice at a pitch 0.5 % under their
+  // diameter, shaken by up to 0.2 % of it: some 4000 pairs in contact (the floor's 1200 with
+  // them, always listed), long enough for the radix sort, whose ids reach 1199 * 65536 (27
+  // bits, three digits); then shaken apart.
+  std::mt19937 rng(20261201);
+  std::uniform_real_distribution<double> shake(-4e-5, 4e-5);
+  const double r = 0.01, pitch = 0.995 * 2 * r;
+  Scene s;
+  s.size = 2 * r;
+  s.shapes.push_back(Shape::halfSpace());
+  s.poses.push_back(Eigen::Isometry3d::Identity());
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j)
+      for (int k = 0; k < 3; ++k) {
+        s.shapes.push_back(Shape::sphere(r));
+        Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+        t.translation() = Eigen::Vector3d(i * pitch + shake(rng), j * pitch + shake(rng),
+                                          0.999 * r + k * pitch + shake(rng));
+        s.poses.push_back(t);
+      }
+  const int n = static_cast<int>(s.shapes.size());
+  std::vector<std::pair<int, int>> all;
+  for (int g = 0; g < n; ++g)
+    for (int h = g + 1; h < n; ++h) all.emplace_back(g, h);
+  CollisionDetector brute(s.shapes, all);  // no broadphase: every pair in id order
+  CollisionDetector every_call(s.shapes, std::make_unique<SpreadPair>(), withSkin(0.0));
+  CollisionDetector skinned(s.shapes, std::make_unique<SpreadPair>(), withSkin(0.1));
+  auto spread = [&](int p) { return all[p].first * 65536 + all[p].second; };
+  std::vector<ContactPoint> want, got;
+  for (int call = 0; call < 3; ++call) {
+    const std::string where = "call " + std::to_string(call);
+    brute.detect(s.poses, want);
+    ASSERT_GT(want.size(), call == 0 ? 3000U : 1000U) << where;  // the floor's pairs: 1200
+    every_call.detect(s.poses, got);
+    expectSame(got, want, spread, where + ", the grid every call");
+    skinned.detect(s.poses, got);
+    expectSame(got, want, spread, where + ", the skin list");
+    moveAll(rng, s, call == 0 ? 1e-3 : 0.05);
+  }
+}
+
 }  // namespace
 }  // namespace tribo::contact
