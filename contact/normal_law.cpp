@@ -24,9 +24,7 @@ double g(double z) {
 
 }  // namespace
 
-double NormalLaw::energy(double depth) const {
-  if (depth <= 0.0) return 0.0;
-  if (type == NormalLawType::kLinear) return 0.5 * stiffness * depth * depth;
+double NormalLaw::powerEnergy(double depth) const {
   const double p = elasticExponent();
   return stiffness * std::pow(depth, p + 1.0) / (p + 1.0);
 }

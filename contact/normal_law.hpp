@@ -66,8 +66,15 @@ struct NormalLaw {
     return type == NormalLawType::kLinear ? 1.0 : type == NormalLawType::kHertz ? 1.5 : exponent;
   }
   // Elastic potential energy stored at depth d [J]: k d^(p+1) / (p+1), the integral of the
-  // elastic part (the energy guard's contact term, core/energy.hpp).
-  double energy(double depth) const;
+  // elastic part (the energy guard's contact term, core/energy.hpp). Inline for the linear
+  // law, k d^2 / 2 (asked once a contact point a step by the guard).
+  double energy(double depth) const {
+    if (depth <= 0.0) return 0.0;
+    if (type == NormalLawType::kLinear) return 0.5 * stiffness * depth * depth;
+    return powerEnergy(depth);
+  }
+  // The same for the power laws (p != 1), at a depth > 0.
+  double powerEnergy(double depth) const;
 
   // Throws std::invalid_argument naming the law and the bad parameter.
   void validate() const;

@@ -30,32 +30,37 @@ int surfacePairMaterial(const AutomaticContacts& rule, int a, int b) {
 int automaticPairId(const Model& model, int g, int h) {
   const AutomaticContacts& rule = model.automatic;
   if (g > h) std::swap(g, h);
-  const Geometry& a = model.geometries[static_cast<std::size_t>(g)];
-  const Geometry& b = model.geometries[static_cast<std::size_t>(h)];
-  if (g == h || a.body == b.body) return -1;
-  if (!rule.dynamic[g] && !rule.dynamic[h]) return -1;
-  if (rule.plane[g] && rule.plane[h]) return -1;
-  if (!(a.collision_group & b.collision_mask) || !(b.collision_group & a.collision_mask)) return -1;
+  const auto i = static_cast<std::size_t>(g), j = static_cast<std::size_t>(h);
+  if (g == h || rule.body[i] == rule.body[j]) return -1;
+  if (!rule.dynamic[i] && !rule.dynamic[j]) return -1;
+  if (rule.plane[i] && rule.plane[j]) return -1;
+  if (!(rule.group[i] & rule.mask[j]) || !(rule.group[j] & rule.mask[i])) return -1;
   if (!rule.joined_bodies_collide && !rule.joined.empty() &&
-      std::binary_search(rule.joined.begin(), rule.joined.end(), bodyPairKey(a.body, b.body)))
+      std::binary_search(rule.joined.begin(), rule.joined.end(),
+                         bodyPairKey(rule.body[i], rule.body[j])))
     return -1;
   return g * rule.geometry_count + h;
 }
 
-ContactPair automaticPair(const Model& model, int id) {
+std::pair<int, int> automaticGeometries(const Model& model, int id) {
   const AutomaticContacts& rule = model.automatic;
   const int g = id / rule.geometry_count, h = id % rule.geometry_count;
   const bool swap = !rule.dynamic[g]   ? false
                     : !rule.dynamic[h] ? true
                                        : !rule.plane[g] && rule.plane[h];
-  const int material = surfacePairMaterial(rule, rule.surface[g], rule.surface[h]);
+  return swap ? std::pair{h, g} : std::pair{g, h};
+}
+
+ContactPair automaticPair(const Model& model, int id) {
+  const AutomaticContacts& rule = model.automatic;
+  const auto [a, b] = automaticGeometries(model, id);
+  const int material = surfacePairMaterial(rule, rule.surface[a], rule.surface[b]);
   // The two geometries as one 8-byte word: built field by field, GCC wrote them to the stack
   // as two 4-byte stores and read them back as the return register's 8 bytes, a
   // store-forwarding stall that was most of this function's time (called once a contact
   // point on a sphere pile).
-  const auto a = static_cast<std::uint32_t>(swap ? h : g);
-  const auto b = static_cast<std::uint32_t>(swap ? g : h);
-  const std::uint64_t ab = a | (static_cast<std::uint64_t>(b) << 32);
+  const std::uint64_t ab = static_cast<std::uint32_t>(a) |
+                           (static_cast<std::uint64_t>(static_cast<std::uint32_t>(b)) << 32);
   ContactPair pair;
   static_assert(offsetof(ContactPair, geometry_b) == sizeof(std::uint32_t));
   std::memcpy(&pair.geometry_a, &ab, sizeof ab);

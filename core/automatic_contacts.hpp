@@ -29,6 +29,10 @@ struct AutomaticContacts {
   std::vector<int> surface;           // per geometry: its surface's index
   std::vector<std::uint8_t> dynamic;  // per geometry: on a dynamic body
   std::vector<std::uint8_t> plane;    // per geometry: a half-space
+  // Per geometry, its body and collision filter, copied from Model::geometries: the test of
+  // every pair the broadphase reports close reads these small arrays, not two Geometry records.
+  std::vector<BodyIndex> body;
+  std::vector<std::uint32_t> group, mask;
   int surface_count = 0;
   // The surface pairs given a material, sorted by surfacePairKey, and the material of every
   // other pair (-1: none). Sparse: a robot's links are a surface each (io/urdf_model.cpp),
@@ -54,6 +58,8 @@ int automaticPairId(const Model& model, int g, int h);
 
 // The pair (A, B, material) of an id automaticPairId returned.
 ContactPair automaticPair(const Model& model, int id);
+// Its geometries (A, B) alone, without the material's lookup (the detector's question).
+std::pair<int, int> automaticGeometries(const Model& model, int id);
 
 // Every pair that may touch, in id order: for what needs them all (per-pair output columns,
 // per-pair integrator events); quadratic in the geometries.

@@ -223,6 +223,9 @@ void ModelBuilder::addAutomaticContacts(Model& model) const {
     rule.dynamic.push_back(!g.body.isWorld() &&
                            model.bodies[g.body.value].kind == BodyKind::kDynamic);
     rule.plane.push_back(g.shape.type == contact::ShapeType::kHalfSpace);
+    rule.body.push_back(g.body);
+    rule.group.push_back(g.collision_group);
+    rule.mask.push_back(g.collision_mask);
   }
   rule.surface_count = static_cast<int>(surfaces.size());
   rule.default_material = default_material_;

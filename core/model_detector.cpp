@@ -14,10 +14,7 @@ class ModelPairRule : public contact::PairRule {
  public:
   explicit ModelPairRule(std::shared_ptr<const Model> model) : model_(std::move(model)) {}
   int pairId(int g, int h) const override { return automaticPairId(*model_, g, h); }
-  std::pair<int, int> geometries(int id) const override {
-    const ContactPair p = automaticPair(*model_, id);
-    return {p.geometry_a, p.geometry_b};
-  }
+  std::pair<int, int> geometries(int id) const override { return automaticGeometries(*model_, id); }
 
  private:
   std::shared_ptr<const Model> model_;
