@@ -115,10 +115,9 @@ Aabb worldBox(const Shape& shape, const Eigen::Isometry3d& pose, const Aabb* loc
     box.hi = pose.translation() + half;
     return box;
   }
-  // Shapes symmetric about their origin have support(-d) == support(d) bit for bit (|d| per
-  // component, a norm, a hypot): one call per axis.
-  const bool symmetric = shape.type == ShapeType::kBox || shape.type == ShapeType::kCapsule ||
-                         shape.type == ShapeType::kCylinder;
+  // Shapes symmetric about their origin have support(-d) == support(d) bit for bit (a norm,
+  // a hypot, |d_z|): one call per axis.
+  const bool symmetric = shape.type == ShapeType::kCapsule || shape.type == ShapeType::kCylinder;
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d axis = r.row(i).transpose();  // world axis i in the shape frame
     const double up = shape.support(axis);

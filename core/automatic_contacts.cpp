@@ -62,8 +62,9 @@ ContactPair automaticPair(const Model& model, int id) {
   const std::uint64_t ab = static_cast<std::uint32_t>(a) |
                            (static_cast<std::uint64_t>(static_cast<std::uint32_t>(b)) << 32);
   ContactPair pair;
-  static_assert(offsetof(ContactPair, geometry_b) == sizeof(std::uint32_t));
-  std::memcpy(&pair.geometry_a, &ab, sizeof ab);
+  static_assert(offsetof(ContactPair, geometry_a) == 0 &&
+                offsetof(ContactPair, geometry_b) == sizeof(std::uint32_t));
+  std::memcpy(&pair.geometry_a, &ab, sizeof ab);  // the two first ints (the static_assert)
   pair.material = material;
   return pair;
 }

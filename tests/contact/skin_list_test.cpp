@@ -6,9 +6,12 @@
 // skin, turn, teleport, and once take a NaN pose; and the same list for 1, 2 and 3 threads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "contact/collision_detector.hpp"

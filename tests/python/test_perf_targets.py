@@ -1,8 +1,9 @@
 """scripts/perf_targets.py: the throughput targets' table from the benches' JSON. Made-up
 bench files whose figures give each target a value worked out by hand here: the rate on two
 threads, the growth exponent, the Bullet ratio that does not count when Tribo rests deeper
-than MuJoCo (and the one on a setting of the scene that rests no deeper), the median of repetitions, a missing bench, the table written between the
-markers of a page and nowhere else."""
+than MuJoCo (and the one on a setting of the scene that rests no deeper), the median of
+repetitions, a missing bench, the table written between the markers of a page and nowhere
+else."""
 import importlib.util
 import json
 import subprocess
