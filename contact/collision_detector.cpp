@@ -93,26 +93,25 @@ std::shared_ptr<fcl::CollisionGeometryd> makeFclGeometry(const Shape& shape) {
 // The world box of a shape at `pose`: tight, from the shape's support function along the
 // world axes (FCL's own box of a rotated object is the bounding sphere's, which makes resting
 // neighbours overlap). A mesh with many vertices: its local box turned (|R| times the half
-// extents), since the support costs a pass over the vertices.
+// extents), since the support costs a pass over the vertices; a box the same way (exactly its
+// support along each axis); a sphere its centre +- r.
 Aabb worldBox(const Shape& shape, const Eigen::Isometry3d& pose, const Aabb* local) {
   const Eigen::Matrix3d& r = pose.linear();
   Aabb box;
-  if (local != nullptr) {
-    const Eigen::Vector3d centre = pose * (0.5 * (local->lo + local->hi));
-    const Eigen::Vector3d half = r.cwiseAbs() * (0.5 * (local->hi - local->lo));
-    box.lo = centre - half;
-    box.hi = centre + half;
+  // A box of local half widths `half` about `centre` (world), turned by r: its half width
+  // along world axis i is |row i of r| . half.
+  auto turned = [&](const Eigen::Vector3d& centre, const Eigen::Vector3d& half) {
+    const Eigen::Vector3d world_half = r.cwiseAbs() * half;
+    box.lo = centre - world_half;
+    box.hi = centre + world_half;
     return box;
-  }
+  };
+  if (local != nullptr)
+    return turned(pose * (0.5 * (local->lo + local->hi)), 0.5 * (local->hi - local->lo));
+  if (shape.type == ShapeType::kBox) return turned(pose.translation(), shape.half_extents);
   if (shape.type == ShapeType::kSphere) {  // the same in every frame: no rotation, no norm
     box.lo = pose.translation().array() - shape.radius;
     box.hi = pose.translation().array() + shape.radius;
-    return box;
-  }
-  if (shape.type == ShapeType::kBox) {  // half width along world axis i: |row i of r| . h
-    const Eigen::Vector3d half = r.cwiseAbs() * shape.half_extents;
-    box.lo = pose.translation() - half;
-    box.hi = pose.translation() + half;
     return box;
   }
   // Shapes symmetric about their origin have support(-d) == support(d) bit for bit (a norm,
