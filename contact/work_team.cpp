@@ -9,6 +9,12 @@
 
 #include "contact/split_count.hpp"
 
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#else
+#include <cfenv>
+#endif
+
 namespace tribo::contact {
 
 namespace {
@@ -16,6 +22,26 @@ namespace {
 // The most chunks a loop may be cut into to be shared (the claim word's 16-bit fields); a loop
 // of more runs on its caller.
 constexpr std::size_t kMaxChunks = 0xffff;
+
+// The floating-point control a loop's chunks run under: the caller's, on every thread. On x86
+// the SSE control register (MXCSR): its rounding mode and its flush-to-zero and
+// denormals-are-zero bits, which a step sets (core/flush_denormals.hpp) and which change
+// results (a subnormal input reads as zero); elsewhere the rounding mode. A helper that ran
+// under its own default would compute its chunks differently from the caller whenever a
+// subnormal number or another rounding mode is in play, and on subnormals about 100 times
+// slower. The status flags are not carried (nothing reads a helper's).
+struct FpControl {
+#if defined(__SSE__) || defined(_M_X64)
+  static constexpr unsigned kStatusFlags = 0x3f;
+  unsigned csr = 0;
+  static FpControl current() { return {_mm_getcsr() & ~kStatusFlags}; }
+  void apply() const { _mm_setcsr(csr); }
+#else
+  int rounding = FE_TONEAREST;
+  static FpControl current() { return {std::fegetround()}; }
+  void apply() const { std::fesetround(rounding); }
+#endif
+};
 
 // A busy-wait hint to the core (the other hyperthread gets the pipeline).
 inline void relax() {
@@ -45,6 +71,7 @@ class WorkTeam {
       std::lock_guard<std::mutex> lock(mutex_);
       work_ = work;
       chunks_ = chunks;
+      control_ = FpControl::current();
       wanted_ = threads - 1;
       joined_ = 0;
       done_.store(0, std::memory_order_relaxed);
@@ -122,8 +149,12 @@ class WorkTeam {
       ++joined_;
       const ChunkWork work = work_;
       const std::size_t chunks = chunks_;
+      const FpControl control = control_;
       lock.unlock();
+      const FpControl own = FpControl::current();
+      control.apply();  // the caller's rounding and subnormal handling
       take(seen, work, chunks, true);
+      own.apply();
     }
   }
 
@@ -138,6 +169,7 @@ class WorkTeam {
   std::atomic<bool> busy_{false};
   ChunkWork work_;          // guarded by mutex_
   std::size_t chunks_ = 0;  // guarded by mutex_
+  FpControl control_;       // the caller's, guarded by mutex_
   int wanted_ = 0;          // helpers this loop asked for, guarded by mutex_
   int joined_ = 0;          // helpers that joined it, guarded by mutex_
   int helpers_ = 0;         // started; touched only by the caller holding busy_

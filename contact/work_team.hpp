@@ -5,7 +5,10 @@
 // one. Only a chunk a helper has already claimed is waited for. Which thread ran a chunk
 // never changes what the chunk computes, so callers that give each chunk its own outputs get
 // the same bits for any number of threads. The caller claims from the front, helpers from the
-// back, so that each thread keeps about the same share from loop to loop (its cache).
+// back, so that each thread keeps about the same share from loop to loop (its cache). A
+// helper runs the chunks under the caller's floating-point control (rounding, and on x86 the
+// flush-to-zero and denormals-are-zero bits a step sets: core/flush_denormals.hpp), so a
+// chunk computes the same bits on any thread.
 // Helpers are started on first use (as many as the largest team asked for, less one), spin
 // about 50 us for the next loop, then sleep on a condition variable. One loop at a time: a
 // loop asked for while another runs (another simulator's thread, or a loop inside a chunk)

@@ -1,18 +1,24 @@
 // The threads that share a step's loops (contact/work_team.hpp): every chunk runs exactly
 // once and its outputs are seen by the caller, for any chunk and thread count; loops asked
 // for from inside a chunk or from two threads at once still run every chunk; helpers take
-// part; parallelFor covers every index once.
+// part; helpers compute under the caller's floating-point control (rounding, and subnormal
+// numbers flushed as the caller flushes them); parallelFor covers every index once.
 #include "contact/work_team.hpp"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cfenv>
 #include <cmath>
 #include <thread>
 #include <vector>
 
 #include "contact/parallel_range.hpp"
 #include "contact/split_count.hpp"
+
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
 
 namespace tribo::contact {
 namespace {
@@ -57,6 +63,68 @@ TEST(WorkTeam, HelpersTakePart) {
   EXPECT_EQ(splitLoopCount().load() - split_before, 100);
   EXPECT_GT(helpedLoopCount().load() - helped_before, 0) << "no helper ran a chunk";
   for (std::size_t c = 0; c < out.size(); ++c) EXPECT_EQ(out[c], spin(c, 20000));
+}
+
+// What a chunk computes that depends on the floating-point control: a subnormal times one (0
+// when subnormal inputs read as zero), and 1/3 (rounded up or to nearest).
+struct ControlSensitive {
+  double tiny_times_one = -1.0, third = -1.0;
+};
+ControlSensitive controlSensitive() {
+  volatile double tiny = 1e-310, one = 1.0, three = 3.0;  // tiny: below 2.2e-308
+  return {tiny * one, one / three};
+}
+
+// The caller runs its loops rounding upwards and, on x86, with subnormals flushed (the bits a
+// step sets: core/flush_denormals.hpp): every chunk, whichever thread ran it, must give the
+// caller's results, which differ from the default mode's in both numbers.
+TEST(WorkTeam, HelpersComputeUnderTheCallersFloatingPointControl) {
+  const ControlSensitive plain = controlSensitive();
+  ASSERT_GT(plain.tiny_times_one, 0.0);
+  const int rounding = std::fegetround();
+  ASSERT_EQ(std::fesetround(FE_UPWARD), 0);
+#if defined(__SSE__) || defined(_M_X64)
+  const unsigned csr = _mm_getcsr();
+  _mm_setcsr(csr | 0x8040u);  // flush to zero (0x8000), denormals are zero (0x0040)
+#endif
+  const ControlSensitive callers = controlSensitive();
+  EXPECT_NE(callers.third, plain.third);
+#if defined(__SSE__) || defined(_M_X64)
+  EXPECT_EQ(callers.tiny_times_one, 0.0);
+#endif
+  const long helped_before = helpedLoopCount().load();
+  std::vector<ControlSensitive> out(16);
+  std::vector<double> sink(16);
+  for (int loop = 0; loop < 100; ++loop) {
+    auto work = [&](std::size_t c) {
+      sink[c] = spin(c, 20000);  // about 0.1 ms: long enough for a helper to join
+      out[c] = controlSensitive();
+    };
+    runChunks(out.size(), 2, work);
+    for (std::size_t c = 0; c < out.size(); ++c) {
+      ASSERT_EQ(out[c].tiny_times_one, callers.tiny_times_one)
+          << "loop " << loop << ", chunk " << c;
+      ASSERT_EQ(out[c].third, callers.third) << "loop " << loop << ", chunk " << c;
+    }
+  }
+#if defined(__SSE__) || defined(_M_X64)
+  _mm_setcsr(csr);
+#endif
+  std::fesetround(rounding);
+  EXPECT_GT(helpedLoopCount().load() - helped_before, 0) << "no helper ran a chunk";
+  // Back in the default mode, every thread computes the default results again.
+  std::vector<ControlSensitive> after(16);
+  for (int loop = 0; loop < 20; ++loop) {
+    auto work = [&](std::size_t c) {
+      sink[c] = spin(c, 20000);
+      after[c] = controlSensitive();
+    };
+    runChunks(after.size(), 2, work);
+    for (const ControlSensitive& r : after) {
+      ASSERT_EQ(r.tiny_times_one, plain.tiny_times_one);
+      ASSERT_EQ(r.third, plain.third);
+    }
+  }
 }
 
 TEST(WorkTeam, ALoopInsideAChunkRunsOnItsCaller) {

@@ -6,10 +6,12 @@
 // thread ran part of is printed: contact/split_count.hpp):
 // box grids of 16 x 16 and 30 x 30 resting and sliding on a half-space (closed-form
 // corners), boxes colliding with each other (FCL's box/box), stateful (elastic_stick) and
-// dynamic (LuGre) friction, boxes hinged to the world by revolute joints, and the pile of
-// 200 spheres (its narrowphase splits). A 7 x 7 grid, below every stage's threshold, is
-// checked to stay on one thread. The reference is the one-thread run of the same scene in the same
-// process. Also: the scene key and its errors, and the sweep's limit of one thread per point.
+// dynamic (LuGre) friction, boxes hinged to the world by revolute joints, the pile of
+// 200 spheres (its narrowphase splits), and boxes sliding so slowly that their squared slip
+// speed is subnormal (flushed to zero in a step, on every thread). A 7 x 7 grid, below every
+// stage's threshold, is checked to stay on one thread. The reference is the one-thread run of the
+// same scene in the same process. Also: the scene key and its errors, and the sweep's limit of one
+// thread per point.
 #include <gtest/gtest.h>
 #include <sched.h>
 
@@ -19,8 +21,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "contact/split_count.hpp"
+#include "contact/work_team.hpp"
 #include "core/dynamics.hpp"
 #include "core/simulator.hpp"
 #include "core/thread_choice.hpp"
@@ -211,6 +215,56 @@ TEST(ThreadedEvaluation, DynamicFriction) {
 
 TEST(ThreadedEvaluation, BoxesOnRevoluteJoints) {
   expectSameOnThreads(boxGrid(12, 0.25, "coulomb", "rk4", 0.0, true), 20, 2 * 144);
+}
+
+// Every box sliding at 1e-160 m/s along x and y: the squared slip speed, 2e-320, is
+// subnormal, which a step flushes to zero (core/flush_denormals.hpp), so a step from there
+// finds a slip speed of 0 and no friction force, and leaves the x velocity as it was. A
+// thread that did not flush would find a slip speed of 1.4e-160 and a friction force of about
+// 1e-157 N. (Steps after that slide at normal numbers: the boxes settle and rock by about
+// 1e-13 m/s.) The helper threads are started here by a loop outside any step, in the
+// default floating-point mode (as a loop of a study or of another library in the process
+// would start them: a thread starts in its creator's mode). The step from the slow state is
+// taken 50 times on each simulator, after a few steps have woken its helpers, so that helpers
+// run chunks of it.
+TEST(ThreadedEvaluation, SubnormalSquaredSlipSpeedIsFlushedOnEveryThread) {
+  std::vector<int> started(64, 0);
+  auto mark = [&](std::size_t c) { started[c] = 1; };
+  contact::runChunks(started.size(), 3, mark);  // starts two helpers
+  const std::string yaml = boxGrid(16, 0.25, "coulomb", "semi_implicit_euler");
+  const std::shared_ptr<const Model> model = load(yaml, 1);
+  State slow = Simulator(model).state();
+  std::size_t boxes = 0;
+  for (std::size_t b = 0; b < slow.bodies.size(); ++b) {
+    if (model->bodies[b].kind != BodyKind::kDynamic) continue;  // the ground
+    slow.bodies[b].velocity = Vec3(1e-160, -1e-160, 0.0);
+    slow.bodies[b].angular_velocity.setZero();
+    ++boxes;
+  }
+  ASSERT_EQ(boxes, 256u);
+  State reference;
+  for (int threads : {1, 2, 3}) {
+    Simulator sim(load(yaml, threads));
+    for (int i = 0; i < 5; ++i) ASSERT_TRUE(sim.step().ok);
+    const long split_before = contact::splitLoopCount().load();
+    const long helped_before = contact::helpedLoopCount().load();
+    for (int trial = 0; trial < 50; ++trial) {
+      sim.setState(slow);
+      ASSERT_TRUE(sim.step().ok);
+      const State& after = sim.state();
+      for (std::size_t b = 0; b < after.bodies.size(); ++b)
+        if (model->bodies[b].kind == BodyKind::kDynamic) {
+          ASSERT_EQ(after.bodies[b].velocity.x(), 1e-160) << threads << " threads, body " << b;
+        }
+      if (threads == 1 && trial == 0) reference = after;
+      ASSERT_TRUE(identical(reference, after)) << threads << " threads, trial " << trial;
+    }
+    if (threads > 1) {
+      EXPECT_GE(contact::splitLoopCount().load() - split_before, 50) << threads << " threads";
+      std::printf("%d threads: helpers took part in %ld split loops\n", threads,
+                  contact::helpedLoopCount().load() - helped_before);
+    }
+  }
 }
 
 TEST(ThreadedEvaluation, AutoIsTheEnvironmentsCountElseTheCores) {
