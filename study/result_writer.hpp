@@ -41,6 +41,7 @@ class TrajectoryCsvFile : public RowSink {
   std::filesystem::path file_;
   std::FILE* f_ = nullptr;
   int digits_ = 10;
+  std::vector<char> line_;  // a row's text, written with one call
 };
 
 // Throws std::runtime_error naming the path when a file cannot be written. The recorder must

@@ -1,8 +1,8 @@
 // A run's output when it is streamed rather than kept: the spilled columns read back what
 // was appended, the oscillation analysis gives the same bits from a spill as from memory,
 // a streamed run writes the rows a kept run holds, a stop request ends the run at an output
-// row, the output budget refuses what would not fit and names the keys, and a locked folder
-// refuses a second writer.
+// row, the output budget refuses what would not fit and names the keys, a locked folder
+// refuses a second writer, and a streamed trajectory's rows are their numbers' text.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "io/scene_loader.hpp"
+#include "study/csv_text.hpp"
 #include "study/dir_lock.hpp"
 #include "study/oscillation_summary.hpp"
 #include "study/output_budget.hpp"
@@ -231,6 +232,56 @@ TEST(TrajectoryCsv, SeventeenDigitsGiveBackEveryBit) {
       EXPECT_NE(std::string(e.what()).find("output.digits"), std::string::npos) << e.what();
     }
   }
+}
+
+// TrajectoryCsvFile's rows (one write a row): each row is its numbers' text (csvNumber, to the
+// file's digits; a non-finite number an empty field) joined by commas, under the header: rows
+// of 1, 3 and 20 801 columns (wider than a 1600-box run's 12 809), numbers of every size and
+// sign, subnormal and non-finite ones, at 10 and 17 digits, written while a second thread runs.
+TEST(TrajectoryCsv, EachRowIsItsNumbersTextJoinedByCommas) {
+  const fs::path dir = freshDir("rows");
+  std::atomic<bool> stop{false};
+  std::thread other([&] {
+    while (!stop.load()) std::this_thread::yield();
+  });
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::vector<double>> rows = {
+      {0.5},
+      {-1.0 / 3.0, 6.02214076e23, 4.9e-324},
+      {std::nan(""), inf, -inf},
+      {1e-310, -0.0, 123456789.123456789},
+  };
+  std::vector<double> wide(20801);
+  for (std::size_t c = 0; c < wide.size(); ++c)
+    wide[c] = std::sin(0.37 * static_cast<double>(c)) *
+              std::pow(10.0, static_cast<double>(c % 41) - 20.0);
+  for (const int digits : {10, 17}) {
+    const fs::path file = dir / ("rows" + std::to_string(digits) + ".csv");
+    std::string expected = "a,b\n";
+    {
+      TrajectoryCsvFile csv(file, {"a", "b"}, digits);
+      auto add = [&](std::span<const double> values) {
+        csv.row(values);
+        for (std::size_t c = 0; c < values.size(); ++c) {
+          if (c > 0) expected += ',';
+          expected += csvNumber(values[c], digits);
+        }
+        expected += '\n';
+      };
+      for (const std::vector<double>& r : rows) add(r);
+      add(wide);
+      add(wide);
+      csv.commit();
+    }
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str().size(), expected.size()) << digits << " digits";
+    EXPECT_TRUE(text.str() == expected) << digits << " digits: the file differs";
+  }
+  stop = true;
+  other.join();
+  fs::remove_all(dir);
 }
 
 TEST(StreamedRun, AStopRequestEndsTheRunBackAtTheLastOutputRow) {
