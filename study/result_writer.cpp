@@ -56,10 +56,9 @@ TrajectoryCsvFile::~TrajectoryCsvFile() {
 }
 
 void TrajectoryCsvFile::row(std::span<const double> values) {
-  // The row's text first, then one write: stdio locks the file at every call once the process
-  // has a second thread (the work team's helpers, contact/work_team.hpp); a call a number and
-  // one a comma took 18 % of a 1600-box run's samples on one thread and 28 % on `threads: auto`
-  // (docs/performance.md).
+  // The row's text first, then one write: a stdio call a number and one a comma took 18 % of a
+  // 1600-box run's samples on one thread, and 28 % on `threads: auto`, where stdio also locks
+  // the file at every call (the work team's helpers are a second thread; docs/performance.md).
   constexpr std::size_t kField = 64;  // a number's text, with room to spare
   line_.resize(values.size() * (kField + 1) + 1);
   char* p = line_.data();
