@@ -151,10 +151,8 @@ class WorkTeam {
       const std::size_t chunks = chunks_;
       const FpControl control = control_;
       lock.unlock();
-      const FpControl own = FpControl::current();
-      control.apply();  // the caller's rounding and subnormal handling
+      control.apply();  // the caller's rounding and subnormal handling (a helper runs nothing else)
       take(seen, work, chunks, true);
-      own.apply();
     }
   }
 

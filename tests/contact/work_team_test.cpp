@@ -15,10 +15,7 @@
 
 #include "contact/parallel_range.hpp"
 #include "contact/split_count.hpp"
-
-#if defined(__SSE__) || defined(_M_X64)
-#include <xmmintrin.h>
-#endif
+#include "core/flush_denormals.hpp"
 
 namespace tribo::contact {
 namespace {
@@ -75,41 +72,37 @@ ControlSensitive controlSensitive() {
   return {tiny * one, one / three};
 }
 
-// The caller runs its loops rounding upwards and, on x86, with subnormals flushed (the bits a
-// step sets: core/flush_denormals.hpp): every chunk, whichever thread ran it, must give the
+// The caller runs its loops rounding upwards and, on x86, with subnormals flushed (the step's
+// own guard, core/flush_denormals.hpp): every chunk, whichever thread ran it, must give the
 // caller's results, which differ from the default mode's in both numbers.
 TEST(WorkTeam, HelpersComputeUnderTheCallersFloatingPointControl) {
   const ControlSensitive plain = controlSensitive();
   ASSERT_GT(plain.tiny_times_one, 0.0);
   const int rounding = std::fegetround();
   ASSERT_EQ(std::fesetround(FE_UPWARD), 0);
-#if defined(__SSE__) || defined(_M_X64)
-  const unsigned csr = _mm_getcsr();
-  _mm_setcsr(csr | 0x8040u);  // flush to zero (0x8000), denormals are zero (0x0040)
-#endif
-  const ControlSensitive callers = controlSensitive();
-  EXPECT_NE(callers.third, plain.third);
-#if defined(__SSE__) || defined(_M_X64)
-  EXPECT_EQ(callers.tiny_times_one, 0.0);
-#endif
   const long helped_before = helpedLoopCount().load();
-  std::vector<ControlSensitive> out(16);
   std::vector<double> sink(16);
-  for (int loop = 0; loop < 100; ++loop) {
-    auto work = [&](std::size_t c) {
-      sink[c] = spin(c, 20000);  // about 0.1 ms: long enough for a helper to join
-      out[c] = controlSensitive();
-    };
-    runChunks(out.size(), 2, work);
-    for (std::size_t c = 0; c < out.size(); ++c) {
-      ASSERT_EQ(out[c].tiny_times_one, callers.tiny_times_one)
-          << "loop " << loop << ", chunk " << c;
-      ASSERT_EQ(out[c].third, callers.third) << "loop " << loop << ", chunk " << c;
+  {
+    const ScopedFlushDenormals flush;
+    const ControlSensitive callers = controlSensitive();
+    EXPECT_NE(callers.third, plain.third);
+#ifdef TRIBO_HAS_MXCSR
+    EXPECT_EQ(callers.tiny_times_one, 0.0);
+#endif
+    std::vector<ControlSensitive> out(16);
+    for (int loop = 0; loop < 100; ++loop) {
+      auto work = [&](std::size_t c) {
+        sink[c] = spin(c, 20000);  // about 0.1 ms: long enough for a helper to join
+        out[c] = controlSensitive();
+      };
+      runChunks(out.size(), 2, work);
+      for (std::size_t c = 0; c < out.size(); ++c) {
+        ASSERT_EQ(out[c].tiny_times_one, callers.tiny_times_one)
+            << "loop " << loop << ", chunk " << c;
+        ASSERT_EQ(out[c].third, callers.third) << "loop " << loop << ", chunk " << c;
+      }
     }
   }
-#if defined(__SSE__) || defined(_M_X64)
-  _mm_setcsr(csr);
-#endif
   std::fesetround(rounding);
   EXPECT_GT(helpedLoopCount().load() - helped_before, 0) << "no helper ran a chunk";
   // Back in the default mode, every thread computes the default results again.
