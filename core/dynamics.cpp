@@ -65,9 +65,15 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   const Model& m = *model_;
   const std::size_t nb = m.bodies.size(), ng = m.geometries.size();
   inv_inertia_body_.reserve(nb);
-  for (const Body& b : m.bodies)
-    inv_inertia_body_.push_back(b.kind == BodyKind::kDynamic ? Mat3(b.inertia.inverse())
-                                                             : Mat3::Zero());
+  isotropic_inverse_.reserve(nb);
+  for (const Body& b : m.bodies) {
+    const bool dynamic = b.kind == BodyKind::kDynamic;
+    inv_inertia_body_.push_back(dynamic ? Mat3(b.inertia.inverse()) : Mat3::Zero());
+    const double s = b.inertia(0, 0);
+    const bool isotropic = dynamic && s > 0.0 && std::isfinite(s) &&
+                           b.inertia == Mat3(s * Mat3::Identity()) && std::isfinite(1.0 / s);
+    isotropic_inverse_.push_back(isotropic ? 1.0 / s : 0.0);
+  }
   ws_.geometry_poses.assign(ng, Eigen::Isometry3d::Identity());
   geometry_motion_.resize(ng);
   prescribed_bodies_ = tribo::prescribedBodies(m.bodies);
@@ -99,6 +105,9 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   ws_.load_force.assign(m.loads.size(), Vec3::Zero());
   ws_.rotation.assign(nb, Mat3::Identity());
   ws_.inv_inertia_world.assign(nb, Mat3::Zero());
+  for (std::size_t b = 0; b < nb; ++b)  // an isotropic body's, for good (updatePoses)
+    if (isotropic_inverse_[b] > 0.0)
+      ws_.inv_inertia_world[b] = isotropic_inverse_[b] * Mat3::Identity();
   ws_.linear_acceleration.assign(nb, Vec3::Zero());
   ws_.angular_acceleration.assign(nb, Vec3::Zero());
   // Automatic contacts list every pair that may touch; reserve for the few that do: four
@@ -157,8 +166,10 @@ namespace {
 // Body b's acceleration from its wrenches, gravity and gyroscopic terms (a kinematic body's
 // from its prescribed motion). Only the sources the model has (Dynamics::Dynamics): a wrench
 // of a source it has not is zero, and a sum of contact forces starting from +0 is never -0,
-// so leaving it out adds nothing a bit would show.
-void unconstrainedAcceleration(const Model& m, const State& state, Workspace& ws, std::size_t b) {
+// so leaving it out adds nothing a bit would show. `isotropic_inverse`: 1 / I for a body whose
+// inertia is I times the identity (Dynamics::isotropic_inverse_), else 0.
+void unconstrainedAcceleration(const Model& m, const State& state, Workspace& ws, std::size_t b,
+                               double isotropic_inverse) {
   const Body& body = m.bodies[b];
   if (body.kind != BodyKind::kDynamic) {
     if (body.motion) {  // core/prescribed_motion.hpp: the signals' derivatives
@@ -185,10 +196,14 @@ void unconstrainedAcceleration(const Model& m, const State& state, Workspace& ws
     force += ws.load_wrench[b].force;
     torque += ws.load_wrench[b].torque;
   }
+  ws.linear_acceleration[b] = force / body.mass + m.options.gravity;
+  if (isotropic_inverse > 0.0) {  // I w is parallel to w: no gyroscopic term
+    ws.angular_acceleration[b] = isotropic_inverse * torque;
+    return;
+  }
   const Mat3& r = ws.rotation[b];
   const Vec3 gyro =
       s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));
-  ws.linear_acceleration[b] = force / body.mass + m.options.gravity;
   ws.angular_acceleration[b] = ws.inv_inertia_world[b] * (torque - gyro);
 }
 
@@ -234,7 +249,7 @@ void Dynamics::updatePoses(const State& state) {
   parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
     const Mat3 r = state.bodies[b].orientation.toRotationMatrix();
     ws_.rotation[b] = r;
-    if (m.bodies[b].kind == BodyKind::kDynamic)
+    if (m.bodies[b].kind == BodyKind::kDynamic && isotropic_inverse_[b] == 0.0)
       ws_.inv_inertia_world[b] = rotatedTensor(r, inv_inertia_body_[b]);
   });
   const std::size_t ng = m.geometries.size();
@@ -372,7 +387,8 @@ void Dynamics::assemble(const State& state) {
       }
     }
     if (with_accelerations)
-      for (std::size_t b = 0; b < nb; ++b) unconstrainedAcceleration(m, state, ws_, b);
+      for (std::size_t b = 0; b < nb; ++b)
+        unconstrainedAcceleration(m, state, ws_, b, isotropic_inverse_[b]);
   } else {
     listedContactSums(state, with_accelerations);
   }
@@ -420,7 +436,7 @@ void Dynamics::listedContactSums(const State& state, bool with_accelerations) {
       sum_torque += torque;
     }
     ws_.contact_wrench[b] = {sum_force, sum_torque};
-    if (with_accelerations) unconstrainedAcceleration(m, state, ws_, b);
+    if (with_accelerations) unconstrainedAcceleration(m, state, ws_, b, isotropic_inverse_[b]);
   });
 }
 
@@ -481,8 +497,9 @@ void Dynamics::accumulateBushingsAndTorsion(const State& state) {
 void Dynamics::unconstrainedAccelerations(const State& state) {
   if (accelerationsWithContactSums(profiling_, *model_, ws_)) return;  // made in assemble
   const Model& m = *model_;
-  parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_),
-              [&](std::size_t b) { unconstrainedAcceleration(m, state, ws_, b); });
+  parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
+    unconstrainedAcceleration(m, state, ws_, b, isotropic_inverse_[b]);
+  });
 }
 
 void Dynamics::solveConstraints(const State& state) {

@@ -131,7 +131,12 @@ class Dynamics {
   AppliedLoads loads_;
   mutable ConstraintProjection projection_;  // scratch only; initialState() uses it
   Workspace ws_;
-  std::vector<Mat3> inv_inertia_body_;                    // per body, zero for kinematic bodies
+  std::vector<Mat3> inv_inertia_body_;  // per body, zero for kinematic bodies
+  // Per body: 1 / I for a dynamic body whose body-frame inertia is exactly I times the
+  // identity (a sphere, a cube): its world inertia is I in every orientation (R I R^T = I),
+  // so updatePoses leaves its inverse as the constructor set it, and its gyroscopic term
+  // w x (I w) is zero; 0 for every other body, which takes the general formulas.
+  std::vector<double> isotropic_inverse_;
   std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
   std::vector<char> at_body_origin_;  // per geometry: its local pose is the identity
   std::vector<std::size_t> prescribed_bodies_;
