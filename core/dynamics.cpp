@@ -69,10 +69,8 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   for (const Body& b : m.bodies) {
     const bool dynamic = b.kind == BodyKind::kDynamic;
     inv_inertia_body_.push_back(dynamic ? Mat3(b.inertia.inverse()) : Mat3::Zero());
-    const double s = b.inertia(0, 0);
-    const bool isotropic = dynamic && s > 0.0 && std::isfinite(s) &&
-                           b.inertia == Mat3(s * Mat3::Identity()) && std::isfinite(1.0 / s);
-    isotropic_inverse_.push_back(isotropic ? 1.0 / s : 0.0);
+    const double s = dynamic ? isotropicMoment(b.inertia) : 0.0;
+    isotropic_inverse_.push_back(s > 0.0 ? 1.0 / s : 0.0);
   }
   ws_.geometry_poses.assign(ng, Eigen::Isometry3d::Identity());
   geometry_motion_.resize(ng);

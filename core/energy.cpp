@@ -32,9 +32,13 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
         (c.force + k.force).dot(s.velocity) + (c.torque + k.torque).dot(s.angular_velocity);
     return t;
   }
+  // A sphere's or a cube's rotational terms without turning w into the body frame.
+  const double isotropic = isotropicMoment(body.inertia);
   const Mat3& r = ws.rotation[b];
-  const Vec3 w_body = r.transpose() * s.angular_velocity;
-  t.kinetic = 0.5 * body.mass * s.velocity.squaredNorm() + 0.5 * w_body.dot(body.inertia * w_body);
+  const Vec3 w_body = isotropic > 0.0 ? Vec3::Zero() : Vec3(r.transpose() * s.angular_velocity);
+  t.kinetic = 0.5 * body.mass * s.velocity.squaredNorm() +
+              0.5 * (isotropic > 0.0 ? isotropic * s.angular_velocity.squaredNorm()
+                                     : w_body.dot(body.inertia * w_body));
   t.gravity = -body.mass * model.options.gravity.dot(s.position);
   // Joint constraint forces and joint elements (limits, springs, dampers, friction,
   // drives) count as sources: their work enters or leaves through the joints. A model
@@ -51,9 +55,10 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
     t.power[2] = l.force.dot(s.velocity) + l.torque.dot(s.angular_velocity);
   }
   if (rate) {  // d(kinetic energy)/dt
-    const Vec3 alpha_body = r.transpose() * ws.angular_acceleration[b];
-    t.kinetic_rate = body.mass * ws.linear_acceleration[b].dot(s.velocity) +
-                     w_body.dot(body.inertia * alpha_body);
+    const double spin_rate =
+        isotropic > 0.0 ? isotropic * s.angular_velocity.dot(ws.angular_acceleration[b])
+                        : w_body.dot(body.inertia * (r.transpose() * ws.angular_acceleration[b]));
+    t.kinetic_rate = body.mass * ws.linear_acceleration[b].dot(s.velocity) + spin_rate;
   }
   return t;
 }

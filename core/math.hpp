@@ -21,6 +21,16 @@ inline Quat rotateBy(const Vec3& w, double h, const Quat& q) {
   return (Quat(Eigen::AngleAxisd(angle, w / w.norm())) * q).normalized();
 }
 
+// The moment I of a body-frame inertia that is exactly I times the identity (a sphere, a
+// cube), else 0: such a body's world inertia is I in every orientation (R I R^T = I), and
+// I w is parallel to w (no gyroscopic term). 0 too for an I whose inverse is not finite.
+inline double isotropicMoment(const Mat3& inertia) {
+  const double s = inertia(0, 0);
+  const bool isotropic = s > 0.0 && std::isfinite(s) && std::isfinite(1.0 / s) &&
+                         inertia == Mat3(s * Mat3::Identity());
+  return isotropic ? s : 0.0;
+}
+
 // dq/dt for world-frame angular velocity w: 0.5 * [0, w] (x) q.
 inline Eigen::Vector4d quaternionRate(const Vec3& w, const Quat& q) {
   const Quat r = Quat(0.0, w.x(), w.y(), w.z()) * q;

@@ -6,6 +6,7 @@
 // - a body almost isotropic (one moment off by 1e-12 to 1e-3 of the others) keeps the
 //   general formulas: its angular acceleration is the gyroscopic term worked out here in the
 //   body frame, not zero;
+// - the energy account's kinetic energy of a spinning sphere, I |w|^2 / 2;
 // - spheres and cubes given by their geometry (the solid formulas) are isotropic bodies; a box
 //   with one edge longer is not.
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <random>
 #include <string>
 
+#include "core/energy.hpp"
 #include "core/model_builder.hpp"
 #include "core/simulator.hpp"
 #include "io/scene_loader.hpp"
@@ -127,6 +129,24 @@ TEST(IsotropicBody, AlmostIsotropicBodyKeepsItsGyroscopicTerm) {
       if (off >= 1e-9) {
         EXPECT_GT(got_body.norm(), 0.5 * want_body.norm()) << off;
       }
+    }
+}
+
+TEST(IsotropicBody, KineticEnergyIsHalfMomentTimesSpinSquared) {
+  std::mt19937 rng(5);
+  for (const double moment : {1e-8, 0.3, 2e5})
+    for (const double spin : {1e-3, 7.0, 2e3}) {
+      const Spin s{moment * Mat3::Identity(), randomOrientation(rng), randomVector(rng, spin)};
+      Dynamics dynamics(spinningBody(s, IntegratorType::kSemiImplicitEuler));
+      const State state = dynamics.initialState();
+      const Workspace& ws = dynamics.evaluate(state);
+      std::vector<double> body_energy;
+      const EnergyAccount account = measureEnergy(dynamics.model(), state, ws, &body_energy);
+      // At rest in zero gravity, spinning: E = I |w|^2 / 2, whatever the orientation.
+      const double want = 0.5 * moment * spin * spin;
+      ASSERT_EQ(body_energy.size(), 1u);
+      EXPECT_NEAR(body_energy[0], want, 4e-16 * want) << moment << " " << spin;
+      EXPECT_NEAR(account.kinetic, want, 4e-16 * want) << moment << " " << spin;
     }
 }
 
