@@ -138,7 +138,19 @@ class Dynamics {
   // w x (I w) is zero; 0 for every other body, which takes the general formulas.
   std::vector<double> isotropic_inverse_;
   std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
-  std::vector<char> at_body_origin_;  // per geometry: its local pose is the identity
+  // Per geometry, its body's index (-1 on the world): the passes over geometries read it
+  // rather than the model's geometry record (a few hundred bytes, one cache line each).
+  std::vector<int> geometry_body_;
+  // Per body, one geometry whose local pose is the identity (-1 when none): updatePoses
+  // writes its pose (the body's own) in the pass over bodies, while the rotation is in
+  // registers; the pass over geometries takes the others (geometry_elsewhere_), so a scene
+  // of one-geometry bodies (a pile, a chute) has no such pass.
+  std::vector<int> origin_geometry_;
+  struct GeometryElsewhere {
+    int geometry;
+    bool at_body_origin;  // its local pose is the identity (a body's second such geometry)
+  };
+  std::vector<GeometryElsewhere> geometry_elsewhere_;
   std::vector<std::size_t> prescribed_bodies_;
   // Bodies whose surface velocity is a signal, each with its memo (core/signal_memo.hpp).
   std::vector<std::pair<std::size_t, SignalVectorMemo>> varying_surfaces_;
