@@ -238,9 +238,7 @@ struct CollisionDetector::Impl {
   // The skin list (options.broadphase_skin > 0): every pair whose boxes grown by `margin` on
   // each side (`fat`, by geometry, as of the last build) overlap, with the unbounded pairs,
   // by pair id; rebuilt when some tight box has left its fat box.
-  double margin = -1.0;       // [m]; < 0 before the first build
-  double first_margin = 0.0;  // the first build's: broadphase_skin times the median box
-  long calls_on_list = 0;     // calls that used the list since it was built
+  double margin = -1.0;  // [m]; < 0 before the first build
   std::vector<Aabb> fat;
   std::vector<Candidate> skin_list;
   bool skin_valid = false;
@@ -264,12 +262,6 @@ struct CollisionDetector::Impl {
   void setUp();
   void candidateFound(int g, int h);
   void buildSkinList();
-  void fillSkinList();  // buildSkinList's list at the current margin
-  // The margin's rule (detect): a list that lasted fewer than kShortList calls is rebuilt
-  // with twice the margin, up to kWidest times the first; one that has lasted kLongList calls
-  // with a margin wider than the first is rebuilt with half.
-  static constexpr long kShortList = 24, kLongList = 48;
-  static constexpr double kWidest = 4.0;
 
   // The narrowphase of every pair in `list`, appended to `out` in list order. Split across
   // `threads` when the list is long enough: the list cut into contiguous runs, each into its
@@ -482,9 +474,8 @@ void CollisionDetector::Impl::candidateFound(int g, int h) {
   if (it != pair_index.end()) candidates.push_back(listed[static_cast<std::size_t>(it->second)]);
 }
 
-// The skin list from the current tight boxes: the margin (set at the first build, then as
-// detect's rule below sets it), the fat boxes, the grid's pairs among them as candidates, and
-// the unbounded pairs, sorted by id.
+// The skin list from the current tight boxes: the margin (fixed at the first build), the fat
+// boxes, the grid's pairs among them as candidates, and the unbounded pairs, sorted by id.
 void CollisionDetector::Impl::buildSkinList() {
   if (margin < 0.0) {
     std::vector<double> extents;
@@ -500,21 +491,8 @@ void CollisionDetector::Impl::buildSkinList() {
       std::nth_element(extents.begin(), middle, extents.end());
       median = *middle;
     }
-    margin = first_margin = options.broadphase_skin * median;
-    // The buffers sized for the widest margin too (the list at the first margin built first,
-    // so that the grid chooses its cell for that one): a later widening in a configuration
-    // like the first does not allocate in a warm step.
-    fillSkinList();
-    margin = kWidest * first_margin;
-    fillSkinList();
-    margin = first_margin;
+    margin = options.broadphase_skin * median;
   }
-  fillSkinList();
-  skin_valid = true;
-  ++skin_builds;
-}
-
-void CollisionDetector::Impl::fillSkinList() {
   const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
   for (const int g : bounded) {
     const Aabb& b = boxes[static_cast<std::size_t>(g)];
@@ -527,6 +505,8 @@ void CollisionDetector::Impl::fillSkinList() {
   candidates.insert(candidates.end(), unbounded.begin(), unbounded.end());
   sortById(candidates, sort_scratch);
   skin_list.assign(candidates.begin(), candidates.end());
+  skin_valid = true;
+  ++skin_builds;
 }
 
 // FCL objects, polyhedra and the broadphase, once the pairs (listed or by rule) are known.
@@ -726,21 +706,7 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
     // The skin list holds every pair whose tight boxes can overlap while each stays in its fat
     // box; its narrowphase skips the pairs whose tight boxes do not: the grid's candidates on
     // the tight boxes, in the same id order.
-    // The skin follows the scene's motion (Impl::kShortList, kLongList, kWidest): a flowing
-    // chute's build costs some thirteen calls' narrowphase and a wider skin makes it rarer; a
-    // settled pile's calls cost more with a wider skin (docs/performance.md). The margin
-    // changes which pairs the list holds, never which it reports: the same points.
-    if (!m.skin_valid || escaped.load(std::memory_order_relaxed)) {
-      if (m.skin_valid && m.calls_on_list < Impl::kShortList)
-        m.margin = std::min(2.0 * m.margin, Impl::kWidest * m.first_margin);
-      m.buildSkinList();
-      m.calls_on_list = 0;
-    } else if (m.calls_on_list >= Impl::kLongList && m.margin > m.first_margin) {
-      m.margin = std::max(0.5 * m.margin, m.first_margin);
-      m.buildSkinList();
-      m.calls_on_list = 0;
-    }
-    ++m.calls_on_list;
+    if (!m.skin_valid || escaped.load(std::memory_order_relaxed)) m.buildSkinList();
     m.narrowphaseAll(m.skin_list, poses, out);
     return;
   }

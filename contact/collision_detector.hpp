@@ -17,10 +17,7 @@
 // `broadphase` on, a hashed uniform grid culls the pairs first (contact/broadphase.hpp);
 // half-spaces stay out of it (their box is infinite) and their pairs are always tested.
 // The grid runs on the geometries' tight world boxes each grown by a skin on every side
-// (`broadphase_skin` times the median box's largest extent at the first call; then twice as
-// wide after a list that lasted fewer than 24 calls, up to four times, and half as wide after
-// one that has lasted 48, down to the first: a flowing scene's rebuilds become rarer, a
-// settled one's calls test no more pairs than the first skin gives), and
+// (`broadphase_skin` times the median box's largest extent, fixed at the first call), and
 // the pairs it reports, filtered by the list or the rule, are kept with the half-space pairs
 // sorted by pair id: a Verlet neighbour list (Verlet, Phys. Rev. 159, 98 (1967); LAMMPS's
 // neighbor skin), reused for as long as every tight box lies inside its grown box and
@@ -28,12 +25,12 @@
 // tight boxes and runs the narrowphase on the kept pairs whose tight boxes overlap: exactly
 // the pairs the grid on the tight boxes reports, in the same order, so the points are the
 // same bit for bit as with `broadphase_skin` 0 (the grid on the tight boxes every call).
-// The first skin (a tenth of the median box) and the rule were chosen by measurement on a
-// falling sphere pile, a resting box grid and a sphere chute
-// (bench/contact/detect_skin_bench.cpp, docs/performance.md). FCL objects exist only for
-// geometries its narrowphase may be asked about: a scene of boxes, spheres, capsules and
-// half-spaces never calls FCL. Does not allocate once its buffers have grown to their working
-// size; FCL's narrowphase may (libccd's EPA, the box/box manifold), which a test hook brackets.
+// The skin (a tenth of the median box) was chosen by measurement on a falling sphere pile,
+// a resting box grid and a sphere chute (bench/contact/detect_skin_bench.cpp,
+// docs/performance.md). FCL objects exist only for geometries its narrowphase
+// may be asked about: a scene of boxes, spheres, capsules and half-spaces never calls FCL.
+// Does not allocate once its buffers have grown to their working size; FCL's narrowphase
+// may (libccd's EPA, the box/box manifold), which a test hook brackets.
 // Not here: forces, materials, which pairs exist (the model builder), contact identity
 // between steps (contact/stick_anchor.hpp), a per-body update of the kept list (one box
 // leaving its grown box rebuilds the whole list), continuous (swept) detection.
@@ -54,10 +51,10 @@ namespace tribo::contact {
 
 struct CollisionOptions {
   bool broadphase = false;  // cull pairs with the grid (contact/broadphase.hpp)
-  // With the broadphase: the first skin of the cached pair list (a Verlet list), a fraction
-  // of the median geometry's largest extent added to each side of every box, widened and
-  // narrowed by the list's life (above); the list is rebuilt when a tight box leaves its
-  // grown box. 0: no list, the grid runs on every call. The same contact points either way.
+  // With the broadphase: the skin of the cached pair list (a Verlet list), a fraction of the
+  // median geometry's largest extent added to each side of every box; the list is rebuilt
+  // when a tight box leaves its grown box. 0: no list, the grid runs on every call. The same
+  // contact points either way.
   double broadphase_skin = 0.1;
   bool closed_form_box_halfspace = true;  // exact corners instead of FCL's single point
   // Other closed forms: primitive_contacts.hpp, box/box (box_box_contacts.hpp), capsule/box and
