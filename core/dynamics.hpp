@@ -143,8 +143,8 @@ class Dynamics {
   std::vector<int> geometry_body_;
   // Per body, one geometry whose local pose is the identity (-1 when none): updatePoses
   // writes its pose (the body's own) in the pass over bodies, while the rotation is in
-  // registers; the pass over geometries takes the others (geometry_elsewhere_), so a scene
-  // of one-geometry bodies (a pile, a chute) has no such pass.
+  // registers; the pass over geometries takes the others (geometry_elsewhere_), so in a scene
+  // of one-geometry bodies (a pile, a chute) that pass is the world's geometries alone.
   std::vector<int> origin_geometry_;
   struct GeometryElsewhere {
     int geometry;
