@@ -19,8 +19,9 @@ constexpr double kFloor = 1e-9;  // [J] below this a rise is rounding noise
 namespace {
 
 // The terms of body b (EnergyTerms::Body); the kinetic rate only when `rate` is asked.
+// `isotropic`: the body's isotropicMoment (EnergyTerms::isotropic).
 EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Workspace& ws,
-                            std::size_t b, bool rate) {
+                            std::size_t b, bool rate, double isotropic) {
   EnergyTerms::Body t;
   const Body& body = model.bodies[b];
   const BodyState& s = state.bodies[b];
@@ -33,7 +34,6 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
     return t;
   }
   // A sphere's or a cube's rotational terms without turning w into the body frame.
-  const double isotropic = isotropicMoment(body.inertia);
   const Mat3& r = ws.rotation[b];
   const Vec3 w_body = isotropic > 0.0 ? Vec3::Zero() : Vec3(r.transpose() * s.angular_velocity);
   t.kinetic = 0.5 * body.mass * s.velocity.squaredNorm() +
@@ -103,7 +103,7 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
   if (body_threads > 1) {
     terms.bodies.resize(nb);
     contact::parallelFor(nb, body_threads, [&](std::size_t b) {
-      terms.bodies[b] = bodyTerms(model, state, ws, b, rate);
+      terms.bodies[b] = bodyTerms(model, state, ws, b, rate, terms.isotropic[b]);
     });
   }
   if (point_threads > 1) {
@@ -116,8 +116,9 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
   if (body_energy) body_energy->assign(nb, 0.0);
   if (rate) *kinetic_rate = 0.0;
   for (std::size_t b = 0; b < nb; ++b) {
-    const EnergyTerms::Body t =
-        body_threads > 1 ? terms.bodies[b] : bodyTerms(model, state, ws, b, rate);
+    const EnergyTerms::Body t = body_threads > 1
+                                    ? terms.bodies[b]
+                                    : bodyTerms(model, state, ws, b, rate, terms.isotropic[b]);
     if (model.bodies[b].kind == BodyKind::kKinematic) {
       a.input_power -= t.power[0];
       continue;
@@ -165,14 +166,22 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
 
 }  // namespace
 
+void EnergyTerms::listIsotropic(const Model& model) {
+  isotropic.resize(model.bodies.size());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    isotropic[b] = isotropicMoment(model.bodies[b].inertia);
+}
+
 EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
                             std::vector<double>* body_energy, int threads) {
   EnergyTerms terms;
+  terms.listIsotropic(model);
   return account(model, state, ws, body_energy, threads, terms, nullptr);
 }
 
 EnergyGuard::EnergyGuard(const Model& model, double modified_step, int threads)
     : model_(&model), floor_(kFloor), modified_step_(modified_step), threads_(threads) {
+  terms_.listIsotropic(model);
   // The motion sources impose: the fastest kinematic body or surface (linear), the fastest
   // turning kinematic body and velocity of a joint drive (angular; drives of a prismatic
   // joint count as linear).

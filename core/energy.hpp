@@ -84,6 +84,10 @@ struct EnergyTerms {
   };
   std::vector<Body> bodies;   // filled only when the bodies split across threads
   std::vector<Point> points;  // likewise the points
+  // Each body's isotropicMoment (core/math.hpp: I for inertia I 1, else 0), read from the
+  // model once (listIsotropic) rather than compared again on every account.
+  std::vector<double> isotropic;
+  void listIsotropic(const Model& model);
 };
 
 // The account at `state`; `ws` must be its evaluation. If `body_energy` is given it receives
