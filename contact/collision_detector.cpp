@@ -25,6 +25,7 @@
 #include "contact/box_box_contacts.hpp"
 #include "contact/box_round_contacts.hpp"
 #include "contact/broadphase.hpp"
+#include "contact/cell_list.hpp"
 #include "contact/parallel_range.hpp"
 #include "contact/polyhedron_contacts.hpp"
 #include "contact/round_contacts.hpp"
@@ -32,6 +33,10 @@
 namespace tribo::contact {
 
 namespace {
+
+// The skin list's fat boxes go to the cell list while the largest is at most this times the
+// first build's median (contact/cell_list.hpp: its box tests grow as the largest cubed).
+constexpr double kCellListSpread = 1.5;
 
 enum class PairKind : std::uint8_t {
   kHalfSpaceBox,    // the hot belt pair, straight to its corner manifold
@@ -226,8 +231,9 @@ struct CollisionDetector::Impl {
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;  // null where FCL is never asked
   std::unordered_map<std::uint64_t, int> pair_index;            // listed: geometry pair -> pair
   GridBroadphase grid;
-  std::vector<int> bounded;          // geometries in the broadphase (all but half-spaces)
-  std::vector<Aabb> boxes;           // world boxes, by geometry (half-spaces' unused)
+  CellList cells;            // the skin list's broadphase while its fat boxes are of about one size
+  std::vector<int> bounded;  // geometries in the broadphase (all but half-spaces)
+  std::vector<Aabb> boxes;   // world boxes, by geometry (half-spaces' unused)
   std::vector<Aabb> mesh_local;      // local boxes of meshes with many vertices (else empty)
   std::vector<char> has_mesh_local;  // by geometry
   std::vector<std::pair<int, int>> close_pairs;
@@ -238,11 +244,13 @@ struct CollisionDetector::Impl {
   // The skin list (options.broadphase_skin > 0): every pair whose boxes grown by `margin` on
   // each side (`fat`, by geometry, as of the last build) overlap, with the unbounded pairs,
   // by pair id; rebuilt when some tight box has left its fat box.
-  double margin = -1.0;  // [m]; < 0 before the first build
+  double margin = -1.0;     // [m]; < 0 before the first build
+  double fat_median = 0.0;  // [m] the fat boxes' median largest extent at the first build
   std::vector<Aabb> fat;
   std::vector<Candidate> skin_list;
   bool skin_valid = false;
   long skin_builds = 0;
+  long cell_list_builds = 0;
   std::vector<Polyhedron> polyhedra;  // by geometry, for kPolyhedra pairs (else empty)
   bool timing = false;
   double fcl_seconds = 0.0;
@@ -492,13 +500,25 @@ void CollisionDetector::Impl::buildSkinList() {
       median = *middle;
     }
     margin = options.broadphase_skin * median;
+    fat_median = median + 2.0 * margin;
   }
   const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
+  double largest = 0.0;  // the largest fat extent (a NaN one left out: both keep it aside)
   for (const int g : bounded) {
     const Aabb& b = boxes[static_cast<std::size_t>(g)];
-    fat[static_cast<std::size_t>(g)] = {b.lo - grow, b.hi + grow};
+    Aabb& f = fat[static_cast<std::size_t>(g)];
+    f = {b.lo - grow, b.hi + grow};
+    largest = std::max(largest, (f.hi - f.lo).maxCoeff());
   }
-  grid.overlappingPairs(fat, bounded, close_pairs);
+  // Fat boxes of about one size (a pile, a chute: the largest within 1.5 times the first
+  // median) are paired by the cell list, a third of the grid's box tests there
+  // (contact/cell_list.hpp); others by the grid. The same pairs either way.
+  if (largest <= kCellListSpread * fat_median) {
+    cells.overlappingPairs(fat, bounded, close_pairs);
+    ++cell_list_builds;
+  } else {
+    grid.overlappingPairs(fat, bounded, close_pairs);
+  }
   candidates.clear();
   for (const auto& [g, h] : close_pairs) candidateFound(g, h);
   for (Candidate& c : candidates) c.cull = true;
@@ -673,9 +693,11 @@ void CollisionDetector::setTiming(bool timing) { impl_->timing = timing; }
 void CollisionDetector::setThreads(int threads) {
   impl_->threads = std::max(1, threads);
   impl_->grid.setThreads(impl_->threads);
+  impl_->cells.setThreads(impl_->threads);
 }
 double CollisionDetector::fclSeconds() const { return impl_->fcl_seconds; }
 long CollisionDetector::skinListBuilds() const { return impl_->skin_builds; }
+long CollisionDetector::cellListBuilds() const { return impl_->cell_list_builds; }
 void CollisionDetector::setFclScopeHook(FclScopeHook hook) {
   fcl_scope_hook.store(hook, std::memory_order_relaxed);
 }

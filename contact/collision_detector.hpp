@@ -17,8 +17,10 @@
 // `broadphase` on, a hashed uniform grid culls the pairs first (contact/broadphase.hpp);
 // half-spaces stay out of it (their box is infinite) and their pairs are always tested.
 // The grid runs on the geometries' tight world boxes each grown by a skin on every side
-// (`broadphase_skin` times the median box's largest extent, fixed at the first call), and
-// the pairs it reports, filtered by the list or the rule, are kept with the half-space pairs
+// (`broadphase_skin` times the median box's largest extent, fixed at the first call); when
+// these fat boxes are of about one size (the largest within 1.5 times the first median: a
+// pile, a chute) the cell list of contact/cell_list.hpp pairs them instead, with the same
+// answer. The pairs reported, filtered by the list or the rule, are kept with the half-space pairs
 // sorted by pair id: a Verlet neighbour list (Verlet, Phys. Rev. 159, 98 (1967); LAMMPS's
 // neighbor skin), reused for as long as every tight box lies inside its grown box and
 // rebuilt on the call where one does not (a NaN box never does). A call then computes the
@@ -124,6 +126,9 @@ class CollisionDetector {
   // How many times the skin list was built since construction (0 without the broadphase or
   // with broadphase_skin 0): for tests and benches.
   long skinListBuilds() const;
+  // Of those, the builds whose pairs came from the cell list (contact/cell_list.hpp: fat boxes
+  // of about one size) rather than the grid.
+  long cellListBuilds() const;
 
   // Test hook, process-wide: when set, called with true right before and false right after
   // every call into FCL's narrowphase collide, so a test can tell FCL's own heap use from
