@@ -265,6 +265,13 @@ struct CollisionDetector::Impl {
   };
   std::vector<Lane> lanes{1};  // lane 0 serves the one-thread path (its `points` unused)
 
+  // The kind of a pair by its shapes' types and the options, listed once a type pair
+  // (listKindsOfTypes, when the options are set) so that a skin list's rebuild, which asks
+  // for every candidate, reads a table; classify adds the convex meshes' manifold.
+  static constexpr std::size_t kShapeTypes = static_cast<std::size_t>(ShapeType::kTriangleMesh) + 1;
+  std::array<PairKind, kShapeTypes * kShapeTypes> kinds_of_types{};
+  PairKind kindOfTypes(ShapeType ta, ShapeType tb) const;
+  void listKindsOfTypes();
   PairKind classify(int a, int b) const;
   Candidate candidate(int id, int a, int b) const { return {id, a, b, classify(a, b)}; }
   void setUp();
@@ -439,8 +446,7 @@ struct CollisionDetector::Impl {
   }
 };
 
-PairKind CollisionDetector::Impl::classify(int a, int b) const {
-  const auto ta = shapes[a].type, tb = shapes[b].type;
+PairKind CollisionDetector::Impl::kindOfTypes(ShapeType ta, ShapeType tb) const {
   PairKind kind = PairKind::kFcl;
   const bool box_plane = (ta == ShapeType::kBox && tb == ShapeType::kHalfSpace) ||
                          (tb == ShapeType::kBox && ta == ShapeType::kHalfSpace);
@@ -462,6 +468,20 @@ PairKind CollisionDetector::Impl::classify(int a, int b) const {
     if (ta == ShapeType::kCapsule && tb == ShapeType::kSphere) kind = PairKind::kCapsuleSphere;
     if (ta == ShapeType::kCapsule && tb == ShapeType::kCapsule) kind = PairKind::kCapsuleCapsule;
   }
+  return kind;
+}
+
+void CollisionDetector::Impl::listKindsOfTypes() {
+  for (std::size_t i = 0; i < kShapeTypes; ++i)
+    for (std::size_t j = 0; j < kShapeTypes; ++j)
+      kinds_of_types[i * kShapeTypes + j] =
+          kindOfTypes(static_cast<ShapeType>(i), static_cast<ShapeType>(j));
+}
+
+PairKind CollisionDetector::Impl::classify(int a, int b) const {
+  const auto ta = shapes[a].type, tb = shapes[b].type;
+  PairKind kind =
+      kinds_of_types[static_cast<std::size_t>(ta) * kShapeTypes + static_cast<std::size_t>(tb)];
   // Convex meshes with boxes or each other (box/box: its closed form, or FCL's manifold).
   if (kind == PairKind::kFcl && options.polyhedron_manifold && isPolyhedron(shapes[a]) &&
       isPolyhedron(shapes[b]) && !(ta == ShapeType::kBox && tb == ShapeType::kBox))
@@ -650,6 +670,7 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
   Impl& m = *impl_;
   m.shapes = std::move(shapes);
   m.options = options;
+  m.listKindsOfTypes();
   const int n = static_cast<int>(m.shapes.size());
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const auto [a, b] = pairs[p];
@@ -673,6 +694,7 @@ CollisionDetector::CollisionDetector(std::vector<Shape> shapes,
   m.rule = std::move(rule);
   m.options = options;
   m.options.broadphase = true;
+  m.listKindsOfTypes();
   m.setUp();
 }
 
