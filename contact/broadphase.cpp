@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact/parallel_range.hpp"
+#include "contact/bucket_pairs.hpp"
 
 namespace tribo::contact {
 
 namespace {
 
-constexpr double kCellLimit = 1073741824.0;  // 2^30: cell coordinates stay within int32
 // The grid's origin is shifted by this fraction of a cell (the golden section's), so that a
 // plane at a round coordinate, the floor z = 0 above all, is not a cell boundary that every
 // box resting on it straddles (twice the entries and the tests).
@@ -19,18 +18,10 @@ constexpr double kCellShift = 0.381966;
 bool cellOf(const Eigen::Vector3d& x, double inv_cell, std::int32_t out[3]) {
   for (int i = 0; i < 3; ++i) {
     const double c = std::floor(x[i] * inv_cell + kCellShift);
-    if (!(std::abs(c) < kCellLimit)) return false;
+    if (!(std::abs(c) < kBucketCellLimit)) return false;
     out[i] = static_cast<std::int32_t>(c);
   }
   return true;
-}
-
-// Teschner et al. (2003): the cell's coordinates times three large primes, xor-ed.
-std::uint32_t bucketOf(const std::int32_t cell[3], std::uint32_t mask) {
-  const auto h = (static_cast<std::uint32_t>(cell[0]) * 73856093u) ^
-                 (static_cast<std::uint32_t>(cell[1]) * 19349663u) ^
-                 (static_cast<std::uint32_t>(cell[2]) * 83492791u);
-  return (h ^ (h >> 16)) & mask;
 }
 
 double largestExtent(const Aabb& b) { return (b.hi - b.lo).maxCoeff(); }
@@ -161,60 +152,24 @@ void GridBroadphase::rebuild() {
                              static_cast<std::uint32_t>(c[1] - low[1])) *
                                     nx +
                                 static_cast<std::uint32_t>(c[0] - low[0])
-                          : bucketOf(c, mask);
+                          : hashedBucket(c, mask);
     ++bucket_start_[bucket_of_[e] + 1];
   }
-  for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
-  sorted_.resize(entries_.size());
-  {
-    // bucket_start_ is the write cursor of each bucket while scattering, then restored.
-    for (std::size_t e = 0; e < entries_.size(); ++e)
-      sorted_[bucket_start_[bucket_of_[e]]++] = entries_[e];
-    for (std::size_t b = buckets; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
-    bucket_start_[0] = 0;
-  }
+  sortIntoBuckets(entries_, bucket_of_, bucket_start_, sorted_);
 
   buckets_ = buckets;
 }
 
 void GridBroadphase::pairsFromBuckets(std::span<const Aabb> boxes, std::span<const int> members,
                                       std::vector<std::pair<int, int>>& pairs) {
-  const std::size_t buckets = buckets_;
-  // Pairs within buckets, split across threads by contiguous bucket ranges.
-  constexpr std::size_t kEntriesPerThread = 2048;
-  const int team = threadsFor(entries_.size(), threads_, kEntriesPerThread);
-  if (team <= 1) {
-    pairsInBuckets(0, buckets, boxes, members, pairs);
-  } else {
-    // Contiguous bucket ranges, one lane each, claimed by the threads (contact/work_team.hpp);
-    // the lanes appended in bucket order whoever ran them.
-    const std::size_t chunks = chunksFor(buckets, team);
-    if (lanes_.size() < chunks) lanes_.resize(chunks);
-    auto run = [&](std::size_t c) {
-      lanes_[c].clear();
-      pairsInBuckets(buckets * c / chunks, buckets * (c + 1) / chunks, boxes, members, lanes_[c]);
-    };
-    runChunks(chunks, team, run);
-    for (std::size_t c = 0; c < chunks; ++c)
-      pairs.insert(pairs.end(), lanes_[c].begin(), lanes_[c].end());
-  }
-
-  // Boxes kept aside: against every other member (aside with aside once).
-  for (std::size_t a = 0; a < aside_.size(); ++a) {
-    const auto ka = static_cast<std::size_t>(aside_[a]);
-    const int g = members[ka];
-    const Aabb& bg = boxes[static_cast<std::size_t>(g)];
-    std::size_t next_aside = 0;  // skip aside members already paired with g
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      if (next_aside < aside_.size() && static_cast<std::size_t>(aside_[next_aside]) == k) {
-        ++next_aside;
-        if (next_aside - 1 <= a) continue;  // itself, or an aside member that took g before
-      }
-      const int h = members[k];
-      if (overlaps(bg, boxes[static_cast<std::size_t>(h)]))
-        pairs.emplace_back(std::min(g, h), std::max(g, h));
-    }
-  }
+  // Pairs within buckets, split across threads by contiguous bucket ranges; then the boxes
+  // kept aside against every other member.
+  pairsByBucketRanges(
+      buckets_, entries_.size(), threads_, lanes_, pairs,
+      [&](std::size_t first, std::size_t last, std::vector<std::pair<int, int>>& out) {
+        pairsInBuckets(first, last, boxes, members, out);
+      });
+  pairAside(aside_, boxes, members, pairs);
 }
 
 }  // namespace tribo::contact

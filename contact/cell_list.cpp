@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact/parallel_range.hpp"
+#include "contact/bucket_pairs.hpp"
 
 namespace tribo::contact {
 
 namespace {
 
-constexpr double kCellLimit = 1073741824.0;  // 2^30: cell coordinates stay within int32
 // The cell edge over the largest extent: above 1 so that two overlapping boxes' lower corners
 // stay in neighbouring cells through the rounding of lo / L (relative 2^-53 of a coordinate
 // at most 2^30 cells: 1.2e-7 of a cell, against the 1e-6 kept free).
@@ -21,14 +20,6 @@ constexpr std::int32_t kAhead[13][3] = {{1, -1, -1}, {1, -1, 0}, {1, -1, 1}, {1,
 
 bool finiteBox(const Aabb& b) { return b.lo.allFinite() && b.hi.allFinite(); }
 
-// Teschner et al. (2003): the cell's coordinates times three large primes, xor-ed.
-std::uint32_t hashOf(const std::int32_t cell[3], std::uint32_t mask) {
-  const auto h = (static_cast<std::uint32_t>(cell[0]) * 73856093u) ^
-                 (static_cast<std::uint32_t>(cell[1]) * 19349663u) ^
-                 (static_cast<std::uint32_t>(cell[2]) * 83492791u);
-  return (h ^ (h >> 16)) & mask;
-}
-
 bool sameCell(const std::int32_t a[3], const std::int32_t b[3]) {
   return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
@@ -36,9 +27,10 @@ bool sameCell(const std::int32_t a[3], const std::int32_t b[3]) {
 }  // namespace
 
 // Inlined into the pair search, which asks it for 13 neighbours a cell.
-[[gnu::always_inline]] inline bool CellList::bucketOfCell(const std::int32_t cell[3], std::uint32_t& bucket) const {
+[[gnu::always_inline]] inline bool CellList::bucketOfCell(const std::int32_t cell[3],
+                                                          std::uint32_t& bucket) const {
   if (!dense_) {
-    bucket = hashOf(cell, mask_);
+    bucket = hashedBucket(cell, mask_);
     return true;
   }
   std::uint32_t at[3];
@@ -70,7 +62,7 @@ void CellList::overlappingPairs(std::span<const Aabb> boxes, std::span<const int
     bool aside = !finiteBox(b);
     for (int i = 0; i < 3 && !aside; ++i) {
       const double c = std::floor(b.lo[i] * inv_cell);
-      aside = !(std::abs(c) < kCellLimit);
+      aside = !(std::abs(c) < kBucketCellLimit);
       if (!aside) e.cell[i] = static_cast<std::int32_t>(c);
     }
     if (aside)
@@ -110,47 +102,13 @@ void CellList::overlappingPairs(std::span<const Aabb> boxes, std::span<const int
     bucket_of_[e] = b;
     ++bucket_start_[b + 1];
   }
-  for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
-  sorted_.resize(entries_.size());
-  // bucket_start_ is the write cursor of each bucket while scattering, then restored.
-  for (std::size_t e = 0; e < entries_.size(); ++e)
-    sorted_[bucket_start_[bucket_of_[e]]++] = entries_[e];
-  for (std::size_t b = buckets; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
-  bucket_start_[0] = 0;
-
-  // Pairs, split across threads by contiguous bucket ranges, joined in bucket order.
-  constexpr std::size_t kEntriesPerThread = 2048;
-  const int team = threadsFor(entries_.size(), threads_, kEntriesPerThread);
-  if (team <= 1) {
-    pairsInBuckets(0, buckets, boxes, members, pairs);
-  } else {
-    const std::size_t chunks = chunksFor(buckets, team);
-    if (lanes_.size() < chunks) lanes_.resize(chunks);
-    auto run = [&](std::size_t c) {
-      lanes_[c].clear();
-      pairsInBuckets(buckets * c / chunks, buckets * (c + 1) / chunks, boxes, members, lanes_[c]);
-    };
-    runChunks(chunks, team, run);
-    for (std::size_t c = 0; c < chunks; ++c)
-      pairs.insert(pairs.end(), lanes_[c].begin(), lanes_[c].end());
-  }
-
-  // Boxes kept aside: against every other member (aside with aside once).
-  for (std::size_t a = 0; a < aside_.size(); ++a) {
-    const auto ka = static_cast<std::size_t>(aside_[a]);
-    const int g = members[ka];
-    const Aabb& bg = boxes[static_cast<std::size_t>(g)];
-    std::size_t next_aside = 0;  // skip aside members already paired with g
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      if (next_aside < aside_.size() && static_cast<std::size_t>(aside_[next_aside]) == k) {
-        ++next_aside;
-        if (next_aside - 1 <= a) continue;  // itself, or an aside member that took g before
-      }
-      const int h = members[k];
-      if (overlaps(bg, boxes[static_cast<std::size_t>(h)]))
-        pairs.emplace_back(std::min(g, h), std::max(g, h));
-    }
-  }
+  sortIntoBuckets(entries_, bucket_of_, bucket_start_, sorted_);
+  pairsByBucketRanges(
+      buckets, entries_.size(), threads_, lanes_, pairs,
+      [&](std::size_t first, std::size_t last, std::vector<std::pair<int, int>>& out) {
+        pairsInBuckets(first, last, boxes, members, out);
+      });
+  pairAside(aside_, boxes, members, pairs);
 }
 
 void CellList::pairsInBuckets(std::size_t first, std::size_t last, std::span<const Aabb> boxes,

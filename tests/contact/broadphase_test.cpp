@@ -13,6 +13,7 @@
 
 #include "contact/collision_detector.hpp"
 #include "contact/split_count.hpp"
+#include "support/box_pairs.hpp"
 #include "support/every_pair_rule.hpp"
 
 namespace tribo::contact {
@@ -20,26 +21,9 @@ namespace {
 
 using Pairs = std::vector<std::pair<int, int>>;
 
-// Every pair (g < h) of members whose closed boxes overlap, written out per axis.
-Pairs bruteForce(const std::vector<Aabb>& boxes, const std::vector<int>& members) {
-  Pairs pairs;
-  for (std::size_t i = 0; i < members.size(); ++i)
-    for (std::size_t j = i + 1; j < members.size(); ++j) {
-      const Aabb& a = boxes[static_cast<std::size_t>(members[i])];
-      const Aabb& b = boxes[static_cast<std::size_t>(members[j])];
-      bool apart = false;
-      for (int k = 0; k < 3; ++k) apart = apart || a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k];
-      if (!apart)
-        pairs.emplace_back(std::min(members[i], members[j]), std::max(members[i], members[j]));
-    }
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
-}
-
-Pairs sorted(Pairs p) {
-  std::sort(p.begin(), p.end());
-  return p;
-}
+using test::allMembers;
+using test::bruteForcePairs;
+using test::sortedPairs;
 
 // n boxes of sizes log-uniform in [1 mm, 10 m], centres uniform in a cube of side `region`.
 std::vector<Aabb> randomBoxes(std::mt19937& rng, int n, double region) {
@@ -56,27 +40,21 @@ std::vector<Aabb> randomBoxes(std::mt19937& rng, int n, double region) {
   return boxes;
 }
 
-std::vector<int> allOf(std::size_t n) {
-  std::vector<int> m(n);
-  for (std::size_t i = 0; i < n; ++i) m[i] = static_cast<int>(i);
-  return m;
-}
-
 TEST(GridBroadphase, EqualsBruteForceOverRandomBoxesMovingBetweenCalls) {
   std::mt19937 rng(20261127);
   for (const double region : {0.05, 1.0, 20.0, 400.0}) {
     for (const int n : {2, 17, 300}) {
       std::vector<Aabb> boxes = randomBoxes(rng, n, region);
-      const std::vector<int> members = allOf(boxes.size());
+      const std::vector<int> members = allMembers(boxes.size());
       GridBroadphase grid;
       std::normal_distribution<double> move(0.0, 0.02 * region);
       std::size_t found = 0;
       for (int call = 0; call < 6; ++call) {
         Pairs pairs;
         grid.overlappingPairs(boxes, members, pairs);
-        const Pairs expected = bruteForce(boxes, members);
+        const Pairs expected = bruteForcePairs(boxes, members);
         EXPECT_EQ(pairs.size(), expected.size()) << "no pair twice";
-        EXPECT_EQ(sorted(pairs), expected)
+        EXPECT_EQ(sortedPairs(pairs), expected)
             << "region " << region << ", n " << n << ", call " << call;
         found += expected.size();
         for (Aabb& b : boxes) {  // every box moves, the cell edge stays that of the first call
@@ -105,13 +83,13 @@ TEST(GridBroadphase, BoxesMovingInsideTheirCellsKeepTheBucketsAndTheAnswerFollow
     boxes.push_back(a);
     boxes.push_back(b);
   }
-  const std::vector<int> members = allOf(boxes.size());
+  const std::vector<int> members = allMembers(boxes.size());
   GridBroadphase grid;
   for (int call = 0; call < 4; ++call) {
     Pairs pairs;
     grid.overlappingPairs(boxes, members, pairs);
-    const Pairs expected = bruteForce(boxes, members);
-    EXPECT_EQ(sorted(pairs), expected) << "call " << call;
+    const Pairs expected = bruteForcePairs(boxes, members);
+    EXPECT_EQ(sortedPairs(pairs), expected) << "call " << call;
     EXPECT_EQ(expected.size(), call % 2 == 0 ? 0U : 50U) << "the case flips";
     const double shift = call % 2 == 0 ? -2e-6 : 2e-6;
     for (std::size_t k = 1; k < boxes.size(); k += 2) {
@@ -129,7 +107,7 @@ TEST(GridBroadphase, OnlyTheMembersAreLookedAt) {
   GridBroadphase grid;
   Pairs pairs;
   grid.overlappingPairs(boxes, members, pairs);
-  EXPECT_EQ(sorted(pairs), bruteForce(boxes, members));
+  EXPECT_EQ(sortedPairs(pairs), bruteForcePairs(boxes, members));
   EXPECT_FALSE(pairs.empty());
 }
 
@@ -145,11 +123,11 @@ TEST(GridBroadphase, TouchingFacesEdgesAndCornersArePairs) {
         b.hi = b.lo + Eigen::Vector3d::Ones();
         boxes.push_back(b);
       }
-  const std::vector<int> members = allOf(boxes.size());
+  const std::vector<int> members = allMembers(boxes.size());
   GridBroadphase grid;
   Pairs pairs;
   grid.overlappingPairs(boxes, members, pairs);
-  EXPECT_EQ(sorted(pairs), bruteForce(boxes, members));
+  EXPECT_EQ(sortedPairs(pairs), bruteForcePairs(boxes, members));
   EXPECT_EQ(std::count_if(pairs.begin(), pairs.end(),
                           [](const auto& p) { return p.first == 13 || p.second == 13; }),
             26);
@@ -176,12 +154,12 @@ TEST(GridBroadphase, HugeFarAndPointBoxesAreStillFound) {
   Aabb point;  // a zero-size box (a contact point sphere) inside the ground
   point.lo = point.hi = Eigen::Vector3d(3, 4, -0.3);
   boxes.push_back(point);
-  const std::vector<int> members = allOf(boxes.size());
+  const std::vector<int> members = allMembers(boxes.size());
   GridBroadphase grid;
   Pairs pairs;
   grid.overlappingPairs(boxes, members, pairs);
-  const Pairs expected = bruteForce(boxes, members);
-  EXPECT_EQ(sorted(pairs), expected);
+  const Pairs expected = bruteForcePairs(boxes, members);
+  EXPECT_EQ(sortedPairs(pairs), expected);
   const int n = static_cast<int>(boxes.size());
   EXPECT_TRUE(std::binary_search(expected.begin(), expected.end(), std::make_pair(n - 3, n - 2)));
   EXPECT_TRUE(std::binary_search(expected.begin(), expected.end(), std::make_pair(n - 5, n - 1)));
@@ -194,7 +172,7 @@ TEST(GridBroadphase, ANanBoxIsPairedWithEveryBoxRatherThanLost) {
   boxes[5].hi.setConstant(std::numeric_limits<double>::quiet_NaN());
   GridBroadphase grid;
   Pairs pairs;
-  grid.overlappingPairs(boxes, allOf(boxes.size()), pairs);
+  grid.overlappingPairs(boxes, allMembers(boxes.size()), pairs);
   EXPECT_EQ(std::count_if(pairs.begin(), pairs.end(),
                           [](const auto& p) { return p.first == 5 || p.second == 5; }),
             39);
@@ -205,17 +183,17 @@ TEST(GridBroadphase, ANanBoxIsPairedWithEveryBoxRatherThanLost) {
   std::vector<int> rest;
   for (int g = 0; g < 40; ++g)
     if (g != 5) rest.push_back(g);
-  EXPECT_EQ(sorted(others), bruteForce(boxes, rest));
+  EXPECT_EQ(sortedPairs(others), bruteForcePairs(boxes, rest));
 }
 
 TEST(GridBroadphase, TheSameListInTheSameOrderForAnyThreadCountAndTheWorkIsSplit) {
   std::mt19937 rng(5);
   const std::vector<Aabb> boxes = randomBoxes(rng, 6000, 60.0);
-  const std::vector<int> members = allOf(boxes.size());
+  const std::vector<int> members = allMembers(boxes.size());
   Pairs one;
   GridBroadphase single;
   single.overlappingPairs(boxes, members, one);
-  ASSERT_EQ(sorted(one), bruteForce(boxes, members));
+  ASSERT_EQ(sortedPairs(one), bruteForcePairs(boxes, members));
   for (const int threads : {2, 3}) {
     GridBroadphase grid;
     grid.setThreads(threads);

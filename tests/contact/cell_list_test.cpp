@@ -17,6 +17,7 @@
 
 #include "contact/collision_detector.hpp"
 #include "contact/split_count.hpp"
+#include "support/box_pairs.hpp"
 #include "support/every_pair_rule.hpp"
 
 namespace tribo::contact {
@@ -24,34 +25,9 @@ namespace {
 
 using Pairs = std::vector<std::pair<int, int>>;
 
-// Every pair (g < h) of members whose closed boxes overlap, written out per axis (a NaN
-// coordinate separates nothing).
-Pairs bruteForce(const std::vector<Aabb>& boxes, const std::vector<int>& members) {
-  Pairs pairs;
-  for (std::size_t i = 0; i < members.size(); ++i)
-    for (std::size_t j = i + 1; j < members.size(); ++j) {
-      const Aabb& a = boxes[static_cast<std::size_t>(members[i])];
-      const Aabb& b = boxes[static_cast<std::size_t>(members[j])];
-      bool apart = false;
-      for (int k = 0; k < 3; ++k) apart = apart || a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k];
-      if (!apart)
-        pairs.emplace_back(std::min(members[i], members[j]), std::max(members[i], members[j]));
-    }
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
-}
-
-// The pairs sorted, duplicates kept (so that a pair reported twice shows).
-Pairs sorted(Pairs p) {
-  std::sort(p.begin(), p.end());
-  return p;
-}
-
-std::vector<int> allOf(std::size_t n) {
-  std::vector<int> m(n);
-  for (std::size_t i = 0; i < n; ++i) m[i] = static_cast<int>(i);
-  return m;
-}
+using test::allMembers;
+using test::bruteForcePairs;
+using test::sortedPairs;
 
 // n boxes with sides `size` times a factor in [1, spread] (per axis), centres uniform in a
 // cube of side `region` about `centre`.
@@ -85,13 +61,13 @@ TEST(CellList, EqualsBruteForceForBoxesOfOneSizePackedAndSpreadMovingBetweenCall
                                        ? Eigen::Vector3d(1e4 * size, -3e4 * size, 7e3 * size)
                                        : Eigen::Vector3d::Zero();
     std::vector<Aabb> boxes = boxesOfOneSize(rng, n, size, 1.5, region, centre);
-    const std::vector<int> members = allOf(boxes.size());
+    const std::vector<int> members = allMembers(boxes.size());
     CellList cells;
     for (int call = 0; call < 5; ++call) {
       Pairs pairs;
       cells.overlappingPairs(boxes, members, pairs);
-      const Pairs expected = bruteForce(boxes, members);
-      EXPECT_EQ(sorted(pairs), expected)
+      const Pairs expected = bruteForcePairs(boxes, members);
+      EXPECT_EQ(sortedPairs(pairs), expected)
           << "scene " << scene << " (size " << size << "), call " << call;
       double largest = 0.0;
       for (const Aabb& b : boxes) largest = std::max(largest, (b.hi - b.lo).maxCoeff());
@@ -116,7 +92,7 @@ TEST(CellList, TheCellEdgeIsTheLargestExtent) {
   boxes[2].lo = boxes[2].hi = Eigen::Vector3d(5, 5, 5);
   CellList cells;
   Pairs pairs;
-  cells.overlappingPairs(boxes, allOf(3), pairs);
+  cells.overlappingPairs(boxes, allMembers(3), pairs);
   EXPECT_LE(cells.cellSize(), 0.3 * (1.0 + 2e-6));
   EXPECT_GE(cells.cellSize(), 0.3);
   EXPECT_TRUE(pairs.empty());
@@ -140,12 +116,12 @@ TEST(CellList, BoxesTouchingAtTheCellEdgeArePairs) {
             b.hi = Eigen::Vector3d(x[i + 1], x[j + 1], x[k + 1]);
             boxes.push_back(b);
           }
-      const std::vector<int> members = allOf(boxes.size());
+      const std::vector<int> members = allMembers(boxes.size());
       CellList cells;
       Pairs pairs;
       cells.overlappingPairs(boxes, members, pairs);
-      const Pairs expected = bruteForce(boxes, members);
-      EXPECT_EQ(sorted(pairs), expected) << "side " << side << ", offset " << offset;
+      const Pairs expected = bruteForcePairs(boxes, members);
+      EXPECT_EQ(sortedPairs(pairs), expected) << "side " << side << ", offset " << offset;
       const int centre = 2 * 25 + 2 * 5 + 2;
       EXPECT_EQ(
           std::count_if(expected.begin(), expected.end(),
@@ -170,11 +146,11 @@ TEST(CellList, BoxesOfManySizesAreStillPairedRight) {
     b.lo = c - half;
     b.hi = c + half;
   }
-  const std::vector<int> members = allOf(boxes.size());
+  const std::vector<int> members = allMembers(boxes.size());
   CellList cells;
   Pairs pairs;
   cells.overlappingPairs(boxes, members, pairs);
-  EXPECT_EQ(sorted(pairs), bruteForce(boxes, members));
+  EXPECT_EQ(sortedPairs(pairs), bruteForcePairs(boxes, members));
   EXPECT_FALSE(pairs.empty());
 }
 
@@ -199,12 +175,12 @@ TEST(CellList, FarNanInfiniteAndPointBoxesAreStillFound) {
   Aabb point;  // a zero-size box inside the crowd
   point.lo = point.hi = Eigen::Vector3d(0.01, 0.02, 0.03);
   boxes.push_back(point);
-  const std::vector<int> members = allOf(boxes.size());
+  const std::vector<int> members = allMembers(boxes.size());
   CellList cells;
   Pairs pairs;
   cells.overlappingPairs(boxes, members, pairs);
-  const Pairs expected = bruteForce(boxes, members);
-  EXPECT_EQ(sorted(pairs), expected);
+  const Pairs expected = bruteForcePairs(boxes, members);
+  EXPECT_EQ(sortedPairs(pairs), expected);
   const int n = static_cast<int>(boxes.size());
   EXPECT_TRUE(std::binary_search(expected.begin(), expected.end(), std::make_pair(n - 5, n - 4)));
   EXPECT_EQ(std::count_if(expected.begin(), expected.end(),
@@ -215,8 +191,8 @@ TEST(CellList, FarNanInfiniteAndPointBoxesAreStillFound) {
   std::vector<Aabb> points(6);
   for (int k = 0; k < 6; ++k) points[k].lo = points[k].hi = Eigen::Vector3d(k / 2, 0, 0);
   Pairs point_pairs;
-  cells.overlappingPairs(points, allOf(6), point_pairs);
-  EXPECT_EQ(sorted(point_pairs), (Pairs{{0, 1}, {2, 3}, {4, 5}}));
+  cells.overlappingPairs(points, allMembers(6), point_pairs);
+  EXPECT_EQ(sortedPairs(point_pairs), (Pairs{{0, 1}, {2, 3}, {4, 5}}));
   EXPECT_EQ(cells.cellSize(), 1.0);
 }
 
@@ -228,7 +204,7 @@ TEST(CellList, OnlyTheMembersAreLookedAt) {
   CellList cells;
   Pairs pairs;
   cells.overlappingPairs(boxes, members, pairs);
-  EXPECT_EQ(sorted(pairs), bruteForce(boxes, members));
+  EXPECT_EQ(sortedPairs(pairs), bruteForcePairs(boxes, members));
   EXPECT_FALSE(pairs.empty());
 }
 
@@ -238,11 +214,11 @@ TEST(CellList, TheSameListInTheSameOrderForAnyThreadCountAndTheWorkIsSplit) {
     const double region = packed ? 18.0 : 400.0;
     const std::vector<Aabb> boxes =
         boxesOfOneSize(rng, 6000, 1.0, 1.4, region, Eigen::Vector3d::Zero());
-    const std::vector<int> members = allOf(boxes.size());
+    const std::vector<int> members = allMembers(boxes.size());
     Pairs one;
     CellList single;
     single.overlappingPairs(boxes, members, one);
-    ASSERT_EQ(sorted(one), bruteForce(boxes, members));
+    ASSERT_EQ(sortedPairs(one), bruteForcePairs(boxes, members));
     ASSERT_FALSE(one.empty());
     for (const int threads : {2, 3}) {
       CellList cells;
