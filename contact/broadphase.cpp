@@ -120,44 +120,9 @@ void GridBroadphase::rebuild() {
               {{x, y, z}, static_cast<std::int32_t>(k), {r.lo[0], r.lo[1], r.lo[2]}});
   }
 
-  // Counting sort into buckets. Dense when the cells the entries span are few (at most four
-  // per entry): bucket = the cell's index in that block, x fastest, so a scene's neighbouring
-  // boxes land in neighbouring buckets. Else hashed into at least twice as many buckets as
-  // entries (a power of two).
-  std::int32_t low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
-  if (!entries_.empty())
-    for (int i = 0; i < 3; ++i) low[i] = high[i] = entries_.front().cell[i];
-  for (const Entry& e : entries_)
-    for (int i = 0; i < 3; ++i) {
-      low[i] = std::min(low[i], e.cell[i]);
-      high[i] = std::max(high[i], e.cell[i]);
-    }
-  const double span[3] = {static_cast<double>(high[0]) - low[0] + 1,
-                          static_cast<double>(high[1]) - low[1] + 1,
-                          static_cast<double>(high[2]) - low[2] + 1};
-  const bool dense =
-      span[0] * span[1] * span[2] <= 4.0 * static_cast<double>(entries_.size()) + 1024.0;
-  std::size_t buckets = 64;
-  if (dense)
-    buckets = static_cast<std::size_t>(span[0] * span[1] * span[2]);
-  else
-    while (buckets < 2 * entries_.size()) buckets *= 2;
-  const auto mask = static_cast<std::uint32_t>(buckets - 1);
-  const auto nx = static_cast<std::uint32_t>(span[0]), ny = static_cast<std::uint32_t>(span[1]);
-  bucket_start_.assign(buckets + 1, 0);
-  bucket_of_.resize(entries_.size());
-  for (std::size_t e = 0; e < entries_.size(); ++e) {
-    const std::int32_t* c = entries_[e].cell;
-    bucket_of_[e] = dense ? (static_cast<std::uint32_t>(c[2] - low[2]) * ny +
-                             static_cast<std::uint32_t>(c[1] - low[1])) *
-                                    nx +
-                                static_cast<std::uint32_t>(c[0] - low[0])
-                          : hashedBucket(c, mask);
-    ++bucket_start_[bucket_of_[e] + 1];
-  }
-  sortIntoBuckets(entries_, bucket_of_, bucket_start_, sorted_);
-
-  buckets_ = buckets;
+  // Counting sort into buckets, dense or hashed (contact/bucket_layout.hpp).
+  layout_ = bucketLayoutFor(entries_);
+  sortIntoBuckets(layout_, entries_, bucket_of_, bucket_start_, sorted_);
 }
 
 void GridBroadphase::pairsFromBuckets(std::span<const Aabb> boxes, std::span<const int> members,
@@ -165,7 +130,7 @@ void GridBroadphase::pairsFromBuckets(std::span<const Aabb> boxes, std::span<con
   // Pairs within buckets, split across threads by contiguous bucket ranges; then the boxes
   // kept aside against every other member.
   pairsByBucketRanges(
-      buckets_, entries_.size(), threads_, lanes_, pairs,
+      layout_.buckets, entries_.size(), threads_, lanes_, pairs,
       [&](std::size_t first, std::size_t last, std::vector<std::pair<int, int>>& out) {
         pairsInBuckets(first, last, boxes, members, out);
       });

@@ -32,6 +32,8 @@
 #include <utility>
 #include <vector>
 
+#include "contact/bucket_layout.hpp"
+
 namespace tribo::contact {
 
 struct Aabb {
@@ -89,7 +91,7 @@ class GridBroadphase {
   int threads_ = 1;
   std::vector<CellRange> ranges_;  // by member, as of the last call
   std::vector<int> last_members_;
-  std::size_t buckets_ = 0;
+  BucketLayout layout_;
   std::vector<Entry> entries_, sorted_;
   std::vector<std::uint32_t> bucket_of_;     // by entry
   std::vector<std::uint32_t> bucket_start_;  // bucket b's entries: sorted_[start[b], start[b+1])

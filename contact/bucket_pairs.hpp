@@ -1,9 +1,7 @@
 // Pieces the two bucketed broadphases share (contact/broadphase.hpp's grid and
-// contact/cell_list.hpp's cell list): the spatial hash of a cell, the counting sort of entries
-// into buckets, the pair search split across threads by contiguous bucket ranges, and the
-// boxes kept aside paired with every member.
-// The hash: Teschner et al., "Optimized spatial hashing for collision detection of deformable
-// objects", VMV 2003 (the cell's coordinates times three large primes, xor-ed).
+// contact/cell_list.hpp's cell list) after their entries are in buckets
+// (contact/bucket_layout.hpp): the pair search split across threads by contiguous bucket
+// ranges, and the boxes kept aside paired with every member.
 // Not here: which cells a box enters, or which entries of a bucket range are tested.
 #pragma once
 
@@ -15,34 +13,10 @@
 #include <vector>
 
 #include "contact/broadphase.hpp"
+#include "contact/bucket_layout.hpp"
 #include "contact/parallel_range.hpp"
 
 namespace tribo::contact {
-
-// 2^30: cell coordinates stay within int32 (and a neighbour's, one further, too).
-inline constexpr double kBucketCellLimit = 1073741824.0;
-
-inline std::uint32_t hashedBucket(const std::int32_t cell[3], std::uint32_t mask) {
-  const auto h = (static_cast<std::uint32_t>(cell[0]) * 73856093u) ^
-                 (static_cast<std::uint32_t>(cell[1]) * 19349663u) ^
-                 (static_cast<std::uint32_t>(cell[2]) * 83492791u);
-  return (h ^ (h >> 16)) & mask;
-}
-
-// `sorted` = `entries` in bucket order (stable), bucket b's entries then
-// sorted[start[b], start[b + 1]); `bucket_of` holds each entry's bucket, `start` has
-// buckets + 1 counts on entry (start[b + 1] the size of bucket b, start[0] 0).
-template <class Entry>
-void sortIntoBuckets(const std::vector<Entry>& entries, const std::vector<std::uint32_t>& bucket_of,
-                     std::vector<std::uint32_t>& start, std::vector<Entry>& sorted) {
-  const std::size_t buckets = start.size() - 1;
-  for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
-  sorted.resize(entries.size());
-  // start is the write cursor of each bucket while scattering, then restored.
-  for (std::size_t e = 0; e < entries.size(); ++e) sorted[start[bucket_of[e]]++] = entries[e];
-  for (std::size_t b = buckets; b > 0; --b) start[b] = start[b - 1];
-  start[0] = 0;
-}
 
 // search(first, last, out) for the bucket ranges of `buckets`, on up to `threads` threads when
 // `entries` pay for them: contiguous ranges, one lane each, claimed by the threads

@@ -26,23 +26,6 @@ bool sameCell(const std::int32_t a[3], const std::int32_t b[3]) {
 
 }  // namespace
 
-// Inlined into the pair search, which asks it for 13 neighbours a cell.
-[[gnu::always_inline]] inline bool CellList::bucketOfCell(const std::int32_t cell[3],
-                                                          std::uint32_t& bucket) const {
-  if (!dense_) {
-    bucket = hashedBucket(cell, mask_);
-    return true;
-  }
-  std::uint32_t at[3];
-  for (int i = 0; i < 3; ++i) {
-    // Unsigned wrap-around sends a cell below the block past its span as well.
-    at[i] = static_cast<std::uint32_t>(cell[i]) - static_cast<std::uint32_t>(low_[i]);
-    if (at[i] >= span_[i]) return false;
-  }
-  bucket = (at[2] * span_[1] + at[1]) * span_[0] + at[0];
-  return true;
-}
-
 void CellList::overlappingPairs(std::span<const Aabb> boxes, std::span<const int> members,
                                 std::vector<std::pair<int, int>>& pairs) {
   pairs.clear();
@@ -71,40 +54,11 @@ void CellList::overlappingPairs(std::span<const Aabb> boxes, std::span<const int
       entries_.push_back(e);
   }
 
-  // Counting sort into buckets, dense or hashed (see the header).
-  std::int32_t high[3] = {0, 0, 0};
-  for (int i = 0; i < 3; ++i) low_[i] = 0;
-  if (!entries_.empty())
-    for (int i = 0; i < 3; ++i) low_[i] = high[i] = entries_.front().cell[i];
-  for (const Entry& e : entries_)
-    for (int i = 0; i < 3; ++i) {
-      low_[i] = std::min(low_[i], e.cell[i]);
-      high[i] = std::max(high[i], e.cell[i]);
-    }
-  double block = 1.0;
-  for (int i = 0; i < 3; ++i) block *= static_cast<double>(high[i]) - low_[i] + 1;
-  dense_ = block <= 4.0 * static_cast<double>(entries_.size()) + 1024.0;
-  std::size_t buckets = 64;
-  if (dense_) {
-    buckets = static_cast<std::size_t>(block);
-    for (int i = 0; i < 3; ++i)
-      span_[i] = static_cast<std::uint32_t>(static_cast<std::int64_t>(high[i]) - low_[i] + 1);
-  } else {
-    while (buckets < 2 * entries_.size()) buckets *= 2;
-  }
-  mask_ = static_cast<std::uint32_t>(buckets - 1);
-  buckets_ = buckets;
-  bucket_start_.assign(buckets + 1, 0);
-  bucket_of_.resize(entries_.size());
-  for (std::size_t e = 0; e < entries_.size(); ++e) {
-    std::uint32_t b = 0;
-    bucketOfCell(entries_[e].cell, b);  // inside the block: it is the entries' own
-    bucket_of_[e] = b;
-    ++bucket_start_[b + 1];
-  }
-  sortIntoBuckets(entries_, bucket_of_, bucket_start_, sorted_);
+  // Counting sort into buckets, dense or hashed (contact/bucket_layout.hpp).
+  layout_ = bucketLayoutFor(entries_);
+  sortIntoBuckets(layout_, entries_, bucket_of_, bucket_start_, sorted_);
   pairsByBucketRanges(
-      buckets, entries_.size(), threads_, lanes_, pairs,
+      layout_.buckets, entries_.size(), threads_, lanes_, pairs,
       [&](std::size_t first, std::size_t last, std::vector<std::pair<int, int>>& out) {
         pairsInBuckets(first, last, boxes, members, out);
       });
@@ -119,7 +73,7 @@ void CellList::pairsInBuckets(std::size_t first, std::size_t last, std::span<con
     if (overlaps(bg, boxes[static_cast<std::size_t>(h)]))
       out.emplace_back(std::min(g, h), std::max(g, h));
   };
-  if (dense_) {
+  if (layout_.dense) {
     // A bucket is one cell: its neighbours' ranges found once for all its entries.
     std::uint32_t from[13], to[13];
     for (std::size_t b = first; b < last; ++b) {
@@ -130,7 +84,7 @@ void CellList::pairsInBuckets(std::size_t first, std::size_t last, std::span<con
       for (const auto& d : kAhead) {
         const std::int32_t n[3] = {cell[0] + d[0], cell[1] + d[1], cell[2] + d[2]};
         std::uint32_t nb = 0;
-        if (!bucketOfCell(n, nb) || bucket_start_[nb] == bucket_start_[nb + 1]) continue;
+        if (!layout_.bucketOf(n, nb) || bucket_start_[nb] == bucket_start_[nb + 1]) continue;
         from[ahead] = bucket_start_[nb];
         to[ahead++] = bucket_start_[nb + 1];
       }
@@ -157,7 +111,7 @@ void CellList::pairsInBuckets(std::size_t first, std::size_t last, std::span<con
       for (const auto& d : kAhead) {
         const std::int32_t n[3] = {ei.cell[0] + d[0], ei.cell[1] + d[1], ei.cell[2] + d[2]};
         std::uint32_t nb = 0;
-        bucketOfCell(n, nb);
+        layout_.bucketOf(n, nb);
         for (std::uint32_t j = bucket_start_[nb]; j < bucket_start_[nb + 1]; ++j)
           if (sameCell(n, sorted_[j].cell)) test(g, bg, sorted_[j]);
       }

@@ -56,16 +56,10 @@ class CellList {
   // and with its 13 neighbours ahead, appended to `out`.
   void pairsInBuckets(std::size_t first, std::size_t last, std::span<const Aabb> boxes,
                       std::span<const int> members, std::vector<std::pair<int, int>>& out) const;
-  // The bucket of `cell`; false when it lies outside the dense block (then it holds nothing).
-  bool bucketOfCell(const std::int32_t cell[3], std::uint32_t& bucket) const;
 
   int threads_ = 1;
   double cell_ = 0.0;
-  bool dense_ = true;
-  std::int32_t low_[3] = {0, 0, 0};
-  std::uint32_t span_[3] = {0, 0, 0};
-  std::uint32_t mask_ = 0;
-  std::size_t buckets_ = 0;
+  BucketLayout layout_;
   std::vector<Entry> entries_, sorted_;
   std::vector<std::uint32_t> bucket_of_;     // by entry
   std::vector<std::uint32_t> bucket_start_;  // bucket b's entries: sorted_[start[b], start[b+1])
