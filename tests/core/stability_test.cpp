@@ -4,11 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/simulator.hpp"
 #include "support/test_models.hpp"
@@ -424,6 +428,65 @@ TEST(StabilityEstimate, ARockingBoxIsStableBelowAndDivergesPastTheEstimate) {
       } else {
         EXPECT_TRUE(stopped || wmax > 30 * w0) << who << ": wmax " << wmax;
       }
+    }
+  }
+}
+
+// Boxes on the ground (mass m, free), box i on material `laws[i]`: Coulomb tanh at mu 0.3
+// and the given v_eps. Friction's slope at sticking, mu / v_eps, sets the limit.
+std::shared_ptr<const Model> boxesOnLaws(const std::vector<double>& v_eps, double m) {
+  ModelBuilder b;
+  b.options().integrator = IntegratorType::kSemiImplicitEuler;
+  b.options().time_step = 1e-6;
+  const double k = 1e5 * m;  // the same normal and rocking modes for every mass
+  const Vec3 size(0.2, 0.2, 0.1);
+  const int ground = b.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace());
+  std::map<double, int> material_of;  // one material (one law object) per v_eps
+  for (std::size_t i = 0; i < v_eps.size(); ++i) {
+    Body box;
+    box.name = "box" + std::to_string(i);
+    box.mass = m;
+    box.inertia = test::boxInertia(m, size);
+    box.position = Vec3(0.5 * static_cast<double>(i), 0, size.z() / 2 - m * 9.81 / (4 * k));
+    const BodyIndex body = b.addBody(box);
+    const int shape =
+        b.addGeometry("shape" + std::to_string(i), body, contact::Shape::box(size / 2));
+    const auto [it, added] = material_of.try_emplace(v_eps[i], 0);
+    if (added) it->second = b.addMaterial(test::coulombMaterial(0.3, k, 0.0, v_eps[i]));
+    b.addContactPair(ground, shape, it->second);
+  }
+  return b.build();
+}
+
+TEST(StabilityEstimate, EveryLawSetsItsOwnLimitWhateverThePairsBeforeIt) {
+  // The steepest rise of each law is found once and reused for its later pairs: a pair of
+  // another law, before or after, many pairs of one law, must each give the limit of the
+  // steepest law alone. Masses 1 g to 1 t, v_eps two to three decades apart.
+  for (const double m : {1e-3, 1.0, 1e3}) {
+    for (const auto& [gentle, steep] : {std::pair{1e-3, 1e-5}, std::pair{1e-2, 1e-4}}) {
+      const StabilityReport alone = estimateStableStep(*boxesOnLaws({steep}, m));
+      // Friction's damping at sticking per unit mass is g mu / v_eps (at least; its yaw adds):
+      // semi-implicit Euler's decay limit 2 / c is an upper bound.
+      EXPECT_LE(alone.limit.max_step, 2.0 / (9.81 * 0.3 / steep) * (1 + 1e-9));
+      EXPECT_NE(alone.limit.element.find("friction"), std::string::npos) << alone.limit.element;
+      for (const std::vector<double>& order :
+           {std::vector<double>{gentle, gentle, gentle, steep},
+            std::vector<double>{steep, gentle, steep, gentle}, std::vector<double>(40, steep)}) {
+        const StabilityReport report = estimateStableStep(*boxesOnLaws(order, m));
+        // Equal to rounding: each box's yaw arms differ in their last bits with its place.
+        EXPECT_NEAR(report.limit.max_step, alone.limit.max_step, 1e-12 * alone.limit.max_step)
+            << "m " << m << " v_eps " << steep;
+        bool named_steep = false;  // the limit names a pair of the steep law
+        for (std::size_t i = 0; i < order.size(); ++i)
+          named_steep =
+              named_steep ||
+              (order[i] == steep &&
+               report.limit.element.find("shape" + std::to_string(i) + ")") != std::string::npos);
+        EXPECT_TRUE(named_steep) << report.limit.element;
+      }
+      // And the gentle law alone allows a longer step (so the steep one did decide above).
+      EXPECT_GT(estimateStableStep(*boxesOnLaws({gentle}, m)).limit.max_step,
+                1.5 * alone.limit.max_step);
     }
   }
 }
