@@ -272,5 +272,50 @@ TEST(SkinList, ThousandsOfPairsComeInIdOrderAsEveryPairListed) {
   }
 }
 
+// Pairs numbered against the geometries' order: id = n^2 - (g n + h) (g < h), so the pairs a
+// broadphase reports, sorted by geometry, come in decreasing id (the detector then sorts its
+// candidates by id instead of merging them in geometry order).
+class ReversedPair : public PairRule {
+ public:
+  explicit ReversedPair(int n) : n_(n) {}
+  int pairId(int g, int h) const override {
+    return n_ * n_ - (std::min(g, h) * n_ + std::max(g, h));
+  }
+  std::pair<int, int> geometries(int id) const override {
+    const int v = n_ * n_ - id;
+    return {v / n_, v % n_};
+  }
+
+ private:
+  int n_;
+};
+
+TEST(SkinList, ARuleWhoseIdsRunAgainstTheGeometriesGivesItsOwnIdOrder) {
+  std::mt19937 rng(20261202);
+  for (const double scale : {2e-3, 0.05, 4.0}) {
+    const int n = 400;
+    Scene s = randomScene(rng, n, scale, 3.0);
+    // Every pair listed in decreasing (g, h): the reversed rule's increasing id.
+    std::vector<std::pair<int, int>> reversed;
+    for (int g = n - 1; g >= 0; --g)
+      for (int h = n - 1; h > g; --h) reversed.emplace_back(g, h);
+    CollisionDetector brute(s.shapes, reversed);
+    CollisionDetector skinned(s.shapes, std::make_unique<ReversedPair>(n), withSkin(0.1));
+    auto id = [&](int p) { return n * n - (reversed[p].first * n + reversed[p].second); };
+    std::vector<ContactPoint> want, got;
+    std::size_t points = 0;
+    for (int call = 0; call < 6; ++call) {
+      const std::string where = "scale " + std::to_string(scale) + ", call " + std::to_string(call);
+      brute.detect(s.poses, want);
+      skinned.detect(s.poses, got);
+      expectSame(got, want, id, where);
+      points += want.size();
+      moveAll(rng, s, call % 2 == 0 ? 1e-3 : 0.3);
+    }
+    EXPECT_GT(points, 300U) << "the scenes have contacts to find";
+    EXPECT_GE(skinned.skinListBuilds(), 2) << "rebuilt, not only built";
+  }
+}
+
 }  // namespace
 }  // namespace tribo::contact
