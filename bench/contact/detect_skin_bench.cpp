@@ -32,8 +32,7 @@ class Rule : public tribo::contact::PairRule {
   explicit Rule(std::shared_ptr<const tribo::Model> model) : model_(std::move(model)) {}
   int pairId(int g, int h) const override { return tribo::automaticPairId(*model_, g, h); }
   std::pair<int, int> geometries(int id) const override {
-    const tribo::ContactPair p = tribo::automaticPair(*model_, id);
-    return {p.geometry_a, p.geometry_b};
+    return tribo::automaticGeometries(*model_, id);
   }
 
  private:
