@@ -432,8 +432,8 @@ TEST(StabilityEstimate, ARockingBoxIsStableBelowAndDivergesPastTheEstimate) {
   }
 }
 
-// Boxes on the ground (mass m, free), box i on material `laws[i]`: Coulomb tanh at mu 0.3
-// and the given v_eps. Friction's slope at sticking, mu / v_eps, sets the limit.
+// Boxes on the ground (mass m, free), box i on a Coulomb tanh law at mu 0.3 and v_eps[i]
+// (one material a v_eps). Friction's slope at sticking, mu / v_eps, sets the limit.
 std::shared_ptr<const Model> boxesOnLaws(const std::vector<double>& v_eps, double m) {
   ModelBuilder b;
   b.options().integrator = IntegratorType::kSemiImplicitEuler;
