@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "contact/counting_sort.hpp"
+
 namespace tribo::contact {
 
 // 2^30: cell coordinates stay within int32 (and a neighbour's, one further, too).
@@ -80,28 +82,22 @@ BucketLayout bucketLayoutFor(const std::vector<Entry>& entries) {
   return layout;
 }
 
-// Counting sort of `entries` into the buckets of `layout`: `sorted` = `entries` in bucket
-// order (stable), bucket b's entries then sorted[start[b], start[b + 1]); `bucket_of` holds
-// each entry's bucket. Every entry's cell lies in the layout's block (it was made from them).
+// Counting sort of `entries` into the buckets of `layout` (contact/counting_sort.hpp): `sorted`
+// = `entries` in bucket order (stable), bucket b's entries then sorted[start[b], start[b + 1]);
+// `bucket_of` holds each entry's bucket. Every entry's cell lies in the layout's block (it was
+// made from them).
 template <class Entry>
 void sortIntoBuckets(const BucketLayout& layout, const std::vector<Entry>& entries,
                      std::vector<std::uint32_t>& bucket_of, std::vector<std::uint32_t>& start,
                      std::vector<Entry>& sorted) {
-  const std::size_t buckets = layout.buckets;
-  start.assign(buckets + 1, 0);
   bucket_of.resize(entries.size());
   for (std::size_t e = 0; e < entries.size(); ++e) {
     std::uint32_t b = 0;
     layout.bucketOf(entries[e].cell, b);
     bucket_of[e] = b;
-    ++start[b + 1];
   }
-  for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
-  sorted.resize(entries.size());
-  // start is the write cursor of each bucket while scattering, then restored.
-  for (std::size_t e = 0; e < entries.size(); ++e) sorted[start[bucket_of[e]]++] = entries[e];
-  for (std::size_t b = buckets; b > 0; --b) start[b] = start[b - 1];
-  start[0] = 0;
+  countingSort(
+      entries, layout.buckets, [&bucket_of](std::size_t e) { return bucket_of[e]; }, start, sorted);
 }
 
 }  // namespace tribo::contact

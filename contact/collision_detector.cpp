@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -26,6 +27,7 @@
 #include "contact/box_round_contacts.hpp"
 #include "contact/broadphase.hpp"
 #include "contact/cell_list.hpp"
+#include "contact/counting_sort.hpp"
 #include "contact/parallel_range.hpp"
 #include "contact/polyhedron_contacts.hpp"
 #include "contact/round_contacts.hpp"
@@ -225,17 +227,12 @@ void sortById(std::vector<Candidate>& list, std::vector<Candidate>& scratch) {
 void sortPairsByGeometry(std::vector<std::pair<int, int>>& pairs, std::size_t geometries,
                          std::vector<std::uint32_t>& start,
                          std::vector<std::pair<int, int>>& scratch) {
-  start.assign(geometries + 1, 0);
-  for (const auto& [g, h] : pairs) ++start[static_cast<std::size_t>(g) + 1];
-  for (std::size_t g = 0; g < geometries; ++g) start[g + 1] += start[g];
-  scratch.resize(pairs.size());
-  for (const auto& p : pairs) scratch[start[static_cast<std::size_t>(p.first)]++] = p;
-  // start[g] is now the end of g's run (the start of g + 1's).
-  std::uint32_t begin = 0;
+  countingSort(
+      pairs, geometries,
+      [&pairs](std::size_t i) { return static_cast<std::size_t>(pairs[i].first); }, start, scratch);
   for (std::size_t g = 0; g < geometries; ++g) {
-    const std::uint32_t end = start[g];
-    auto first = scratch.begin() + begin, last = scratch.begin() + end;
-    if (end - begin <= 32) {
+    auto first = scratch.begin() + start[g], last = scratch.begin() + start[g + 1];
+    if (last - first <= 32) {
       for (auto i = first + (first != last); i < last; ++i) {  // insertion on h
         const std::pair<int, int> p = *i;
         auto j = i;
@@ -245,7 +242,6 @@ void sortPairsByGeometry(std::vector<std::pair<int, int>>& pairs, std::size_t ge
     } else {
       std::sort(first, last);
     }
-    begin = end;
   }
   pairs.swap(scratch);
 }
@@ -354,9 +350,10 @@ struct CollisionDetector::Impl {
            !overlaps(boxes[static_cast<std::size_t>(c.a)], boxes[static_cast<std::size_t>(c.b)]);
   }
 
-  // narrowphase(), with a granular scene's pairs (sphere/sphere, and a half-space's with each
-  // shape above it) called here: their closed forms cost about as much as narrowphase's entry
-  // and exit (the dispatch over every kind, its frame), which they then skip.
+  // The contact points of one pair, appended to `out` (never culled here: the caller tests).
+  // A granular scene's pairs (sphere/sphere, and a half-space's with each shape above it) are
+  // answered here: their closed forms cost about as much as narrowphase's entry and exit (the
+  // dispatch over every kind, its frame), which they then skip. Every other pair: narrowphase.
   void narrowphaseOf(const Candidate& c, std::span<const Eigen::Isometry3d> poses,
                      std::vector<ContactPoint>& out, Lane& lane) {
     const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
@@ -372,7 +369,7 @@ struct CollisionDetector::Impl {
     narrowphase(c, poses, out, lane);
   }
 
-  // The contact points of one pair, appended to `out` (never culled here: the caller tests).
+  // The dispatch over the other kinds of pair, for narrowphaseOf (the only caller).
   void narrowphase(const Candidate& c, std::span<const Eigen::Isometry3d> poses,
                    std::vector<ContactPoint>& out, Lane& lane) {
     const int a = c.a, b = c.b, p = c.id;
@@ -382,7 +379,8 @@ struct CollisionDetector::Impl {
         boxHalfSpaceContacts(poses[b], shapes[b].half_extents, poses[a], p, out);
         return;
       case PairKind::kHalfSpaceShape:
-        halfSpaceContacts(shapes[b], poses[b], poses[a], p, max_points, out);
+      case PairKind::kSphereSphere:
+        assert(false && "answered by narrowphaseOf before the dispatch");
         return;
       case PairKind::kShapeHalfSpace: {
         const auto first = out.size();
@@ -390,10 +388,6 @@ struct CollisionDetector::Impl {
         for (auto i = first; i < out.size(); ++i) out[i].normal = -out[i].normal;
         return;
       }
-      case PairKind::kSphereSphere:
-        sphereSphereContact(poses[a].translation(), shapes[a].radius, poses[b].translation(),
-                            shapes[b].radius, p, out);
-        return;
       case PairKind::kBoxSphere:
         boxSphereContact(poses[a], shapes[a].half_extents, poses[b].translation(), shapes[b].radius,
                          p, out);
