@@ -62,7 +62,8 @@ class FrictionLaw {
   // Coefficients at many speeds at once (friction/tangential_batch.hpp): mu[i] =
   // coefficient(v[i]), the same bits, except 0 where v[i] == 0 (no slip: no force, and the
   // law is not asked there). The laws of this folder loop over their own coefficient() (no
-  // virtual call per speed: coefficientsOf below); the default calls the virtual one.
+  // virtual call per speed, and once for a run of equal speeds: coefficientsOf below); the
+  // default calls the virtual one.
   virtual void coefficientsAt(std::span<const double> v, std::span<double> mu) const;
   // d mu / dv at v [s/m] (one-sided where the law has a kink, e.g. coulomb without
   // regularization at 0).
@@ -108,9 +109,14 @@ const std::vector<std::string>& knownDynamicFrictionLaws();
 
 // FrictionLaw::coefficientsAt for a law class `Law` whose coefficient() the compiler sees (a
 // final class, called from the .cpp that defines coefficient()): one loop, no virtual call.
+// A speed equal to the one before it takes that one's coefficient without asking the law
+// again (a memoryless law's coefficient is a function of the speed alone, so the same bits):
+// the points of a body that translates without turning, a box's four corners on a belt,
+// slip alike, and the law was most of their friction stage.
 template <class Law>
 void coefficientsOf(const Law& law, std::span<const double> v, std::span<double> mu) {
-  for (std::size_t i = 0; i < v.size(); ++i) mu[i] = v[i] != 0.0 ? law.Law::coefficient(v[i]) : 0.0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    mu[i] = v[i] == 0.0 ? 0.0 : i > 0 && v[i] == v[i - 1] ? mu[i - 1] : law.Law::coefficient(v[i]);
 }
 
 // Tangential force on body B (slip s = velocity of B's material point relative to A's, in

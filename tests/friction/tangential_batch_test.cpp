@@ -4,8 +4,9 @@
 // memoryless ones with the paper's Table 1 values, every coulomb regularization, tiny and
 // large transition speeds; the dynamic ones through their steady curve), a tabulated law and a
 // law that keeps the default coefficientsAt (a virtual call per speed). Random slips in every
-// direction with speeds from 1e-12 to 1e3 m/s, exact zeros among them, loads from 1e-6 to
-// 1e6 N, batches of 1, 7, 255 and 256 points.
+// direction with speeds from 1e-12 to 1e3 m/s, exact zeros among them and runs of equal
+// slips (the points of a body that translates), loads from 1e-6 to 1e6 N, batches of 1, 7,
+// 255 and 256 points. And a run of equal speeds asks the law once (coefficientsOf).
 #include "friction/tangential_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -85,6 +86,7 @@ TEST_P(TangentialBatchLaws, EveryPointIsTangentialForceBitForBit) {
         slips[k] = k % 11 == 5
                        ? Eigen::Vector3d::Zero()
                        : Eigen::Vector3d(direction.normalized() * std::pow(10.0, decade(rng)));
+        if (k % 13 >= 9 && k > 0) slips[k] = slips[k - 1];  // runs of up to four equal slips
         fn[k] = std::pow(10.0, load(rng));
         batch.add(slips[k]);
       }
@@ -116,7 +118,8 @@ TEST_P(TangentialBatchLaws, EveryPointIsTangentialForceBitForBit) {
 
 TEST_P(TangentialBatchLaws, CoefficientsAtAreTheCoefficientsExceptAtZero) {
   const FrictionLaw& law = *GetParam().law;
-  std::vector<double> v = {0.0, -0.0, 1e-12, -1e-9, 1e-4, -0.01, 0.3, -2.0, 1e3};
+  std::vector<double> v = {0.0, -0.0, 1e-12, -1e-9, -1e-9, 1e-4, -0.01, 0.3,
+                           0.3, 0.3,  -2.0,  0.0,   -2.0,  -2.0, 1e3,   1e3};
   std::vector<double> mu(v.size(), -7.0);
   law.coefficientsAt(v, mu);
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -124,6 +127,38 @@ TEST_P(TangentialBatchLaws, CoefficientsAtAreTheCoefficientsExceptAtZero) {
       EXPECT_EQ(mu[i], 0.0) << i;
     else
       EXPECT_TRUE(sameBits(mu[i], law.coefficient(v[i]))) << "v " << v[i];
+  }
+}
+
+// A law of this folder's kind (its coefficientsAt is coefficientsOf) that counts its calls.
+class CountedLaw final : public FrictionLaw {
+ public:
+  double coefficient(double v) const override {
+    ++calls;
+    return 0.5 * v / (std::abs(v) + 1e-3);
+  }
+  void coefficientsAt(std::span<const double> v, std::span<double> mu) const override {
+    coefficientsOf(*this, v, mu);
+  }
+  double slope(double) const override { return 0.0; }
+  double maxCoefficient(double) const override { return 0.5; }
+  double stickSpeed() const override { return 1e-3; }
+  std::vector<double> breakpoints() const override { return {}; }
+  std::string_view name() const override { return "counted"; }
+  mutable int calls = 0;
+};
+
+TEST(CoefficientsOf, ARunOfEqualSpeedsAsksTheLawOnceAndGivesItsCoefficientToEach) {
+  // A box's four corners sliding alike, then a different speed, the first again (a new run),
+  // a zero between two equal speeds (each side its own run), and -0.5 after 0.5.
+  const std::vector<double> v = {0.25, 0.25, 0.25, 0.25, 1e-6, 0.25, 0.0, 2.0, 2.0, 0.5, -0.5};
+  std::vector<double> mu(v.size(), -1.0);
+  const CountedLaw law;
+  law.coefficientsAt(v, mu);
+  EXPECT_EQ(law.calls, 6);  // 0.25, 1e-6, 0.25, 2.0, 0.5, -0.5; 0 never asked
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const double expected = v[i] == 0.0 ? 0.0 : 0.5 * v[i] / (std::abs(v[i]) + 1e-3);
+    EXPECT_TRUE(sameBits(mu[i], expected)) << "v " << v[i] << ": " << mu[i];
   }
 }
 
