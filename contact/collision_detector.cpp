@@ -186,10 +186,12 @@ namespace {
 // thread count. Ids are distinct, so any correct sort gives this one order: a long list (the
 // skin list of a 32 000-sphere chute holds ~10^5 pairs, rebuilt every few steps) by a
 // least-significant-digit radix sort on 11-bit digits, one stable pass a digit the largest id
-// has (three for ids up to 2^33), through `scratch`; a short one, or one holding a negative id,
+// has (three for ids up to 2^33), each a counting sort (contact/counting_sort.hpp) through
+// `scratch` and `start`; a short one, or one holding a negative id,
 // by comparison. The radix passes cost O(n) each where the comparison sort took 5.7 % of the
 // chute's one-thread step (docs/performance.md).
-void sortById(std::vector<Candidate>& list, std::vector<Candidate>& scratch) {
+void sortById(std::vector<Candidate>& list, std::vector<Candidate>& scratch,
+              std::vector<std::uint32_t>& start) {
   constexpr std::size_t kRadixFrom = 1024;
   auto by_id = [](const Candidate& x, const Candidate& y) { return x.id < y.id; };
   int largest = 0;
@@ -204,18 +206,14 @@ void sortById(std::vector<Candidate>& list, std::vector<Candidate>& scratch) {
   }
   constexpr int kBits = 11;
   constexpr std::uint32_t kDigits = 1u << kBits;
-  std::array<std::uint32_t, kDigits> start;
-  scratch.resize(list.size());
   const auto top = static_cast<std::uint32_t>(largest);
   for (int shift = 0; shift < 32 && (top >> shift) != 0; shift += kBits) {
-    auto digit = [shift](const Candidate& c) {
-      return (static_cast<std::uint32_t>(c.id) >> shift) & (kDigits - 1);
-    };
-    start.fill(0);
-    for (const Candidate& c : list) ++start[digit(c)];
-    std::uint32_t sum = 0;
-    for (std::uint32_t& s : start) sum += std::exchange(s, sum);
-    for (const Candidate& c : list) scratch[start[digit(c)]++] = c;
+    countingSort(
+        list, kDigits,
+        [&list, shift](std::size_t e) {
+          return (static_cast<std::uint32_t>(list[e].id) >> shift) & (kDigits - 1);
+        },
+        start, scratch);
     list.swap(scratch);
   }
 }
@@ -269,8 +267,9 @@ struct CollisionDetector::Impl {
   std::vector<std::uint32_t> close_start;          // and its runs
   fcl::CollisionRequestd request;                  // shared by the threads: FCL only reads it
   std::vector<Candidate> candidates;
-  std::vector<Candidate> sort_scratch;  // sortById's second buffer
-  std::vector<Candidate> unbounded;     // pairs with a half-space: never culled
+  std::vector<Candidate> sort_scratch;    // sortById's second buffer
+  std::vector<std::uint32_t> sort_start;  // and its digits' counts
+  std::vector<Candidate> unbounded;       // pairs with a half-space: never culled
   // The skin list (options.broadphase_skin > 0): every pair whose boxes grown by `margin` on
   // each side (`fat`, by geometry, as of the last build) overlap, with the unbounded pairs,
   // by pair id; rebuilt when some tight box has left its fat box.
@@ -600,7 +599,7 @@ void CollisionDetector::Impl::buildSkinList() {
                skin_list.begin(), by_id);
   } else {
     candidates.insert(candidates.end(), unbounded.begin(), unbounded.end());
-    sortById(candidates, sort_scratch);
+    sortById(candidates, sort_scratch, sort_start);
     skin_list.assign(candidates.begin(), candidates.end());
   }
   skin_valid = true;
@@ -815,7 +814,7 @@ void CollisionDetector::detect(std::span<const Eigen::Isometry3d> poses,
   m.grid.overlappingPairs(m.boxes, m.bounded, m.close_pairs);
   m.candidates.assign(m.unbounded.begin(), m.unbounded.end());
   for (const auto& [g, h] : m.close_pairs) m.candidateFound(g, h);
-  sortById(m.candidates, m.sort_scratch);  // deterministic order
+  sortById(m.candidates, m.sort_scratch, m.sort_start);  // deterministic order
   m.narrowphaseAll(m.candidates, poses, out);
 }
 
