@@ -1,6 +1,7 @@
 // A stable counting sort over small integer keys: the one pass pattern behind the bucketed
-// broadphases (contact/bucket_layout.hpp, entries by bucket) and the skin list's rebuild
-// (contact/collision_detector.cpp, close pairs by first geometry).
+// broadphases (contact/bucket_layout.hpp, entries by bucket), the skin list's rebuild (close
+// pairs by first geometry) and the radix passes of the sort of pairs by id (both in
+// contact/collision_detector.cpp).
 // Not here: what the keys are, or any order within a key beyond the input's.
 #pragma once
 
