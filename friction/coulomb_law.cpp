@@ -5,6 +5,7 @@
 #include <string>
 
 #include "friction/parameter_check.hpp"
+#include "friction/vector_tanh.hpp"
 
 namespace tribo::friction {
 namespace {
@@ -39,7 +40,7 @@ double CoulombLaw::coefficient(double v) const {
     case CoulombRegularization::kLinear:
       return mu * std::clamp(v * inv_v_eps_, -1.0, 1.0);
     case CoulombRegularization::kTanh:
-      return mu * std::tanh(v * inv_v_eps_);
+      return mu * tanhOf(v * inv_v_eps_);
     case CoulombRegularization::kHavsin:
       return std::copysign(ramp_.value(std::abs(v)), v);
   }
@@ -47,7 +48,17 @@ double CoulombLaw::coefficient(double v) const {
 }
 
 void CoulombLaw::coefficientsAt(std::span<const double> v, std::span<double> mu) const {
-  coefficientsOf(*this, v, mu);
+  if (params_.regularization != CoulombRegularization::kTanh) {
+    coefficientsOf(*this, v, mu);
+    return;
+  }
+  // tanh's arguments in mu, every tanh in one call (friction/vector_tanh.hpp: the same bits
+  // as coefficient's tanhOf), then the coefficient: the arithmetic of coefficient, the same
+  // bits, and 0 at zero speed as coefficientsAt promises.
+  const std::size_t n = std::min(v.size(), mu.size());
+  for (std::size_t i = 0; i < n; ++i) mu[i] = v[i] * inv_v_eps_;
+  tanhEach(mu.first(n), mu.first(n));
+  for (std::size_t i = 0; i < n; ++i) mu[i] = v[i] == 0.0 ? 0.0 : params_.mu * mu[i];
 }
 
 double CoulombLaw::slope(double v) const {
@@ -59,7 +70,7 @@ double CoulombLaw::slope(double v) const {
     case CoulombRegularization::kLinear:
       return std::abs(v) < params_.v_eps ? mu * inv_v_eps_ : 0.0;
     case CoulombRegularization::kTanh: {
-      const double t = std::tanh(v * inv_v_eps_);
+      const double t = tanhOf(v * inv_v_eps_);
       return mu * inv_v_eps_ * (1.0 - t * t);
     }
     case CoulombRegularization::kHavsin:
