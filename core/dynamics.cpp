@@ -288,14 +288,33 @@ void Dynamics::detect() {
   detector_.detect(ws_.geometry_poses, ws_.contact_points);
   ws_.contacts.resize(ws_.contact_points.size());
   // Each point's pair (with automatic contacts it is derived from the id: a division and a
-  // material lookup), once per run of points of one pair: a manifold's points are adjacent.
+  // material lookup, 60 instructions), once per run of points of one pair (a manifold's
+  // points are adjacent), and taken from the last detection's pairs when that one had the id:
+  // the pairs come in ascending id (the skin list's and the grid's order), so one walk along
+  // the last detection's list finds them. A pair is a function of its id in the immutable
+  // model, so the memo gives the same pair; ids out of order only miss it.
   const std::size_t n = ws_.contact_points.size();
   ws_.contact_pair.resize(n);
+  pair_memo_next_.resize(n);  // at most a pair a point
+  const std::pair<int, ContactPair>* memo = pair_memo_.data();
+  const std::size_t memo_size = pair_memo_.size();
+  std::size_t k = 0, pairs = 0;
+  int last_id = -1;
   for (std::size_t i = 0; i < n; ++i) {
     const int id = ws_.contact_points[i].pair;
-    ws_.contact_pair[i] = i > 0 && id == ws_.contact_points[i - 1].pair ? ws_.contact_pair[i - 1]
-                                                                        : model_->contactPair(id);
+    if (id == last_id) {
+      ws_.contact_pair[i] = ws_.contact_pair[i - 1];
+      continue;
+    }
+    last_id = id;
+    while (k < memo_size && memo[k].first < id) ++k;
+    const ContactPair pair =
+        k < memo_size && memo[k].first == id ? memo[k].second : model_->contactPair(id);
+    ws_.contact_pair[i] = pair;
+    pair_memo_next_[pairs++] = {id, pair};
   }
+  pair_memo_next_.resize(pairs);
+  std::swap(pair_memo_, pair_memo_next_);
 }
 
 void Dynamics::contactKinematics(const State& state, bool point_energy) {

@@ -29,6 +29,8 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "contact/collision_detector.hpp"
 #include "contact/contact_force.hpp"
@@ -172,6 +174,9 @@ class Dynamics {
     bool finite = true;
   };
   std::vector<ChunkSummary> chunk_summary_;
+  // detect: the last detection's pairs by id (each pair id once, in the points' order), and
+  // the list being written.
+  std::vector<std::pair<int, ContactPair>> pair_memo_, pair_memo_next_;
   // The friction is formed in contactKinematics' pass (the friction stage has nothing left to
   // do): the stages are not timed apart and no dynamic law is in play.
   bool frictionInPointsPass() const { return !profiling_ && friction_.pointwise(); }

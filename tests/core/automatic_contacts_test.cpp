@@ -6,6 +6,7 @@
 // where a record per geometry pair would take 16 times); the errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -14,6 +15,8 @@
 #include <new>
 #include <random>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "core/dynamics.hpp"
 #include "core/model_builder.hpp"
@@ -328,6 +331,71 @@ TEST(AutomaticContacts, RunsBitForBitAsTheSamePairsListed) {
       EXPECT_EQ(a.state().bodies[k].orientation.coeffs(), l.state().bodies[k].orientation.coeffs());
     }
   }
+}
+
+// Spheres of three surfaces (three materials between them, the fallback for the rest) dropped
+// in a column that topples onto the ground: contacts come and go every few steps. Each point's
+// pair, which a step takes from the last detection's pairs when it had the id
+// (core/dynamics.cpp), is at every step the documented rule's pair for its geometries
+// (referencePairs) and the model's pair for its id.
+TEST(AutomaticContacts, EveryPointsPairIsTheRulesAsContactsComeAndGo) {
+  ModelBuilder b;
+  b.options().integrator = IntegratorType::kSemiImplicitEuler;
+  b.options().time_step = 2e-4;
+  b.options().collision.broadphase = true;
+  std::map<std::pair<std::string, std::string>, int> by_surface;
+  const int fallback = b.addMaterial(material(0.3, 2e4));
+  b.setDefaultMaterial(fallback);
+  const char* surfaces[] = {"steel", "rubber", "wood"};
+  for (const auto& [x, y, mu] :
+       {std::tuple{"steel", "rubber", 0.6}, {"wood", "wood", 0.5}, {"rubber", "ground", 0.9}}) {
+    const int mat = b.addMaterial(material(mu, 2e4));
+    b.addSurfacePairMaterial(x, y, mat);
+    by_surface[{x, y}] = mat;
+  }
+  b.setGeometrySurface(b.addGeometry("ground", BodyIndex::world(), contact::Shape::halfSpace()),
+                       "ground");
+  for (int i = 0; i < 24; ++i) {
+    Body body;
+    body.name = numbered("p", i);
+    body.mass = 0.5 + 0.1 * (i % 4);
+    body.inertia = Mat3::Identity() * 0.4 * body.mass * 0.05 * 0.05;
+    body.position = Vec3(0.02 * std::sin(1.3 * i), 0.02 * std::cos(0.7 * i), 0.06 + 0.11 * i);
+    const int g = b.addGeometry(numbered("s", i), b.addBody(body), contact::Shape::sphere(0.05));
+    b.setGeometrySurface(g, surfaces[i % 3]);
+  }
+  const auto model = b.build();
+  const std::vector<Reference> rule = referencePairs(*model, by_surface, fallback);
+  Simulator sim(model);
+  std::vector<int> last_ids;
+  int changes = 0;
+  std::size_t points = 0, between_spheres = 0, not_fallback = 0;
+  for (int step = 0; step < 5000; ++step) {
+    ASSERT_TRUE(sim.step().ok) << step;
+    const Workspace& ws = sim.current();
+    ASSERT_EQ(ws.contact_pair.size(), ws.contacts.size());
+    std::vector<int> ids;
+    for (std::size_t i = 0; i < ws.contacts.size(); ++i) {
+      const int id = ws.contacts[i].point.pair;
+      const ContactPair& p = ws.contact_pair[i];
+      const Reference got{p.geometry_a, p.geometry_b, p.material};
+      ASSERT_NE(std::find(rule.begin(), rule.end(), got), rule.end())
+          << "step " << step << " point " << i << ": geometries " << got.a << ", " << got.b
+          << ", material " << got.material;
+      const ContactPair direct = model->contactPair(id);
+      ASSERT_EQ(got, (Reference{direct.geometry_a, direct.geometry_b, direct.material})) << step;
+      ids.push_back(id);
+      between_spheres += p.geometry_a != 0;
+      not_fallback += p.material != fallback;
+    }
+    changes += ids != last_ids;
+    points += ids.size();
+    last_ids = std::move(ids);
+  }
+  EXPECT_GT(changes, 100) << "contacts came and went";
+  EXPECT_GT(between_spheres, 1000u);
+  EXPECT_GT(not_fallback, 1000u);
+  EXPECT_GT(points, 20000u);
 }
 
 std::size_t bytesToSetUp(int side) {
