@@ -1,6 +1,7 @@
 #include "friction/coulomb_law.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -52,13 +53,28 @@ void CoulombLaw::coefficientsAt(std::span<const double> v, std::span<double> mu)
     coefficientsOf(*this, v, mu);
     return;
   }
-  // tanh's arguments in mu, every tanh in one call (friction/vector_tanh.hpp: the same bits
-  // as coefficient's tanhOf), then the coefficient: the arithmetic of coefficient, the same
-  // bits, and 0 at zero speed as coefficientsAt promises.
+  // coefficientsOf's rule (0 at zero speed; a speed equal to the one before it takes its
+  // coefficient: a resting box's corners, a translating body's points), with the tanh of the
+  // speeds left over gathered and taken in one call (friction/vector_tanh.hpp: the same bits
+  // as coefficient's tanhOf), a chunk at a time; then the coefficient as coefficient forms it.
   const std::size_t n = std::min(v.size(), mu.size());
-  for (std::size_t i = 0; i < n; ++i) mu[i] = v[i] * inv_v_eps_;
-  tanhEach(mu.first(n), mu.first(n));
-  for (std::size_t i = 0; i < n; ++i) mu[i] = v[i] == 0.0 ? 0.0 : params_.mu * mu[i];
+  auto asked = [&](std::size_t i) { return v[i] != 0.0 && !(i > 0 && v[i] == v[i - 1]); };
+  constexpr std::size_t kChunk = 256;
+  std::array<double, kChunk> t;
+  for (std::size_t begin = 0; begin < n; begin += kChunk) {
+    const std::size_t end = std::min(n, begin + kChunk);
+    std::size_t count = 0;
+    for (std::size_t i = begin; i < end; ++i)
+      if (asked(i)) t[count++] = v[i] * inv_v_eps_;
+    tanhEach(std::span<const double>(t.data(), count), std::span<double>(t.data(), count));
+    if (count == end - begin) {  // every speed asked (a granular scene's points)
+      for (std::size_t i = begin; i < end; ++i) mu[i] = params_.mu * t[i - begin];
+      continue;
+    }
+    count = 0;
+    for (std::size_t i = begin; i < end; ++i)
+      mu[i] = asked(i) ? params_.mu * t[count++] : v[i] == 0.0 ? 0.0 : mu[i - 1];
+  }
 }
 
 double CoulombLaw::slope(double v) const {
