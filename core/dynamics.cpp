@@ -288,7 +288,7 @@ void Dynamics::detect() {
   detector_.detect(ws_.geometry_poses, ws_.contact_points);
   ws_.contacts.resize(ws_.contact_points.size());
   // Each point's pair (with automatic contacts it is derived from the id: a division and a
-  // material lookup, 60 instructions), once per run of points of one pair (a manifold's
+  // material lookup, 63 instructions), once per run of points of one pair (a manifold's
   // points are adjacent), and taken from the last detection's pairs when that one had the id:
   // the pairs come in ascending id (the skin list's and the grid's order), so one walk along
   // the last detection's list finds them. A pair is a function of its id in the immutable

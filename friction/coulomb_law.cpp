@@ -53,19 +53,18 @@ void CoulombLaw::coefficientsAt(std::span<const double> v, std::span<double> mu)
     coefficientsOf(*this, v, mu);
     return;
   }
-  // coefficientsOf's rule (0 at zero speed; a speed equal to the one before it takes its
-  // coefficient: a resting box's corners, a translating body's points), with the tanh of the
-  // speeds left over gathered and taken in one call (friction/vector_tanh.hpp: the same bits
+  // coefficientsOf's rule (askedAt: 0 at zero speed; a speed equal to the one before it takes
+  // its coefficient: a resting box's corners, a translating body's points), with the tanh of
+  // the speeds asked gathered and taken in one call (friction/vector_tanh.hpp: the same bits
   // as coefficient's tanhOf), a chunk at a time; then the coefficient as coefficient forms it.
   const std::size_t n = std::min(v.size(), mu.size());
-  auto asked = [&](std::size_t i) { return v[i] != 0.0 && !(i > 0 && v[i] == v[i - 1]); };
   constexpr std::size_t kChunk = 256;
   std::array<double, kChunk> t;
   for (std::size_t begin = 0; begin < n; begin += kChunk) {
     const std::size_t end = std::min(n, begin + kChunk);
     std::size_t count = 0;
     for (std::size_t i = begin; i < end; ++i)
-      if (asked(i)) t[count++] = v[i] * inv_v_eps_;
+      if (askedAt(v, i)) t[count++] = v[i] * inv_v_eps_;
     tanhEach(std::span<const double>(t.data(), count), std::span<double>(t.data(), count));
     if (count == end - begin) {  // every speed asked (a granular scene's points)
       for (std::size_t i = begin; i < end; ++i) mu[i] = params_.mu * t[i - begin];
@@ -73,7 +72,7 @@ void CoulombLaw::coefficientsAt(std::span<const double> v, std::span<double> mu)
     }
     count = 0;
     for (std::size_t i = begin; i < end; ++i)
-      mu[i] = asked(i) ? params_.mu * t[count++] : v[i] == 0.0 ? 0.0 : mu[i - 1];
+      mu[i] = askedAt(v, i) ? params_.mu * t[count++] : v[i] == 0.0 ? 0.0 : mu[i - 1];
   }
 }
 

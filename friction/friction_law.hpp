@@ -113,10 +113,16 @@ const std::vector<std::string>& knownDynamicFrictionLaws();
 // again (a memoryless law's coefficient is a function of the speed alone, so the same bits):
 // the points of a body that translates without turning, a box's four corners on a belt,
 // slip alike, and the law was most of their friction stage.
+// askedAt(v, i): whether speed i must go to the law under this rule (neither zero nor equal to
+// the one before it); a batch that forms its coefficients otherwise (coulomb's tanh, several
+// at once) follows the same rule through it.
+inline bool askedAt(std::span<const double> v, std::size_t i) {
+  return v[i] != 0.0 && !(i > 0 && v[i] == v[i - 1]);
+}
 template <class Law>
 void coefficientsOf(const Law& law, std::span<const double> v, std::span<double> mu) {
   for (std::size_t i = 0; i < v.size(); ++i)
-    mu[i] = v[i] == 0.0 ? 0.0 : i > 0 && v[i] == v[i - 1] ? mu[i - 1] : law.Law::coefficient(v[i]);
+    mu[i] = askedAt(v, i) ? law.Law::coefficient(v[i]) : v[i] == 0.0 ? 0.0 : mu[i - 1];
 }
 
 // Tangential force on body B (slip s = velocity of B's material point relative to A's, in
