@@ -68,11 +68,13 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
   const std::size_t nb = m.bodies.size(), ng = m.geometries.size();
   inv_inertia_body_.reserve(nb);
   isotropic_inverse_.reserve(nb);
+  dynamic_mass_.reserve(nb);
   for (const Body& b : m.bodies) {
     const bool dynamic = b.kind == BodyKind::kDynamic;
     inv_inertia_body_.push_back(dynamic ? Mat3(b.inertia.inverse()) : Mat3::Zero());
     const double s = dynamic ? isotropicMoment(b.inertia) : 0.0;
     isotropic_inverse_.push_back(s > 0.0 ? 1.0 / s : 0.0);
+    dynamic_mass_.push_back(dynamic ? b.mass : 0.0);
   }
   ws_.geometry_poses.assign(ng, Eigen::Isometry3d::Identity());
   geometry_motion_.resize(ng);
@@ -174,12 +176,13 @@ namespace {
 // Body b's acceleration from its wrenches, gravity and gyroscopic terms (a kinematic body's
 // from its prescribed motion). Only the sources the model has (Dynamics::Dynamics): a wrench
 // of a source it has not is zero, and a sum of contact forces starting from +0 is never -0,
-// so leaving it out adds nothing a bit would show. `isotropic_inverse`: 1 / I for a body whose
+// so leaving it out adds nothing a bit would show. `mass`: the body's if it is dynamic, 0 if
+// it is kinematic (Dynamics::dynamic_mass_); `isotropic_inverse`: 1 / I for a body whose
 // inertia is I times the identity (Dynamics::isotropic_inverse_), else 0.
 void unconstrainedAcceleration(const Model& m, const State& state, Workspace& ws, std::size_t b,
-                               double isotropic_inverse) {
-  const Body& body = m.bodies[b];
-  if (body.kind != BodyKind::kDynamic) {
+                               double mass, double isotropic_inverse) {
+  if (mass == 0.0) {  // a kinematic body
+    const Body& body = m.bodies[b];
     if (body.motion) {  // core/prescribed_motion.hpp: the signals' derivatives
       ws.linear_acceleration[b] = body.motion->linearAcceleration(state.time);
       ws.angular_acceleration[b] = body.motion->angularAcceleration(state.time);
@@ -204,14 +207,14 @@ void unconstrainedAcceleration(const Model& m, const State& state, Workspace& ws
     force += ws.load_wrench[b].force;
     torque += ws.load_wrench[b].torque;
   }
-  ws.linear_acceleration[b] = force / body.mass + m.options.gravity;
+  ws.linear_acceleration[b] = force / mass + m.options.gravity;
   if (isotropic_inverse > 0.0) {  // I w is parallel to w: no gyroscopic term
     ws.angular_acceleration[b] = isotropic_inverse * torque;
     return;
   }
   const Mat3& r = ws.rotation[b];
   const Vec3 gyro =
-      s.angular_velocity.cross(r * (body.inertia * (r.transpose() * s.angular_velocity)));
+      s.angular_velocity.cross(r * (m.bodies[b].inertia * (r.transpose() * s.angular_velocity)));
   ws.angular_acceleration[b] = ws.inv_inertia_world[b] * (torque - gyro);
 }
 
@@ -259,7 +262,7 @@ void Dynamics::updatePoses(const State& state) {
     const BodyState& s = state.bodies[b];
     const Mat3 r = s.orientation.toRotationMatrix();
     ws_.rotation[b] = r;
-    if (m.bodies[b].kind == BodyKind::kDynamic && isotropic_inverse_[b] == 0.0)
+    if (isotropic_inverse_[b] == 0.0 && dynamic_mass_[b] > 0.0)
       ws_.inv_inertia_world[b] = rotatedTensor(r, inv_inertia_body_[b]);
     if (const int g = origin_geometry_[b]; g >= 0) {  // the body's own frame
       Eigen::Isometry3d& pose = ws_.geometry_poses[static_cast<std::size_t>(g)];
@@ -414,17 +417,17 @@ void Dynamics::assemble(const State& state) {
     for (std::size_t i = 0; i < n; ++i) {
       const ContactPair& pair = ws_.contact_pair[i];
       for (const auto& [g, is_b] : {std::pair{pair.geometry_b, true}, {pair.geometry_a, false}}) {
-        const BodyIndex body = m.geometries[g].body;
-        if (body.isWorld()) continue;
-        contact::contactWrench(ws_.contacts[i], state.bodies[body.value].position, is_b, force,
-                               torque);
-        ws_.contact_wrench[body.value].force += force;
-        ws_.contact_wrench[body.value].torque += torque;
+        const int body = geometry_body_[static_cast<std::size_t>(g)];
+        if (body < 0) continue;  // the world
+        const auto b = static_cast<std::size_t>(body);
+        contact::contactWrench(ws_.contacts[i], state.bodies[b].position, is_b, force, torque);
+        ws_.contact_wrench[b].force += force;
+        ws_.contact_wrench[b].torque += torque;
       }
     }
     if (with_accelerations)
       for (std::size_t b = 0; b < nb; ++b)
-        unconstrainedAcceleration(m, state, ws_, b, isotropic_inverse_[b]);
+        unconstrainedAcceleration(m, state, ws_, b, dynamic_mass_[b], isotropic_inverse_[b]);
   } else {
     listedContactSums(state, with_accelerations);
   }
@@ -443,7 +446,8 @@ void Dynamics::listedContactSums(const State& state, bool with_accelerations) {
   point_bodies_.resize(n);
   parallelFor(n, stageThreads(n, threads_), [&](std::size_t i) {
     const ContactPair& pair = ws_.contact_pair[i];
-    point_bodies_[i] = {m.geometries[pair.geometry_a].body, m.geometries[pair.geometry_b].body};
+    point_bodies_[i] = {BodyIndex{geometry_body_[static_cast<std::size_t>(pair.geometry_a)]},
+                        BodyIndex{geometry_body_[static_cast<std::size_t>(pair.geometry_b)]}};
   });
   body_point_start_.assign(nb + 1, 0);
   int* const start = body_point_start_.data();  // in locals: a store through them reloads nothing
@@ -472,7 +476,8 @@ void Dynamics::listedContactSums(const State& state, bool with_accelerations) {
       sum_torque += torque;
     }
     ws_.contact_wrench[b] = {sum_force, sum_torque};
-    if (with_accelerations) unconstrainedAcceleration(m, state, ws_, b, isotropic_inverse_[b]);
+    if (with_accelerations)
+      unconstrainedAcceleration(m, state, ws_, b, dynamic_mass_[b], isotropic_inverse_[b]);
   });
 }
 
@@ -534,7 +539,7 @@ void Dynamics::unconstrainedAccelerations(const State& state) {
   if (accelerationsWithContactSums(profiling_, *model_, ws_)) return;  // made in assemble
   const Model& m = *model_;
   parallelFor(m.bodies.size(), stageThreads(m.bodies.size(), threads_), [&](std::size_t b) {
-    unconstrainedAcceleration(m, state, ws_, b, isotropic_inverse_[b]);
+    unconstrainedAcceleration(m, state, ws_, b, dynamic_mass_[b], isotropic_inverse_[b]);
   });
 }
 

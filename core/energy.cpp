@@ -19,13 +19,16 @@ constexpr double kFloor = 1e-9;  // [J] below this a rise is rounding noise
 namespace {
 
 // The terms of body b (EnergyTerms::Body); the kinetic rate only when `rate` is asked.
-// `isotropic`: the body's isotropicMoment (EnergyTerms::isotropic).
-EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Workspace& ws,
-                            std::size_t b, bool rate, double isotropic) {
+// `isotropic` and `mass`: the body's EnergyTerms::isotropic and ::mass (0: kinematic). The
+// model's body record is read only for a dynamic body's inertia when it is not isotropic.
+inline __attribute__((always_inline)) EnergyTerms::Body bodyTerms(const Model& model,
+                                                                  const State& state,
+                                                                  const Workspace& ws,
+                                                                  std::size_t b, bool rate,
+                                                                  double isotropic, double mass) {
   EnergyTerms::Body t;
-  const Body& body = model.bodies[b];
   const BodyState& s = state.bodies[b];
-  if (body.kind == BodyKind::kKinematic) {
+  if (mass == 0.0) {  // a kinematic body
     // A model without force elements has no spring wrenches (core/workspace.hpp): zero.
     const Wrench& c = ws.contact_wrench[b];
     const Wrench k = ws.spring_wrench.empty() ? Wrench{} : ws.spring_wrench[b];
@@ -36,10 +39,10 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
   // A sphere's or a cube's rotational terms without turning w into the body frame.
   const Mat3& r = ws.rotation[b];
   const Vec3 w_body = isotropic > 0.0 ? Vec3::Zero() : Vec3(r.transpose() * s.angular_velocity);
-  t.kinetic = 0.5 * body.mass * s.velocity.squaredNorm() +
+  t.kinetic = 0.5 * mass * s.velocity.squaredNorm() +
               0.5 * (isotropic > 0.0 ? isotropic * s.angular_velocity.squaredNorm()
-                                     : w_body.dot(body.inertia * w_body));
-  t.gravity = -body.mass * model.options.gravity.dot(s.position);
+                                     : w_body.dot(model.bodies[b].inertia * w_body));
+  t.gravity = -mass * model.options.gravity.dot(s.position);
   // Joint constraint forces and joint elements (limits, springs, dampers, friction,
   // drives) count as sources: their work enters or leaves through the joints. A model
   // without constraint rows or joints has no such wrenches (core/workspace.hpp): power 0.
@@ -56,17 +59,19 @@ EnergyTerms::Body bodyTerms(const Model& model, const State& state, const Worksp
   }
   if (rate) {  // d(kinetic energy)/dt
     const double spin_rate =
-        isotropic > 0.0 ? isotropic * s.angular_velocity.dot(ws.angular_acceleration[b])
-                        : w_body.dot(body.inertia * (r.transpose() * ws.angular_acceleration[b]));
-    t.kinetic_rate = body.mass * ws.linear_acceleration[b].dot(s.velocity) + spin_rate;
+        isotropic > 0.0
+            ? isotropic * s.angular_velocity.dot(ws.angular_acceleration[b])
+            : w_body.dot(model.bodies[b].inertia * (r.transpose() * ws.angular_acceleration[b]));
+    t.kinetic_rate = mass * ws.linear_acceleration[b].dot(s.velocity) + spin_rate;
   }
   return t;
 }
 
 // The terms of contact point i (EnergyTerms::Point); `surfaces`: some body has a surface
 // velocity at this evaluation (else both powers are +0 without looking).
-EnergyTerms::Point pointTerms(const Model& model, const Workspace& ws, std::size_t i,
-                              bool surfaces) {
+inline __attribute__((always_inline)) EnergyTerms::Point pointTerms(const Model& model,
+                                                                    const Workspace& ws,
+                                                                    std::size_t i, bool surfaces) {
   EnergyTerms::Point t;
   const contact::ContactRecord& c = ws.contacts[i];
   const ContactPair& pair = ws.contact_pair[i];
@@ -103,7 +108,7 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
   if (body_threads > 1) {
     terms.bodies.resize(nb);
     contact::parallelFor(nb, body_threads, [&](std::size_t b) {
-      terms.bodies[b] = bodyTerms(model, state, ws, b, rate, terms.isotropic[b]);
+      terms.bodies[b] = bodyTerms(model, state, ws, b, rate, terms.isotropic[b], terms.mass[b]);
     });
   }
   if (point_threads > 1) {
@@ -116,10 +121,10 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
   if (body_energy) body_energy->assign(nb, 0.0);
   if (rate) *kinetic_rate = 0.0;
   for (std::size_t b = 0; b < nb; ++b) {
-    const EnergyTerms::Body t = body_threads > 1
-                                    ? terms.bodies[b]
-                                    : bodyTerms(model, state, ws, b, rate, terms.isotropic[b]);
-    if (model.bodies[b].kind == BodyKind::kKinematic) {
+    const EnergyTerms::Body t =
+        body_threads > 1 ? terms.bodies[b]
+                         : bodyTerms(model, state, ws, b, rate, terms.isotropic[b], terms.mass[b]);
+    if (terms.mass[b] == 0.0) {  // a kinematic body
       a.input_power -= t.power[0];
       continue;
     }
@@ -166,22 +171,26 @@ EnergyAccount account(const Model& model, const State& state, const Workspace& w
 
 }  // namespace
 
-void EnergyTerms::listIsotropic(const Model& model) {
+void EnergyTerms::listBodies(const Model& model) {
   isotropic.resize(model.bodies.size());
-  for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    isotropic[b] = isotropicMoment(model.bodies[b].inertia);
+  mass.resize(model.bodies.size());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const tribo::Body& body = model.bodies[b];
+    isotropic[b] = isotropicMoment(body.inertia);
+    mass[b] = body.kind == BodyKind::kDynamic ? body.mass : 0.0;
+  }
 }
 
 EnergyAccount measureEnergy(const Model& model, const State& state, const Workspace& ws,
                             std::vector<double>* body_energy, int threads) {
   EnergyTerms terms;
-  terms.listIsotropic(model);
+  terms.listBodies(model);
   return account(model, state, ws, body_energy, threads, terms, nullptr);
 }
 
 EnergyGuard::EnergyGuard(const Model& model, double modified_step, int threads)
     : model_(&model), floor_(kFloor), modified_step_(modified_step), threads_(threads) {
-  terms_.listIsotropic(model);
+  terms_.listBodies(model);
   // The motion sources impose: the fastest kinematic body or surface (linear), the fastest
   // turning kinematic body and velocity of a joint drive (angular; drives of a prismatic
   // joint count as linear).
