@@ -52,6 +52,11 @@ struct Body {
   // position, orientation, velocity and angular_velocity then hold their values at t = 0.
   std::shared_ptr<const PrescribedMotion> motion = nullptr;
 
+  // Its mass if it is dynamic, 0 if it is kinematic (ModelBuilder accepts a dynamic body only
+  // with a finite mass > 0, so 0 marks a kinematic body): the per-body lists the step's
+  // passes read instead of this record (Dynamics, EnergyTerms).
+  double dynamicMass() const { return kind == BodyKind::kDynamic ? mass : 0.0; }
+
   Vec3 surfaceVelocityAt(double t) const {
     if (!surface_velocity_signal) return surface_velocity;
     const auto& s = *surface_velocity_signal;

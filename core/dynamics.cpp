@@ -74,7 +74,7 @@ Dynamics::Dynamics(std::shared_ptr<const Model> model)
     inv_inertia_body_.push_back(dynamic ? Mat3(b.inertia.inverse()) : Mat3::Zero());
     const double s = dynamic ? isotropicMoment(b.inertia) : 0.0;
     isotropic_inverse_.push_back(s > 0.0 ? 1.0 / s : 0.0);
-    dynamic_mass_.push_back(dynamic ? b.mass : 0.0);
+    dynamic_mass_.push_back(b.dynamicMass());
   }
   ws_.geometry_poses.assign(ng, Eigen::Isometry3d::Identity());
   geometry_motion_.resize(ng);

@@ -139,10 +139,9 @@ class Dynamics {
   // so updatePoses leaves its inverse as the constructor set it, and its gyroscopic term
   // w x (I w) is zero; 0 for every other body, which takes the general formulas.
   std::vector<double> isotropic_inverse_;
-  // Per body, its mass if it is dynamic, 0 if it is kinematic (a dynamic body's is > 0): the
-  // passes over bodies read it rather than the model's body record (288 bytes): on the 32 000
-  // spheres of the chute that record's cache miss was three quarters of the accelerations'
-  // time (perf, docs/performance.md).
+  // Per body, Body::dynamicMass (0: kinematic): the passes over bodies read it rather than
+  // the model's body record (288 bytes): on the 32 000 spheres of the chute that record's
+  // cache miss was three quarters of the accelerations' time (perf, docs/performance.md).
   std::vector<double> dynamic_mass_;
   std::vector<contact::GeometryMotion> geometry_motion_;  // per geometry, contactKinematics
   // Per geometry, its body's index (-1 on the world): the passes over geometries read it

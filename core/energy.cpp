@@ -175,9 +175,8 @@ void EnergyTerms::listBodies(const Model& model) {
   isotropic.resize(model.bodies.size());
   mass.resize(model.bodies.size());
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const tribo::Body& body = model.bodies[b];
-    isotropic[b] = isotropicMoment(body.inertia);
-    mass[b] = body.kind == BodyKind::kDynamic ? body.mass : 0.0;
+    isotropic[b] = isotropicMoment(model.bodies[b].inertia);
+    mass[b] = model.bodies[b].dynamicMass();
   }
 }
 

@@ -87,9 +87,8 @@ struct EnergyTerms {
   // Each body's isotropicMoment (core/math.hpp: I for inertia I 1, else 0), read from the
   // model once (listBodies) rather than compared again on every account.
   std::vector<double> isotropic;
-  // Each body's mass if it is dynamic, 0 if it is kinematic (a dynamic body's is > 0): an
-  // account reads it rather than the model's body record (288 bytes, a cache miss a body on
-  // the 32 000-sphere chute).
+  // Each body's Body::dynamicMass (0: kinematic): an account reads it rather than the model's
+  // body record (288 bytes, a cache miss a body on the 32 000-sphere chute).
   std::vector<double> mass;
   void listBodies(const Model& model);
 };
